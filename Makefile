@@ -1,0 +1,83 @@
+# fragsim: one Makefile.  `make` builds libfragsim.a and the fragsim CLI.
+# Sources are found by directory, so a new stage or unit is a new file.
+
+CC ?= cc
+CXX ?= c++
+BUILD ?= build
+OPT ?= -O2
+PKGS_CORE := osmesa snappy inih
+CFLAGS_BASE := -std=c11 -D_POSIX_C_SOURCE=200809L -g $(OPT) -Wall -Wextra -Werror \
+	-fno-strict-aliasing -Wno-missing-field-initializers
+CFLAGS += $(CFLAGS_BASE) $(SAN)
+CXXFLAGS += -std=c++17 -g $(OPT) -Wall -Wextra -Werror $(SAN)
+LDFLAGS += $(SAN)
+PKG_LIBS = $(shell pkg-config --libs $(PKGS_CORE) 2>/dev/null || echo -lOSMesa -lsnappy -linih)
+OIIO_LIBS = $(shell pkg-config --libs OpenImageIO 2>/dev/null || echo -lOpenImageIO -lOpenImageIO_Util)
+
+# The library core: C only, no OSMesa and no OpenImageIO.
+LIB_SRCS := $(wildcard pipeline/*.c units/*.c rtl_model/*.c) \
+	$(filter-out driver/cli_%.c driver/osmesa_%.c driver/shim_%.c, $(wildcard driver/*.c))
+# CLI and tools: the OSMesa reference runner and the OpenImageIO wrapper.
+CLI_SRCS := $(wildcard driver/cli_*.c driver/osmesa_*.c)
+CLI_CXX := $(wildcard driver/*.cpp)
+TEST_SRCS := $(wildcard tests/test_*.c)
+SCENE_SRCS := $(wildcard traces/scene_*.c)
+
+LIB_OBJS := $(LIB_SRCS:%.c=$(BUILD)/%.o)
+CLI_OBJS := $(CLI_SRCS:%.c=$(BUILD)/%.o) $(CLI_CXX:%.cpp=$(BUILD)/%.o)
+TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
+SCENE_BINS := $(SCENE_SRCS:traces/%.c=$(BUILD)/traces/%)
+LIB := $(BUILD)/libfragsim.a
+FRAGSIM := $(BUILD)/fragsim
+# Link the archive whole so that every executor overrides its weak fallback.
+WHOLE_LIB = -Wl,--whole-archive $(LIB) -Wl,--no-whole-archive
+
+.PHONY: all deps test run sanitize bench golden clean scenes tests
+all: $(LIB) $(FRAGSIM) tests scenes
+
+deps:
+	@scripts/deps.sh
+
+$(BUILD)/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -MMD -MP -c $< -o $@
+
+$(BUILD)/%.o: %.cpp
+	@mkdir -p $(dir $@)
+	$(CXX) $(CXXFLAGS) $(shell pkg-config --cflags OpenImageIO 2>/dev/null) -MMD -MP -c $< -o $@
+
+$(LIB): $(LIB_OBJS)
+	@mkdir -p $(dir $@)
+	rm -f $@ && ar rcs $@ $^
+
+$(FRAGSIM): $(CLI_OBJS) $(LIB)
+	$(CXX) $(LDFLAGS) -o $@ $(CLI_OBJS) $(WHOLE_LIB) $(PKG_LIBS) $(OIIO_LIBS) -lm
+
+tests: $(TEST_BINS)
+$(BUILD)/tests/%: $(BUILD)/tests/%.o $(LIB) $(filter-out $(BUILD)/driver/cli_main.o,$(CLI_OBJS))
+	$(CXX) $(LDFLAGS) -o $@ $< $(filter-out $(BUILD)/driver/cli_main.o,$(CLI_OBJS)) $(WHOLE_LIB) $(PKG_LIBS) $(OIIO_LIBS) -lm
+
+scenes: $(SCENE_BINS)
+$(BUILD)/traces/%: $(BUILD)/traces/%.o $(LIB)
+	$(CC) $(LDFLAGS) -o $@ $< $(WHOLE_LIB) $(PKG_LIBS) -lm
+
+test: deps all
+	@tests/run_all.sh $(BUILD)
+
+run: deps all
+	@scripts/run_demo.sh $(BUILD)
+
+sanitize:
+	$(MAKE) BUILD=build-san OPT=-O1 SAN="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" all
+	ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 tests/run_all.sh build-san
+
+bench: deps all
+	@scripts/bench.sh $(BUILD)
+
+golden: all
+	@scripts/golden.sh $(BUILD)
+
+clean:
+	rm -rf build build-san build-clang
+
+-include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

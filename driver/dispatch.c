@@ -1,0 +1,281 @@
+/*
+ * Generated plumbing of driver/gl_commands.def: the command table, the public
+ * fsgl* entry points, the dispatcher and weak fallback executors.
+ */
+#include <string.h>
+#include <stdlib.h>
+#include "../pipeline/context.h"
+#include "display_list.h"
+#include "capture.h"
+
+const char *const fs_kind_names[FS_K_COUNT] = {
+#define FS_KIND_NAME(k) #k,
+    FS_KINDS(FS_KIND_NAME)
+#undef FS_KIND_NAME
+};
+
+/* ---- the table ---- */
+#define FS_KINDOF(k, kind, name, cnt) FS_K_##kind,
+#define FS_NAMEOF(k, kind, name, cnt) #name,
+#define FS_CMD(name, rk, flags, n, ...)                                   \
+    {"gl" #name, FS_K_##rk, n, (flags),                                   \
+     {FS_MAP(n, FS_KINDOF, __VA_ARGS__)}, {FS_MAP(n, FS_NAMEOF, __VA_ARGS__)}},
+const fs_cmd_info fs_cmd_table[FS_CMD_COUNT] = {
+#include "gl_commands.def"
+};
+#undef FS_CMD
+
+int fs_cmd_lookup(const char *name)
+{
+    /* The table is small and lookups happen once per signature in a trace. */
+    for (int i = 0; i < FS_CMD_COUNT; i++)
+        if (strcmp(fs_cmd_table[i].name, name) == 0)
+            return i;
+    return -1;
+}
+
+static uint32_t count_u32(int64_t n)
+{
+    return n < 0 ? 0 : n > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)n;
+}
+
+/* ---- packing arguments of the public API into an fs_call ---- */
+#define FS_PK_INT(a, v, n) (a).i = (int64_t)(v)
+#define FS_PK_FLT(a, v, n) (a).d = (double)(v)
+#define FS_PK_ARR(a, v, n) ((a).p = (v), (a).count = count_u32(n))
+#define FS_PK_OUT(a, v, n) ((a).out = (v), (a).count = count_u32(n))
+#define FS_PK_E FS_PK_INT
+#define FS_PK_BM FS_PK_INT
+#define FS_PK_B FS_PK_INT
+#define FS_PK_I FS_PK_INT
+#define FS_PK_U FS_PK_INT
+#define FS_PK_SZ FS_PK_INT
+#define FS_PK_UB FS_PK_INT
+#define FS_PK_BY FS_PK_INT
+#define FS_PK_S FS_PK_INT
+#define FS_PK_US FS_PK_INT
+#define FS_PK_F FS_PK_FLT
+#define FS_PK_D FS_PK_FLT
+#define FS_PK_CF FS_PK_FLT
+#define FS_PK_CD FS_PK_FLT
+#define FS_PK_AF FS_PK_ARR
+#define FS_PK_AD FS_PK_ARR
+#define FS_PK_AI FS_PK_ARR
+#define FS_PK_AU FS_PK_ARR
+#define FS_PK_AUB FS_PK_ARR
+#define FS_PK_ABY FS_PK_ARR
+#define FS_PK_AS FS_PK_ARR
+#define FS_PK_AUS FS_PK_ARR
+#define FS_PK_BLOB FS_PK_ARR
+#define FS_PK_CPTR(a, v, n) ((a).p = (v), (a).is_data = 0)
+#define FS_PK_OV FS_PK_OUT
+#define FS_PK_OF FS_PK_OUT
+#define FS_PK_OD FS_PK_OUT
+#define FS_PK_OI FS_PK_OUT
+#define FS_PK_OB FS_PK_OUT
+#define FS_PACK(k, kind, name, cnt) FS_PK_##kind(call.a[k], name, cnt);
+
+#define FS_RETURN_V(r)
+#define FS_RETURN_U(r) return (GLuint)(r).i;
+#define FS_RETURN_E(r) return (GLenum)(r).i;
+#define FS_RETURN_B(r) return (GLboolean)(r).i;
+#define FS_RETURN_I(r) return (GLint)(r).i;
+#define FS_RETURN_STR(r) return (const GLubyte *)(r).p;
+
+#define FS_CMD(name, rk, flags, n, ...)                                   \
+    FS_CT_##rk fsgl##name(fs_context *c FS_MAP(n, FS_PDECL, __VA_ARGS__)) \
+    {                                                                      \
+        fs_call call;                                                      \
+        memset(&call, 0, sizeof call);                                    \
+        call.cmd = FS_CMD_##name;                                          \
+        call.nargs = n;                                                    \
+        FS_MAP(n, FS_PACK, __VA_ARGS__)                                    \
+        fs_submit(c, &call);                                               \
+        FS_RETURN_##rk(call.ret)                                          \
+    }
+#include "gl_commands.def"
+#undef FS_CMD
+
+/* ---- weak fallback executors: counted as unsupported, by name ---- */
+#define FS_PDECL_UNUSED(k, kind, name, cnt) , FS_CT_##kind name __attribute__((unused))
+#define FS_ZERO_V
+#define FS_ZERO_U return 0;
+#define FS_ZERO_E return 0;
+#define FS_ZERO_B return GL_FALSE;
+#define FS_ZERO_I return 0;
+#define FS_ZERO_STR return NULL;
+#define FS_CMD(name, rk, flags, n, ...)                                            \
+    __attribute__((weak)) FS_CT_##rk fs_exec_##name(                              \
+        fs_context *c FS_MAP(n, FS_PDECL_UNUSED, __VA_ARGS__))                     \
+    {                                                                               \
+        c->unsupported[FS_CMD_##name]++;                                           \
+        c->stats.unsupported_calls++;                                              \
+        FS_ZERO_##rk                                                              \
+    }
+#include "gl_commands.def"
+#undef FS_CMD
+
+/* ---- the dispatcher ---- */
+#define FS_UP_INT(t, a) ((t)(a).i)
+#define FS_UP_FLT(t, a) ((t)(a).d)
+#define FS_UP_PTR(t, a) ((t)(a).p)
+#define FS_UP_OUT(t, a) ((t)(a).out)
+#define FS_UP_E FS_UP_INT
+#define FS_UP_BM FS_UP_INT
+#define FS_UP_B FS_UP_INT
+#define FS_UP_I FS_UP_INT
+#define FS_UP_U FS_UP_INT
+#define FS_UP_SZ FS_UP_INT
+#define FS_UP_UB FS_UP_INT
+#define FS_UP_BY FS_UP_INT
+#define FS_UP_S FS_UP_INT
+#define FS_UP_US FS_UP_INT
+#define FS_UP_F FS_UP_FLT
+#define FS_UP_D FS_UP_FLT
+#define FS_UP_CF FS_UP_FLT
+#define FS_UP_CD FS_UP_FLT
+#define FS_UP_AF FS_UP_PTR
+#define FS_UP_AD FS_UP_PTR
+#define FS_UP_AI FS_UP_PTR
+#define FS_UP_AU FS_UP_PTR
+#define FS_UP_AUB FS_UP_PTR
+#define FS_UP_ABY FS_UP_PTR
+#define FS_UP_AS FS_UP_PTR
+#define FS_UP_AUS FS_UP_PTR
+#define FS_UP_BLOB FS_UP_PTR
+#define FS_UP_CPTR FS_UP_PTR
+#define FS_UP_OV FS_UP_OUT
+#define FS_UP_OF FS_UP_OUT
+#define FS_UP_OD FS_UP_OUT
+#define FS_UP_OI FS_UP_OUT
+#define FS_UP_OB FS_UP_OUT
+#define FS_LOCAL(k, kind, name, cnt) FS_CT_##kind name = FS_UP_##kind(FS_CT_##kind, call->a[k]);
+
+/* An array argument must hold at least what the command reads. */
+#define FS_CK_NONE(k, name, cnt, esize)
+#define FS_CK_ARR(k, name, cnt, esize) \
+    if ((int64_t)(cnt) > 0 && (name == NULL || (int64_t)call->a[k].count < (int64_t)(cnt))) \
+        return bad_argument(c, call, k);
+/* Outputs from a replayed trace have no buffer: give them scratch space. */
+#define FS_CK_OUT(k, name, cnt, esize) \
+    if (name == NULL) {                                                        \
+        int64_t need_ = (int64_t)(cnt) > 16 ? (int64_t)(cnt) : 16;             \
+        name = fs_scratch(c, (size_t)need_ * (esize));                         \
+        if (name == NULL) return bad_argument(c, call, k);                     \
+    }
+#define FS_CK_E FS_CK_NONE
+#define FS_CK_BM FS_CK_NONE
+#define FS_CK_B FS_CK_NONE
+#define FS_CK_I FS_CK_NONE
+#define FS_CK_U FS_CK_NONE
+#define FS_CK_SZ FS_CK_NONE
+#define FS_CK_UB FS_CK_NONE
+#define FS_CK_BY FS_CK_NONE
+#define FS_CK_S FS_CK_NONE
+#define FS_CK_US FS_CK_NONE
+#define FS_CK_F FS_CK_NONE
+#define FS_CK_D FS_CK_NONE
+#define FS_CK_CF FS_CK_NONE
+#define FS_CK_CD FS_CK_NONE
+#define FS_CK_CPTR FS_CK_NONE
+#define FS_CK_AF FS_CK_ARR
+#define FS_CK_AD FS_CK_ARR
+#define FS_CK_AI FS_CK_ARR
+#define FS_CK_AU FS_CK_ARR
+#define FS_CK_AUB FS_CK_ARR
+#define FS_CK_ABY FS_CK_ARR
+#define FS_CK_AS FS_CK_ARR
+#define FS_CK_AUS FS_CK_ARR
+#define FS_CK_BLOB FS_CK_ARR
+#define FS_CK_OV FS_CK_OUT
+#define FS_CK_OF FS_CK_OUT
+#define FS_CK_OD FS_CK_OUT
+#define FS_CK_OI FS_CK_OUT
+#define FS_CK_OB FS_CK_OUT
+#define FS_ESIZE_OV 1
+#define FS_ESIZE_OF sizeof(GLfloat)
+#define FS_ESIZE_OD sizeof(GLdouble)
+#define FS_ESIZE_OI sizeof(GLint)
+#define FS_ESIZE_OB sizeof(GLboolean)
+#define FS_ESIZE_AF 0
+#define FS_ESIZE_AD 0
+#define FS_ESIZE_AI 0
+#define FS_ESIZE_AU 0
+#define FS_ESIZE_AUB 0
+#define FS_ESIZE_ABY 0
+#define FS_ESIZE_AS 0
+#define FS_ESIZE_AUS 0
+#define FS_ESIZE_BLOB 0
+#define FS_ESIZE_E 0
+#define FS_ESIZE_BM 0
+#define FS_ESIZE_B 0
+#define FS_ESIZE_I 0
+#define FS_ESIZE_U 0
+#define FS_ESIZE_SZ 0
+#define FS_ESIZE_UB 0
+#define FS_ESIZE_BY 0
+#define FS_ESIZE_S 0
+#define FS_ESIZE_US 0
+#define FS_ESIZE_F 0
+#define FS_ESIZE_D 0
+#define FS_ESIZE_CF 0
+#define FS_ESIZE_CD 0
+#define FS_ESIZE_CPTR 0
+#define FS_CHECK(k, kind, name, cnt) FS_CK_##kind(k, name, cnt, FS_ESIZE_##kind)
+#define FS_ANAME(k, kind, name, cnt) , name
+
+#define FS_STORE_V(r, e) e
+#define FS_STORE_U(r, e) (r).i = (int64_t)(e)
+#define FS_STORE_E(r, e) (r).i = (int64_t)(e)
+#define FS_STORE_B(r, e) (r).i = (int64_t)(e)
+#define FS_STORE_I(r, e) (r).i = (int64_t)(e)
+#define FS_STORE_STR(r, e) (r).p = (const void *)(e)
+
+static int bad_argument(fs_context *c, fs_call *call, int k)
+{
+    (void)c;
+    (void)call;
+    (void)k;
+    return -1;
+}
+
+int fs_dispatch(fs_context *c, fs_call *call)
+{
+    if (call->cmd >= FS_CMD_COUNT)
+        return -1;
+    c->stats.calls++;
+    if (c->prim.inside_begin && !(fs_cmd_table[call->cmd].flags & FS_F_PRIM)) {
+        /* GL 1.5 spec 2.6.3: only vertex attribute, material, array element
+         * and call-list commands may appear between Begin and End. */
+        fs_error(c, GL_INVALID_OPERATION);
+        return 0;
+    }
+    switch ((enum fs_cmd)call->cmd) {
+#define FS_CMD(name, rk, flags, n, ...)                                        \
+    case FS_CMD_##name: {                                                       \
+        FS_MAP(n, FS_LOCAL, __VA_ARGS__)                                        \
+        FS_MAP(n, FS_CHECK, __VA_ARGS__)                                        \
+        FS_STORE_##rk(call->ret, fs_exec_##name(c FS_MAP(n, FS_ANAME, __VA_ARGS__))); \
+        break;                                                                  \
+    }
+#include "gl_commands.def"
+#undef FS_CMD
+    case FS_CMD_COUNT:
+        return -1;
+    }
+    return 0;
+}
+
+void fs_submit(fs_context *c, fs_call *call)
+{
+    uint32_t flags = fs_cmd_table[call->cmd].flags;
+    if (fs_dlist_compiling(c) && (flags & FS_F_LIST)) {
+        fs_dlist_compile(c, call);
+        if (!fs_dlist_execute_too(c))
+            goto captured;
+    }
+    fs_dispatch(c, call);
+captured:
+    if (c->capture)
+        fs_capture_call(c, call);
+}

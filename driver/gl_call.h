@@ -1,0 +1,176 @@
+/*
+ * A GL call as data.  The public fsgl* entry points, the trace reader, the trace
+ * writer and display lists all speak fs_call, so one dispatcher executes calls
+ * from every source (the TinyGL idea of one command table, see
+ * shared/style-anchors.md).  Everything here is generated from
+ * driver/gl_commands.def.
+ */
+#ifndef FS_GL_CALL_H
+#define FS_GL_CALL_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <GL/gl.h>
+
+typedef struct fs_context fs_context;
+
+/* Argument kinds.  Scalars are held in fs_arg.i (integers, enums) or fs_arg.d
+ * (floating point); arrays, blobs and outputs in fs_arg.p with fs_arg.count
+ * elements (bytes for BLOB and OV). */
+#define FS_KINDS(X) \
+    X(V)   X(E)   X(BM)  X(B)   X(I)   X(U)   X(SZ)  X(UB)  X(BY)  X(S)  X(US) \
+    X(F)   X(D)   X(CF)  X(CD)  \
+    X(AF)  X(AD)  X(AI)  X(AU)  X(AUB) X(ABY) X(AS)  X(AUS) \
+    X(BLOB) X(CPTR) X(OV) X(OF) X(OD) X(OI) X(OB) X(STR)
+
+enum fs_kind {
+#define FS_KIND_ENUM(k) FS_K_##k,
+    FS_KINDS(FS_KIND_ENUM)
+#undef FS_KIND_ENUM
+    FS_K_COUNT
+};
+
+/* C types of each kind, used by the generated prototypes. */
+#define FS_CT_V void
+#define FS_CT_E GLenum
+#define FS_CT_BM GLbitfield
+#define FS_CT_B GLboolean
+#define FS_CT_I GLint
+#define FS_CT_U GLuint
+#define FS_CT_SZ GLsizei
+#define FS_CT_UB GLubyte
+#define FS_CT_BY GLbyte
+#define FS_CT_S GLshort
+#define FS_CT_US GLushort
+#define FS_CT_F GLfloat
+#define FS_CT_D GLdouble
+#define FS_CT_CF GLclampf
+#define FS_CT_CD GLclampd
+#define FS_CT_AF const GLfloat *
+#define FS_CT_AD const GLdouble *
+#define FS_CT_AI const GLint *
+#define FS_CT_AU const GLuint *
+#define FS_CT_AUB const GLubyte *
+#define FS_CT_ABY const GLbyte *
+#define FS_CT_AS const GLshort *
+#define FS_CT_AUS const GLushort *
+#define FS_CT_BLOB const GLvoid *
+#define FS_CT_CPTR const GLvoid *
+#define FS_CT_OV GLvoid *
+#define FS_CT_OF GLfloat *
+#define FS_CT_OD GLdouble *
+#define FS_CT_OI GLint *
+#define FS_CT_OB GLboolean *
+#define FS_CT_STR const GLubyte *
+
+/* Command flags. */
+#define FS_F_LIST 0x1u   /* compiled into display lists */
+#define FS_F_NOLIST 0x2u /* executed immediately even while compiling (GL 1.5 spec 5.4) */
+#define FS_F_DRAW 0x4u   /* reads client vertex arrays */
+#define FS_F_FRAME 0x8u  /* may mark the end of a frame (glFinish/glFlush) */
+#define FS_F_PRIM 0x10u  /* allowed between glBegin and glEnd (GL 1.5 spec 2.6.3) */
+#define LIST FS_F_LIST
+#define NOLIST FS_F_NOLIST
+
+#define FS_MAX_ARGS 10
+
+typedef struct fs_arg {
+    union {
+        int64_t i;
+        double d;
+        const void *p;
+        void *out;
+    };
+    uint32_t count; /* elements for arrays/outputs, bytes for BLOB/OV */
+    /* For CPTR: nonzero when p is trace-provided data (a blob), zero when p is
+     * an address in the caller's memory or a buffer offset. */
+    uint32_t is_data;
+} fs_arg;
+
+typedef struct fs_call {
+    uint16_t cmd;   /* enum fs_cmd */
+    uint16_t nargs;
+    uint32_t flags; /* FS_CALL_* */
+    fs_arg a[FS_MAX_ARGS];
+    fs_arg ret;
+} fs_call;
+
+#define FS_CALL_FAKE 0x1u /* apitrace "fake" call: client array data before a draw */
+
+/* ---- generated from the table ---- */
+enum fs_cmd {
+#define FS_CMD(name, rk, flags, n, ...) FS_CMD_##name,
+#include "gl_commands.def"
+#undef FS_CMD
+    FS_CMD_COUNT
+};
+
+typedef struct fs_cmd_info {
+    const char *name;           /* GL name, with the "gl" prefix */
+    uint8_t ret;                /* enum fs_kind */
+    uint8_t nargs;
+    uint32_t flags;
+    uint8_t kinds[FS_MAX_ARGS];  /* enum fs_kind per argument */
+    const char *argnames[FS_MAX_ARGS];
+} fs_cmd_info;
+
+extern const fs_cmd_info fs_cmd_table[FS_CMD_COUNT];
+extern const char *const fs_kind_names[FS_K_COUNT];
+
+/* Looks a GL call name ("glVertex3f") up; returns -1 when fragsim has no such
+ * command. */
+int fs_cmd_lookup(const char *name);
+
+/* Argument-list plumbing for the X-macros: each argument is a tuple
+ * (KIND, name, count); FS_MAPn applies m(index, KIND, name, count). */
+#define FS_EXP(x) x
+#define FS_APPLY(m, k, t) FS_EXP(m FS_APPLY_I(k, FS_UNPACK t))
+#define FS_UNPACK(...) __VA_ARGS__
+#define FS_APPLY_I(k, ...) (k, __VA_ARGS__)
+#define FS_MAP0(m, ...)
+#define FS_MAP1(m, a) FS_APPLY(m, 0, a)
+#define FS_MAP2(m, a, b) FS_MAP1(m, a) FS_APPLY(m, 1, b)
+#define FS_MAP3(m, a, b, c) FS_MAP2(m, a, b) FS_APPLY(m, 2, c)
+#define FS_MAP4(m, a, b, c, d) FS_MAP3(m, a, b, c) FS_APPLY(m, 3, d)
+#define FS_MAP5(m, a, b, c, d, e) FS_MAP4(m, a, b, c, d) FS_APPLY(m, 4, e)
+#define FS_MAP6(m, a, b, c, d, e, f) FS_MAP5(m, a, b, c, d, e) FS_APPLY(m, 5, f)
+#define FS_MAP7(m, a, b, c, d, e, f, g) FS_MAP6(m, a, b, c, d, e, f) FS_APPLY(m, 6, g)
+#define FS_MAP8(m, a, b, c, d, e, f, g, h) FS_MAP7(m, a, b, c, d, e, f, g) FS_APPLY(m, 7, h)
+#define FS_MAP9(m, a, b, c, d, e, f, g, h, i) FS_MAP8(m, a, b, c, d, e, f, g, h) FS_APPLY(m, 8, i)
+#define FS_MAP10(m, a, b, c, d, e, f, g, h, i, j) FS_MAP9(m, a, b, c, d, e, f, g, h, i) FS_APPLY(m, 9, j)
+#define FS_MAP(n, m, ...) FS_MAP##n(m, __VA_ARGS__)
+
+#define FS_PDECL(k, kind, name, cnt) , FS_CT_##kind name
+
+/* Public API: fsglName(ctx, args...) behaves like glName on context ctx
+ * (records it when capturing, compiles it when inside glNewList, executes it). */
+#define FS_CMD(name, rk, flags, n, ...) \
+    FS_CT_##rk fsgl##name(fs_context *c FS_MAP(n, FS_PDECL, __VA_ARGS__));
+#include "gl_commands.def"
+#undef FS_CMD
+
+/* Executors: the implementation of each command, one per command, defined in
+ * the pipeline file that owns the GL spec section.  A command whose executor
+ * is not written yet falls back to a weak stub that counts it as unsupported. */
+#define FS_CMD(name, rk, flags, n, ...) \
+    FS_CT_##rk fs_exec_##name(fs_context *c FS_MAP(n, FS_PDECL, __VA_ARGS__));
+#include "gl_commands.def"
+#undef FS_CMD
+
+/* Routes a call: capture, display-list compilation, execution (driver/dispatch.c). */
+void fs_submit(fs_context *c, fs_call *call);
+/* Executes a call now (no capture, no compilation).  Returns 0, or -1 when
+ * an array argument is shorter than the command reads (malformed input). */
+int fs_dispatch(fs_context *c, fs_call *call);
+
+/* Size helpers used by the count expressions in the table (driver/gl_sizes.c). */
+int64_t fs_index_bytes(GLsizei count, GLenum type);
+int64_t fs_calllists_bytes(GLsizei n, GLenum type);
+int fs_light_param_count(GLenum pname);
+int fs_lightmodel_param_count(GLenum pname);
+int fs_material_param_count(GLenum pname);
+int fs_get_count(GLenum pname);
+int64_t fs_readpixels_bytes(fs_context *c, GLsizei w, GLsizei h, GLenum format, GLenum type);
+int fs_type_size(GLenum type); /* bytes of GL_FLOAT, GL_UNSIGNED_BYTE, ...; 0 if unknown */
+
+#endif

@@ -1,0 +1,20 @@
+/* Configuration: see config.def for every key. */
+#ifndef FS_CONFIG_H
+#define FS_CONFIG_H
+#include <stdio.h>
+
+typedef struct fs_config {
+#define FS_CONFIG(sec, key, type, def, lo, hi, unit, meaning) long sec##_##key;
+#include "config.def"
+#undef FS_CONFIG
+} fs_config;
+
+void fs_config_defaults(fs_config *cfg);
+/* Loads an INI file over cfg.  On error returns -1 and writes one message
+ * naming the file and line into err. */
+int fs_config_load(fs_config *cfg, const char *path, char *err, size_t errlen);
+/* Applies "section.key=value". */
+int fs_config_set(fs_config *cfg, const char *assignment, char *err, size_t errlen);
+void fs_config_list(FILE *f);
+void fs_config_write_ini(FILE *f, const fs_config *cfg);
+#endif

@@ -1,0 +1,88 @@
+/* Context lifetime, GL errors (GL 1.5 spec 2.5) and bookkeeping shared by all stages. */
+#include <stdlib.h>
+#include <stdio.h>
+#include <string.h>
+#include "context.h"
+#include "../driver/display_list.h"
+
+fs_context *fs_context_create(const fs_config *cfg, int width, int height)
+{
+    if (width <= 0 || height <= 0 || width > 16384 || height > 16384)
+        return NULL;
+    fs_context *c = calloc(1, sizeof *c);
+    if (!c)
+        return NULL;
+    if (cfg)
+        c->cfg = *cfg;
+    else
+        fs_config_defaults(&c->cfg);
+    c->error = GL_NO_ERROR;
+    c->pack_alignment = c->unpack_alignment = 4;
+    fs_raster_state_init(&c->raster, (int)c->cfg.raster_subpixel_bits);
+    fs_fragment_state_init(&c->frag);
+    fs_vertex_stage_init(c);
+    if (fs_context_resize(c, width, height) != 0) {
+        fs_context_destroy(c);
+        return NULL;
+    }
+    return c;
+}
+
+int fs_context_resize(fs_context *c, int width, int height)
+{
+    return fs_framebuffer_init(&c->fb, width, height, (int)c->cfg.framebuffer_depth_bits,
+                               (int)c->cfg.framebuffer_stencil_bits);
+}
+
+void fs_context_destroy(fs_context *c)
+{
+    if (!c)
+        return;
+    fs_dlist_free_all(c);
+    fs_vertex_stage_free(c);
+    fs_framebuffer_free(&c->fb);
+    free(c->scratch);
+    free(c);
+}
+
+void fs_error(fs_context *c, GLenum err)
+{
+    c->stats.gl_errors++;
+    if (c->error == GL_NO_ERROR)
+        c->error = err;
+}
+
+void fs_unsupported(fs_context *c, const char *what)
+{
+    c->stats.unsupported_calls++;
+    for (int i = 0; i < c->unsupported_feature_count; i++) {
+        if (strcmp(c->unsupported_feature[i].name, what) == 0) {
+            c->unsupported_feature[i].count++;
+            return;
+        }
+    }
+    /* The last slot collects everything once the table is full. */
+    int n = c->unsupported_feature_count;
+    int cap = (int)(sizeof c->unsupported_feature / sizeof c->unsupported_feature[0]);
+    if (n == cap) {
+        c->unsupported_feature[cap - 1].count++;
+        snprintf(c->unsupported_feature[cap - 1].name, sizeof c->unsupported_feature[0].name, "(other)");
+        return;
+    }
+    snprintf(c->unsupported_feature[n].name, sizeof c->unsupported_feature[n].name, "%s", what);
+    c->unsupported_feature[n].count = 1;
+    c->unsupported_feature_count++;
+}
+
+void *fs_scratch(fs_context *c, size_t bytes)
+{
+    if (bytes > c->scratch_size) {
+        void *p = realloc(c->scratch, bytes);
+        if (!p)
+            return NULL;
+        c->scratch = p;
+        c->scratch_size = bytes;
+    }
+    memset(c->scratch, 0, bytes);
+    return c->scratch;
+}

@@ -1,0 +1,68 @@
+/*
+ * The one context struct passed everywhere.  It holds a whole GL context:
+ * state of every stage, the framebuffer, statistics, display lists and the
+ * optional capture writer.  There is no global mutable state; two contexts
+ * (say a baseline and a proposed pipeline) can live in one process.
+ * Each sub-struct is owned by the header of the stage it belongs to.
+ */
+#ifndef FS_CONTEXT_H
+#define FS_CONTEXT_H
+#include <stdbool.h>
+#include <stdint.h>
+#include <GL/gl.h>
+#include "config.h"
+#include "stats.h"
+#include "framebuffer.h"
+#include "rasterizer.h"
+#include "fragment_ops.h"
+#include "vertex_stage.h"
+#include "../driver/gl_call.h"
+
+struct fs_dlist_state;      /* driver/display_list.c */
+struct fs_capture;          /* driver/capture.c */
+
+struct fs_context {
+    fs_config cfg;
+    GLenum error;                 /* sticky GL error flag (GL 1.5 spec 2.5) */
+
+    fs_transform_state xf;
+    fs_lighting_state lighting;
+    fs_current_state current;
+    fs_array_state arrays;
+    fs_prim_state prim;
+    fs_raster_state raster;
+    fs_fragment_state frag;
+    fs_framebuffer fb;
+
+    GLint pack_alignment, unpack_alignment, unpack_row_length;
+
+    struct fs_dlist_state *lists;
+    struct fs_capture *capture;   /* non-NULL while recording a trace */
+
+    fs_occlusion_hook_fn occlusion_hook; /* issue 3 attaches here */
+    void *occlusion_user;
+
+    fs_stats stats;               /* counters of the current frame */
+    uint64_t unsupported[FS_CMD_COUNT]; /* by command: executor missing or mode unsupported */
+    /* Unsupported features of implemented calls (e.g. "glPolygonMode(GL_LINE)"),
+     * counted by name. */
+    struct { char name[64]; uint64_t count; } unsupported_feature[64];
+    int unsupported_feature_count;
+
+    void *scratch;                /* output buffer for replayed glGet and glReadPixels */
+    size_t scratch_size;
+};
+
+/* Creates a context with a width x height framebuffer (cfg may be NULL for
+ * defaults).  Returns NULL when out of memory or when the size is invalid. */
+fs_context *fs_context_create(const fs_config *cfg, int width, int height);
+void fs_context_destroy(fs_context *c);
+/* Resizes the framebuffer (contents cleared to zero). */
+int fs_context_resize(fs_context *c, int width, int height);
+
+/* Records a GL error: only the first error since the last glGetError sticks. */
+void fs_error(fs_context *c, GLenum err);
+/* Counts an unsupported feature of a call by a descriptive name. */
+void fs_unsupported(fs_context *c, const char *what);
+void *fs_scratch(fs_context *c, size_t bytes);
+#endif

@@ -1,0 +1,60 @@
+/*
+ * Rasterization (GL 1.5 spec 3.3-3.5): triangles, lines and points from
+ * window-space vertices to 2x2 fragment quads.
+ *
+ * Interface contract between stages:
+ *   vertex stage -> rasterizer: fs_rvertex in window coordinates, after
+ *     clipping, perspective division, viewport and depth-range transforms,
+ *     lighting and clamping.  Flat shading is already applied (the vertex stage
+ *     copies the provoking vertex's colour), so the rasterizer always
+ *     interpolates.
+ *   rasterizer -> per-fragment operations: fs_quad, handed to
+ *     fs_fragment_quad() (fragment_ops.h).
+ */
+#ifndef FS_RASTERIZER_H
+#define FS_RASTERIZER_H
+#include <stdbool.h>
+#include <stdint.h>
+#include <GL/gl.h>
+
+typedef struct fs_context fs_context;
+
+typedef struct fs_rvertex {
+    float x, y;     /* window coordinates in pixels, GL y-up */
+    float z;        /* window depth in [0,1] (after glDepthRange) */
+    float inv_w;    /* 1 / clip w, for perspective-correct interpolation */
+    float color[4]; /* RGBA, clamped to [0,1] */
+    float tex[4];   /* s, t, r, q of texture unit 0 (after the texture matrix) */
+} fs_rvertex;
+
+/* Pixel i of a quad: 0 = (x,y), 1 = (x+1,y), 2 = (x,y+1), 3 = (x+1,y+1). */
+typedef struct fs_quad {
+    int x, y;           /* lower-left pixel; both even */
+    unsigned mask;      /* bit i set: pixel i is covered */
+    bool front_facing;
+    uint32_t z[4];      /* depth in the depth buffer's fixed-point units */
+    float color[4][4];  /* [pixel][rgba] in [0,1] */
+    float tex[4][4];    /* [pixel][strq], interpolated perspective-correctly (not divided by q) */
+} fs_quad;
+
+/* Rasterizer state set by glCullFace, glFrontFace, glPolygonOffset,
+ * glPolygonMode, glPointSize, glLineWidth and glEnable. */
+typedef struct fs_raster_state {
+    bool cull_enabled;          /* GL_CULL_FACE */
+    GLenum cull_mode;           /* GL_BACK */
+    GLenum front_face;          /* GL_CCW */
+    bool offset_fill;           /* GL_POLYGON_OFFSET_FILL */
+    float offset_factor, offset_units;
+    GLenum polygon_mode[2];     /* front, back: GL_FILL */
+    float point_size, line_width;
+    int subpixel_bits;          /* from the config, default 8 */
+} fs_raster_state;
+
+void fs_raster_state_init(fs_raster_state *r, int subpixel_bits);
+
+/* Decides facing, culls, applies polygon offset and rasterizes.  Vertices are
+ * in the order the primitive gave them (their winding decides facing). */
+void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2);
+void fs_raster_line(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1);
+void fs_raster_point(fs_context *c, const fs_rvertex *v);
+#endif

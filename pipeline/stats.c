@@ -1,0 +1,29 @@
+#include "stats.h"
+#include <stddef.h>
+
+const fs_stat_info fs_stat_table[] = {
+#define FS_STAT(name, unit, meaning) {#name, unit, meaning, offsetof(fs_stats, name)},
+#include "stats.def"
+#undef FS_STAT
+};
+const int fs_stat_count = (int)(sizeof fs_stat_table / sizeof fs_stat_table[0]);
+
+void fs_stats_add(fs_stats *into, const fs_stats *from)
+{
+    for (int i = 0; i < fs_stat_count; i++)
+        *(uint64_t *)((char *)into + fs_stat_table[i].offset) += fs_stat_get(from, i);
+}
+
+void fs_stats_write_json(FILE *f, const fs_stats *s, const char *indent)
+{
+    for (int i = 0; i < fs_stat_count; i++)
+        fprintf(f, "%s\"%s\": %llu%s\n", indent, fs_stat_table[i].name,
+                (unsigned long long)fs_stat_get(s, i), i + 1 < fs_stat_count ? "," : "");
+}
+
+void fs_stats_list(FILE *f)
+{
+    for (int i = 0; i < fs_stat_count; i++)
+        fprintf(f, "%-24s %-10s %s\n", fs_stat_table[i].name, fs_stat_table[i].unit,
+                fs_stat_table[i].meaning);
+}

@@ -1,0 +1,86 @@
+/*
+ * The vertex stage (GL 1.5 spec chapter 2): current attributes, immediate
+ * mode and client arrays, matrix stacks, lighting, primitive assembly,
+ * clipping, perspective division, viewport.  Its output goes to the
+ * rasterizer (rasterizer.h) as fs_rvertex.
+ *
+ * Files: matrix.c (2.11), lighting.c (2.14), immediate.c (2.6-2.7),
+ * vertex_array.c (2.8), primitive.c (assembly, flat shading 2.14.7),
+ * clip.c (2.12), viewport.c (2.11.1).
+ */
+#ifndef FS_VERTEX_STAGE_H
+#define FS_VERTEX_STAGE_H
+#include <stdbool.h>
+#include <GL/gl.h>
+#include "rasterizer.h"
+
+#define FS_MODELVIEW_STACK_DEPTH 32
+#define FS_PROJECTION_STACK_DEPTH 4   /* GL minimum is 2; Mesa allows 32 */
+#define FS_TEXTURE_STACK_DEPTH 10
+#define FS_MAX_LIGHTS 8
+
+typedef struct fs_matrix { float m[16]; } fs_matrix; /* column-major, as GL */
+
+typedef struct fs_transform_state {
+    GLenum matrix_mode;
+    fs_matrix modelview[FS_MODELVIEW_STACK_DEPTH];
+    fs_matrix projection[FS_PROJECTION_STACK_DEPTH];
+    fs_matrix texture[FS_TEXTURE_STACK_DEPTH];
+    int modelview_top, projection_top, texture_top; /* index of the current matrix */
+    GLint viewport[4];
+    double depth_range[2];
+    bool normalize, rescale_normal;
+} fs_transform_state;
+
+typedef struct fs_light {
+    bool enabled;
+    float ambient[4], diffuse[4], specular[4];
+    float position[4];       /* eye coordinates (transformed when specified) */
+    float spot_direction[3]; /* eye coordinates */
+    float spot_exponent, spot_cutoff;
+    float attenuation[3];    /* constant, linear, quadratic */
+} fs_light;
+
+typedef struct fs_material {
+    float ambient[4], diffuse[4], specular[4], emission[4];
+    float shininess;
+} fs_material;
+
+typedef struct fs_lighting_state {
+    bool enabled;            /* GL_LIGHTING */
+    fs_light light[FS_MAX_LIGHTS];
+    float model_ambient[4];
+    bool local_viewer, two_side;
+    fs_material material[2]; /* front, back */
+    bool color_material;     /* GL_COLOR_MATERIAL */
+    GLenum color_material_face, color_material_mode;
+    GLenum shade_model;      /* GL_SMOOTH */
+} fs_lighting_state;
+
+typedef struct fs_current_state {
+    float color[4], normal[3], texcoord[4];
+} fs_current_state;
+
+typedef struct fs_client_array {
+    bool enabled;
+    GLint size;
+    GLenum type;
+    GLsizei stride;          /* as given; 0 means tightly packed */
+    const void *pointer;
+} fs_client_array;
+
+typedef struct fs_array_state {
+    fs_client_array vertex, normal, color, texcoord;
+} fs_array_state;
+
+/* Immediate-mode primitive assembly state; the vertex agent owns its fields. */
+typedef struct fs_prim_state {
+    bool inside_begin;
+    GLenum mode;
+    int count;               /* vertices since glBegin */
+    void *impl;              /* private buffers of primitive.c */
+} fs_prim_state;
+
+void fs_vertex_stage_init(fs_context *c);
+void fs_vertex_stage_free(fs_context *c);
+#endif
