@@ -21,12 +21,12 @@ LIB_SRCS := $(wildcard pipeline/*.c units/*.c rtl_model/*.c) \
 CLI_SRCS := $(wildcard driver/cli_*.c driver/osmesa_*.c)
 CLI_CXX := $(wildcard driver/*.cpp)
 TEST_SRCS := $(wildcard tests/test_*.c)
-SCENE_SRCS := $(wildcard traces/scene_*.c)
+SCENE_SRCS := $(wildcard traces/*.c)
 
 LIB_OBJS := $(LIB_SRCS:%.c=$(BUILD)/%.o)
 CLI_OBJS := $(CLI_SRCS:%.c=$(BUILD)/%.o) $(CLI_CXX:%.cpp=$(BUILD)/%.o)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
-SCENE_BINS := $(SCENE_SRCS:traces/%.c=$(BUILD)/traces/%)
+SCENEGEN := $(BUILD)/scenegen
 LIB := $(BUILD)/libfragsim.a
 FRAGSIM := $(BUILD)/fragsim
 # Link the archive whole so that every executor overrides its weak fallback.
@@ -57,9 +57,10 @@ tests: $(TEST_BINS)
 $(BUILD)/tests/%: $(BUILD)/tests/%.o $(LIB) $(filter-out $(BUILD)/driver/cli_main.o,$(CLI_OBJS))
 	$(CXX) $(LDFLAGS) -o $@ $< $(filter-out $(BUILD)/driver/cli_main.o,$(CLI_OBJS)) $(WHOLE_LIB) $(PKG_LIBS) $(OIIO_LIBS) -lm
 
-scenes: $(SCENE_BINS)
-$(BUILD)/traces/%: $(BUILD)/traces/%.o $(LIB)
-	$(CC) $(LDFLAGS) -o $@ $< $(WHOLE_LIB) $(PKG_LIBS) -lm
+# One generator program for every scene: traces/*.c.
+scenes: $(SCENEGEN)
+$(SCENEGEN): $(SCENE_SRCS:%.c=$(BUILD)/%.o) $(LIB)
+	$(CC) $(LDFLAGS) -o $@ $(SCENE_SRCS:%.c=$(BUILD)/%.o) $(WHOLE_LIB) $(PKG_LIBS) -lm
 
 test: deps all
 	@tests/run_all.sh $(BUILD)
