@@ -35,6 +35,7 @@ struct fs_context {
     fs_framebuffer fb;
 
     GLint pack_alignment, unpack_alignment, unpack_row_length;
+    bool unmodelled_caps[32];     /* enables fragsim stores but does not model (driver/gl_state.c) */
 
     struct fs_dlist_state *lists;
     struct fs_capture *capture;   /* non-NULL while recording a trace */

@@ -1,0 +1,473 @@
+/*
+ * Display lists (GL 1.5 spec 5.4).  A list is a sequence of fs_call records
+ * with deep copies of their array arguments.  Commands that read client
+ * arrays are stored with a snapshot of the array state and of the vertex
+ * data they dereference, because GL 1.5 spec 5.4 says client state is
+ * dereferenced when the list is compiled, not when it is executed.
+ */
+#include <stdlib.h>
+#include <string.h>
+#include "../pipeline/context.h"
+#include "display_list.h"
+
+/* GL leaves the nesting limit to the implementation (GL_MAX_LIST_NESTING,
+ * at least 64); Mesa uses 64. */
+#define FS_MAX_LIST_NESTING 64
+
+typedef struct dl_entry {
+    fs_call call;
+    fs_array_state *arrays; /* non-NULL for FS_F_DRAW commands: the snapshot */
+} dl_entry;
+
+typedef struct dl_list {
+    GLuint name;
+    dl_entry *entries;
+    size_t n, cap;
+    void **blocks; /* copied argument data and vertex snapshots */
+    size_t nblocks, blocks_cap;
+} dl_list;
+
+typedef struct fs_dlist_state {
+    dl_list **slots; /* open addressing on name; NULL = empty */
+    size_t nslots, used;
+    dl_list *building; /* between glNewList and glEndList */
+    GLenum mode;
+    GLuint base;
+    int depth;
+    bool oom; /* out of memory while compiling: EndList raises GL_OUT_OF_MEMORY */
+} fs_dlist_state;
+
+static fs_dlist_state *state(fs_context *c)
+{
+    if (!c->lists)
+        c->lists = calloc(1, sizeof(fs_dlist_state));
+    return c->lists;
+}
+
+static void list_free(dl_list *l)
+{
+    if (!l)
+        return;
+    for (size_t i = 0; i < l->nblocks; i++)
+        free(l->blocks[i]);
+    free(l->blocks);
+    free(l->entries);
+    free(l);
+}
+
+void fs_dlist_free_all(fs_context *c)
+{
+    fs_dlist_state *s = c->lists;
+    if (!s)
+        return;
+    for (size_t i = 0; i < s->nslots; i++)
+        if (s->slots[i] && s->slots[i] != (dl_list *)s)
+            list_free(s->slots[i]);
+    free(s->slots);
+    list_free(s->building);
+    free(s);
+    c->lists = NULL;
+}
+
+/* A tombstone marks deleted slots so probing continues past them. */
+#define TOMBSTONE(s) ((dl_list *)(s))
+
+static size_t hash_name(GLuint name, size_t nslots)
+{
+    return (size_t)((name * 2654435761u) & (nslots - 1));
+}
+
+static dl_list **find_slot(fs_dlist_state *s, GLuint name)
+{
+    if (!s->nslots)
+        return NULL;
+    for (size_t i = hash_name(name, s->nslots), k = 0; k < s->nslots; k++, i = (i + 1) & (s->nslots - 1)) {
+        dl_list *l = s->slots[i];
+        if (!l)
+            return NULL;
+        if (l != TOMBSTONE(s) && l->name == name)
+            return &s->slots[i];
+    }
+    return NULL;
+}
+
+static dl_list *find_list(fs_dlist_state *s, GLuint name)
+{
+    dl_list **p = find_slot(s, name);
+    return p ? *p : NULL;
+}
+
+static int insert_list(fs_dlist_state *s, dl_list *l)
+{
+    if ((s->used + 1) * 2 > s->nslots) {
+        size_t n = s->nslots ? s->nslots * 2 : 64;
+        dl_list **slots = calloc(n, sizeof *slots);
+        if (!slots)
+            return -1;
+        for (size_t i = 0; i < s->nslots; i++) {
+            dl_list *o = s->slots[i];
+            if (!o || o == TOMBSTONE(s))
+                continue;
+            size_t j = hash_name(o->name, n);
+            while (slots[j])
+                j = (j + 1) & (n - 1);
+            slots[j] = o;
+        }
+        free(s->slots);
+        s->slots = slots;
+        s->nslots = n;
+        size_t live = 0;
+        for (size_t i = 0; i < n; i++)
+            live += slots[i] != NULL;
+        s->used = live;
+    }
+    size_t j = hash_name(l->name, s->nslots);
+    while (s->slots[j] && s->slots[j] != TOMBSTONE(s))
+        j = (j + 1) & (s->nslots - 1);
+    if (!s->slots[j])
+        s->used++;
+    s->slots[j] = l;
+    return 0;
+}
+
+static void delete_list(fs_dlist_state *s, GLuint name)
+{
+    dl_list **p = find_slot(s, name);
+    if (p) {
+        list_free(*p);
+        *p = TOMBSTONE(s);
+    }
+}
+
+bool fs_dlist_compiling(const fs_context *c)
+{
+    return c->lists && c->lists->building;
+}
+
+bool fs_dlist_execute_too(const fs_context *c)
+{
+    return c->lists && c->lists->mode == GL_COMPILE_AND_EXECUTE;
+}
+
+static void *keep(fs_dlist_state *s, dl_list *l, const void *src, size_t bytes)
+{
+    if (l->nblocks == l->blocks_cap) {
+        size_t cap = l->blocks_cap ? l->blocks_cap * 2 : 16;
+        void **b = realloc(l->blocks, cap * sizeof *b);
+        if (!b) {
+            s->oom = true;
+            return NULL;
+        }
+        l->blocks = b;
+        l->blocks_cap = cap;
+    }
+    void *p = malloc(bytes ? bytes : 1);
+    if (!p) {
+        s->oom = true;
+        return NULL;
+    }
+    if (src && bytes)
+        memcpy(p, src, bytes);
+    l->blocks[l->nblocks++] = p;
+    return p;
+}
+
+static size_t kind_elem_size(int kind)
+{
+    switch (kind) {
+    case FS_K_AF: case FS_K_AI: case FS_K_AU: return 4;
+    case FS_K_AD: return 8;
+    case FS_K_AS: case FS_K_AUS: return 2;
+    case FS_K_AUB: case FS_K_ABY: case FS_K_BLOB: return 1;
+    default: return 0;
+    }
+}
+
+/* Bytes between consecutive elements of a client array (GL 1.5 spec 2.8:
+ * stride 0 means tightly packed). */
+static size_t array_stride(const fs_client_array *a, int ncomp)
+{
+    return a->stride ? (size_t)a->stride : (size_t)fs_type_size(a->type) * (size_t)ncomp;
+}
+
+static int64_t index_at(const void *indices, GLenum type, int64_t i)
+{
+    switch (type) {
+    case GL_UNSIGNED_BYTE: return ((const GLubyte *)indices)[i];
+    case GL_UNSIGNED_SHORT: return ((const GLushort *)indices)[i];
+    case GL_UNSIGNED_INT: return ((const GLuint *)indices)[i];
+    default: return -1;
+    }
+}
+
+/* The range of vertices a draw call reads, or false when it reads none. */
+static bool draw_range(const fs_call *call, int64_t *lo, int64_t *hi)
+{
+    switch (call->cmd) {
+    case FS_CMD_ArrayElement:
+        *lo = *hi = call->a[0].i;
+        return *lo >= 0;
+    case FS_CMD_DrawArrays:
+        *lo = call->a[1].i;
+        *hi = call->a[1].i + call->a[2].i - 1;
+        return *lo >= 0 && *hi >= *lo;
+    case FS_CMD_DrawElements:
+    case FS_CMD_DrawRangeElements: {
+        int ci = call->cmd == FS_CMD_DrawElements ? 1 : 3;
+        int64_t count = call->a[ci].i;
+        GLenum type = (GLenum)call->a[ci + 1].i;
+        const void *idx = call->a[ci + 2].p;
+        if (count <= 0 || !idx || fs_type_size(type) == 0)
+            return false;
+        *lo = INT64_MAX;
+        *hi = -1;
+        for (int64_t i = 0; i < count; i++) {
+            int64_t v = index_at(idx, type, i);
+            if (v < 0)
+                return false;
+            if (v < *lo) *lo = v;
+            if (v > *hi) *hi = v;
+        }
+        return true;
+    }
+    default:
+        return false;
+    }
+}
+
+static void snapshot_array(fs_dlist_state *s, dl_list *l, fs_client_array *dst,
+                           const fs_client_array *src, int ncomp, int64_t lo, int64_t hi)
+{
+    *dst = *src;
+    if (!src->enabled || !src->pointer)
+        return;
+    size_t stride = array_stride(src, ncomp);
+    size_t elem = (size_t)fs_type_size(src->type) * (size_t)ncomp;
+    size_t n = (size_t)(hi - lo + 1);
+    size_t bytes = (n - 1) * stride + elem;
+    const char *from = (const char *)src->pointer + (size_t)lo * stride;
+    char *copy = keep(s, l, from, bytes);
+    if (!copy) {
+        dst->enabled = false;
+        return;
+    }
+    /* Index i of the snapshot lives at copy + (i - lo) * stride. */
+    dst->pointer = copy - (ptrdiff_t)((size_t)lo * stride);
+}
+
+void fs_dlist_compile(fs_context *c, const fs_call *call)
+{
+    fs_dlist_state *s = c->lists;
+    dl_list *l = s ? s->building : NULL;
+    if (!l)
+        return;
+    if (l->n == l->cap) {
+        size_t cap = l->cap ? l->cap * 2 : 64;
+        dl_entry *e = realloc(l->entries, cap * sizeof *e);
+        if (!e) {
+            s->oom = true;
+            return;
+        }
+        l->entries = e;
+        l->cap = cap;
+    }
+    dl_entry *e = &l->entries[l->n];
+    e->call = *call;
+    e->arrays = NULL;
+    const fs_cmd_info *info = &fs_cmd_table[call->cmd];
+    for (int i = 0; i < info->nargs; i++) {
+        size_t es = kind_elem_size(info->kinds[i]);
+        if (es && call->a[i].p) {
+            e->call.a[i].p = keep(s, l, call->a[i].p, es * call->a[i].count);
+            if (!e->call.a[i].p)
+                return;
+        }
+    }
+    if (info->flags & FS_F_DRAW) {
+        int64_t lo, hi;
+        fs_array_state *snap = keep(s, l, &c->arrays, sizeof c->arrays);
+        if (!snap)
+            return;
+        if (draw_range(&e->call, &lo, &hi)) {
+            snapshot_array(s, l, &snap->vertex, &c->arrays.vertex, c->arrays.vertex.size, lo, hi);
+            snapshot_array(s, l, &snap->normal, &c->arrays.normal, 3, lo, hi);
+            snapshot_array(s, l, &snap->color, &c->arrays.color, c->arrays.color.size, lo, hi);
+            snapshot_array(s, l, &snap->texcoord, &c->arrays.texcoord, c->arrays.texcoord.size, lo, hi);
+        } else {
+            memset(snap, 0, sizeof *snap);
+        }
+        e->arrays = snap;
+    }
+    l->n++;
+}
+
+static void execute_list(fs_context *c, GLuint name)
+{
+    fs_dlist_state *s = state(c);
+    dl_list *l = s ? find_list(s, name) : NULL;
+    if (!l)
+        return; /* GL 1.5 spec 5.4: calling an undefined list has no effect */
+    if (s->depth >= FS_MAX_LIST_NESTING)
+        return; /* the spec bounds nesting; deeper calls are ignored */
+    s->depth++;
+    for (size_t i = 0; i < l->n; i++) {
+        dl_entry *e = &l->entries[i];
+        if (e->arrays) {
+            fs_array_state saved = c->arrays;
+            c->arrays = *e->arrays;
+            fs_dispatch(c, &e->call);
+            c->arrays = saved;
+        } else {
+            fs_dispatch(c, &e->call);
+        }
+    }
+    s->depth--;
+}
+
+GLuint fs_exec_GenLists(fs_context *c, GLsizei range)
+{
+    if (range < 0) {
+        fs_error(c, GL_INVALID_VALUE);
+        return 0;
+    }
+    if (range == 0)
+        return 0;
+    fs_dlist_state *s = state(c);
+    if (!s) {
+        fs_error(c, GL_OUT_OF_MEMORY);
+        return 0;
+    }
+    /* First fit: the lowest run of `range` unused names, as Mesa hands them out. */
+    for (uint64_t first = 1; first + (uint64_t)range - 1 <= 0xffffffffu;) {
+        GLsizei k = 0;
+        while (k < range && !find_list(s, (GLuint)(first + (uint64_t)k)))
+            k++;
+        if (k == range) {
+            for (GLsizei j = 0; j < range; j++) {
+                dl_list *l = calloc(1, sizeof *l);
+                if (l)
+                    l->name = (GLuint)(first + (uint64_t)j);
+                if (!l || insert_list(s, l) != 0) {
+                    free(l);
+                    fs_error(c, GL_OUT_OF_MEMORY);
+                    return 0;
+                }
+            }
+            return (GLuint)first;
+        }
+        first += (uint64_t)k + 1;
+    }
+    fs_error(c, GL_OUT_OF_MEMORY);
+    return 0;
+}
+
+void fs_exec_NewList(fs_context *c, GLuint list, GLenum mode)
+{
+    fs_dlist_state *s = state(c);
+    if (list == 0) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    if (mode != GL_COMPILE && mode != GL_COMPILE_AND_EXECUTE) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    if (!s || s->building) {
+        fs_error(c, s ? GL_INVALID_OPERATION : GL_OUT_OF_MEMORY);
+        return;
+    }
+    s->building = calloc(1, sizeof(dl_list));
+    if (!s->building) {
+        fs_error(c, GL_OUT_OF_MEMORY);
+        return;
+    }
+    s->building->name = list;
+    s->mode = mode;
+    s->oom = false;
+}
+
+void fs_exec_EndList(fs_context *c)
+{
+    fs_dlist_state *s = state(c);
+    if (!s || !s->building) {
+        fs_error(c, GL_INVALID_OPERATION);
+        return;
+    }
+    dl_list *l = s->building;
+    s->building = NULL;
+    s->mode = 0;
+    if (s->oom) {
+        list_free(l);
+        fs_error(c, GL_OUT_OF_MEMORY);
+        return;
+    }
+    /* The new definition replaces the old one only now (GL 1.5 spec 5.4). */
+    delete_list(s, l->name);
+    if (insert_list(s, l) != 0) {
+        list_free(l);
+        fs_error(c, GL_OUT_OF_MEMORY);
+    }
+}
+
+void fs_exec_CallList(fs_context *c, GLuint list)
+{
+    execute_list(c, list);
+}
+
+void fs_exec_CallLists(fs_context *c, GLsizei n, GLenum type, const GLvoid *lists)
+{
+    if (n < 0) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    if (fs_calllists_bytes(1, type) <= 0) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    fs_dlist_state *s = state(c);
+    GLuint base = s ? s->base : 0;
+    const GLubyte *b = lists;
+    for (GLsizei i = 0; i < n; i++) {
+        GLuint v;
+        switch (type) {
+        case GL_BYTE: v = (GLuint)(GLint)((const GLbyte *)lists)[i]; break;
+        case GL_UNSIGNED_BYTE: v = b[i]; break;
+        case GL_SHORT: { GLshort x; memcpy(&x, b + 2 * i, 2); v = (GLuint)(GLint)x; break; }
+        case GL_UNSIGNED_SHORT: { GLushort x; memcpy(&x, b + 2 * i, 2); v = x; break; }
+        case GL_INT: { GLint x; memcpy(&x, b + 4 * i, 4); v = (GLuint)x; break; }
+        case GL_UNSIGNED_INT: { memcpy(&v, b + 4 * i, 4); break; }
+        case GL_FLOAT: { GLfloat x; memcpy(&x, b + 4 * i, 4); v = (GLuint)(GLint)x; break; }
+        /* GL 1.5 spec 5.4: the n-byte types are big-endian byte sequences. */
+        case GL_2_BYTES: v = (GLuint)b[2 * i] << 8 | b[2 * i + 1]; break;
+        case GL_3_BYTES: v = (GLuint)b[3 * i] << 16 | (GLuint)b[3 * i + 1] << 8 | b[3 * i + 2]; break;
+        default: v = (GLuint)b[4 * i] << 24 | (GLuint)b[4 * i + 1] << 16 | (GLuint)b[4 * i + 2] << 8 | b[4 * i + 3]; break;
+        }
+        execute_list(c, base + v);
+    }
+}
+
+void fs_exec_DeleteLists(fs_context *c, GLuint list, GLsizei range)
+{
+    if (range < 0) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    fs_dlist_state *s = state(c);
+    if (!s)
+        return;
+    for (GLsizei i = 0; i < range; i++)
+        delete_list(s, list + (GLuint)i);
+}
+
+void fs_exec_ListBase(fs_context *c, GLuint base)
+{
+    fs_dlist_state *s = state(c);
+    if (s)
+        s->base = base;
+}
+
+GLboolean fs_exec_IsList(fs_context *c, GLuint list)
+{
+    fs_dlist_state *s = state(c);
+    return s && find_list(s, list) ? GL_TRUE : GL_FALSE;
+}
