@@ -1,0 +1,154 @@
+/*
+ * Configuration keys from config.def: defaults, INI files (libinih),
+ * "section.key=value" overrides, and the listing behind `fragsim config --list`.
+ * Checks are done per key with one precise message (the SimpleScalar idea in
+ * shared/style-anchors.md).
+ */
+#include <errno.h>
+#include <stddef.h>
+#include <ini.h>
+#include <stdlib.h>
+#include <string.h>
+#include "config.h"
+
+typedef struct key_info {
+    const char *section, *key, *type, *unit, *meaning;
+    long def, lo, hi;
+    size_t offset;
+} key_info;
+
+static const key_info keys[] = {
+#define FS_CONFIG(sec, k, type, def, lo, hi, unit, meaning) \
+    {#sec, #k, #type, unit, meaning, def, lo, hi, offsetof(fs_config, sec##_##k)},
+#include "config.def"
+#undef FS_CONFIG
+};
+#define NKEYS (sizeof keys / sizeof keys[0])
+
+void fs_config_defaults(fs_config *cfg)
+{
+    for (size_t i = 0; i < NKEYS; i++)
+        *(long *)((char *)cfg + keys[i].offset) = keys[i].def;
+}
+
+static int set_key(fs_config *cfg, const char *section, const char *key, const char *value,
+                   char *err, size_t errlen)
+{
+    for (size_t i = 0; i < NKEYS; i++) {
+        if (strcmp(keys[i].section, section) != 0 || strcmp(keys[i].key, key) != 0)
+            continue;
+        long v;
+        if (strcmp(keys[i].type, "BOOL") == 0) {
+            if (!strcmp(value, "true") || !strcmp(value, "1") || !strcmp(value, "yes"))
+                v = 1;
+            else if (!strcmp(value, "false") || !strcmp(value, "0") || !strcmp(value, "no"))
+                v = 0;
+            else {
+                snprintf(err, errlen, "%s.%s: '%s' is not a boolean (true/false)", section, key, value);
+                return -1;
+            }
+        } else {
+            char *end;
+            errno = 0;
+            v = strtol(value, &end, 0);
+            if (errno || end == value || *end != '\0') {
+                snprintf(err, errlen, "%s.%s: '%s' is not an integer", section, key, value);
+                return -1;
+            }
+            if (v < keys[i].lo || v > keys[i].hi) {
+                snprintf(err, errlen, "%s.%s: %ld is out of range [%ld, %ld] %s", section, key, v,
+                         keys[i].lo, keys[i].hi, keys[i].unit);
+                return -1;
+            }
+        }
+        *(long *)((char *)cfg + keys[i].offset) = v;
+        return 0;
+    }
+    snprintf(err, errlen, "unknown key %s.%s (see `fragsim config --list`)", section, key);
+    return -1;
+}
+
+typedef struct load_ctx {
+    fs_config *cfg;
+    char *err;
+    size_t errlen;
+    int failed;
+} load_ctx;
+
+static int on_ini_value(void *user, const char *section, const char *name, const char *value)
+{
+    load_ctx *l = user;
+    if (l->failed)
+        return 0;
+    if (set_key(l->cfg, section, name, value, l->err, l->errlen) != 0) {
+        l->failed = 1;
+        return 0; /* inih then reports this line number */
+    }
+    return 1;
+}
+
+int fs_config_load(fs_config *cfg, const char *path, char *err, size_t errlen)
+{
+    char msg[256] = "";
+    load_ctx l = {cfg, msg, sizeof msg, 0};
+    int line = ini_parse(path, on_ini_value, &l);
+    if (line == -1) {
+        snprintf(err, errlen, "%s: cannot open: %s", path, strerror(errno));
+        return -1;
+    }
+    if (line == -2) {
+        snprintf(err, errlen, "%s: out of memory while parsing", path);
+        return -1;
+    }
+    if (line > 0) {
+        snprintf(err, errlen, "%s:%d: %s", path, line, msg[0] ? msg : "syntax error");
+        return -1;
+    }
+    return 0;
+}
+
+int fs_config_set(fs_config *cfg, const char *assignment, char *err, size_t errlen)
+{
+    const char *dot = strchr(assignment, '.');
+    const char *eq = strchr(assignment, '=');
+    if (!dot || !eq || dot > eq) {
+        snprintf(err, errlen, "--set '%s': expected section.key=value", assignment);
+        return -1;
+    }
+    char section[64], key[64];
+    size_t ls = (size_t)(dot - assignment), lk = (size_t)(eq - dot - 1);
+    if (ls >= sizeof section || lk >= sizeof key) {
+        snprintf(err, errlen, "--set '%s': name too long", assignment);
+        return -1;
+    }
+    memcpy(section, assignment, ls);
+    section[ls] = '\0';
+    memcpy(key, dot + 1, lk);
+    key[lk] = '\0';
+    char msg[256];
+    if (set_key(cfg, section, key, eq + 1, msg, sizeof msg) != 0) {
+        snprintf(err, errlen, "--set: %s", msg);
+        return -1;
+    }
+    return 0;
+}
+
+void fs_config_list(FILE *f)
+{
+    for (size_t i = 0; i < NKEYS; i++)
+        fprintf(f, "%s.%-16s %-4s default %-6ld range [%ld, %ld] %-7s %s\n", keys[i].section,
+                keys[i].key, keys[i].type, keys[i].def, keys[i].lo, keys[i].hi, keys[i].unit,
+                keys[i].meaning);
+}
+
+void fs_config_write_ini(FILE *f, const fs_config *cfg)
+{
+    const char *section = "";
+    for (size_t i = 0; i < NKEYS; i++) {
+        if (strcmp(section, keys[i].section) != 0) {
+            section = keys[i].section;
+            fprintf(f, "%s[%s]\n", i ? "\n" : "", section);
+        }
+        fprintf(f, "%s = %ld\n", keys[i].key, *(const long *)((const char *)cfg + keys[i].offset));
+    }
+}
