@@ -1,16 +1,26 @@
 /*
- * Per-fragment operations chain (GL 1.5 spec 4.1): ownership, scissor,
- * alpha, stencil, depth, blending, dithering, logic op, masked writes.
+ * Per-fragment operations chain (GL 1.5 spec 4.1, figure 4.1): pixel
+ * ownership (4.1.1), scissor (4.1.2), alpha (4.1.4), stencil (4.1.5), depth
+ * (4.1.6), the Occlusion Unit attachment point, blending (4.1.8), dithering
+ * (4.1.9), logic op (4.1.10) and the masked write (4.2.2).
+ *
+ * The path is chosen per quad from the state because glEnable/glDisable
+ * (owned by the driver) change c->frag directly, so there is no hook to
+ * recompute a cached choice; the check is a handful of loads per quad.
+ * fs_fragment_quad_general is the reference; the fast paths must give the
+ * same bytes and statistics (tests/test_fragment_ops.c holds them equal).
  */
-#include <math.h>
-#include "context.h"
+#include "fragment_stages.h"
 
 void fs_fragment_state_init(fs_fragment_state *f)
 {
     /* Initial values from GL 1.5 spec tables 6.19-6.21. */
     f->scissor_enabled = false;
     f->scissor[0] = f->scissor[1] = 0;
-    f->scissor[2] = f->scissor[3] = 0; /* set from the window size on first use */
+    /* GL's initial box is the window size, which is not known here; a box as
+     * large as the largest framebuffer behaves identically (the window clips
+     * it).  A context that knows its size may overwrite these two values. */
+    f->scissor[2] = f->scissor[3] = 16384;
     f->alpha_enabled = false;
     f->alpha_func = GL_ALWAYS;
     f->alpha_ref = 0.0f;
@@ -37,32 +47,154 @@ void fs_fragment_state_init(fs_fragment_state *f)
     f->clear_stencil = 0;
 }
 
-static inline uint8_t to_unorm8(float x)
+static inline void store_rgba8(uint8_t *p, const float col[4])
 {
-    if (!(x > 0.0f)) return 0;
-    if (x >= 1.0f) return 255;
-    return (uint8_t)lrintf(x * 255.0f);
+    p[0] = fs_unorm8(col[0]);
+    p[1] = fs_unorm8(col[1]);
+    p[2] = fs_unorm8(col[2]);
+    p[3] = fs_unorm8(col[3]);
+}
+
+/* Pixel ownership (4.1.1): fragments outside the window are discarded. */
+static inline unsigned ownership_mask(const fs_context *c, int qx, int qy, unsigned mask)
+{
+    int w = c->fb.width, h = c->fb.height;
+    if (qx >= 0 && qy >= 0 && qx + 1 < w && qy + 1 < h)
+        return mask;
+    unsigned in = 0;
+    for (int i = 0; i < 4; i++) {
+        int x = qx + (i & 1), y = qy + (i >> 1);
+        if (x >= 0 && y >= 0 && x < w && y < h)
+            in |= 1u << i;
+    }
+    return mask & in;
+}
+
+static inline void occlusion_point(fs_context *c, const fs_quad *q, unsigned tested, unsigned passed)
+{
+    /* === Occlusion Unit attachment point (issue 3 attaches the Occlusion
+     * Unit here): after the stencil and depth tests, before blending.  passed
+     * is what GL_SAMPLES_PASSED counts (alpha, stencil and depth passed). */
+    if (c->occlusion_hook)
+        c->occlusion_hook(c, c->occlusion_user, q, tested, passed);
+    c->stats.fragments_passed_depth += fs_popcount4(passed);
+}
+
+void fs_fragment_quad_general(fs_context *c, fs_quad *q)
+{
+    const fs_fragment_state *f = &c->frag;
+    fs_framebuffer *fb = &c->fb;
+    unsigned m = q->mask & 0xfu, n;
+
+    n = ownership_mask(c, q->x, q->y, m);
+    c->stats.killed_ownership += fs_popcount4(m & ~n);
+    m = n;
+    if (f->scissor_enabled) {
+        n = fs_scissor_quad(c, q->x, q->y, m);
+        c->stats.killed_scissor += fs_popcount4(m & ~n);
+        m = n;
+    }
+    if (f->alpha_enabled) {
+        n = fs_alpha_test_quad(c, q, m);
+        c->stats.killed_alpha += fs_popcount4(m & ~n);
+        m = n;
+    }
+    if (!m)
+        return;
+
+    size_t idx[4];
+    for (int i = 0; i < 4; i++)
+        idx[i] = (size_t)(q->y + (i >> 1)) * (size_t)fb->width + (size_t)(q->x + (i & 1));
+
+    unsigned tested;
+    unsigned passed = fs_stencil_depth_quad(c, q, m, idx, &tested);
+    occlusion_point(c, q, tested, passed);
+
+    /* Dithering (4.1.9) is enabled by default but llvmpipe does not dither
+     * an RGBA8 buffer, so it has no stage here. */
+    bool all_channels = f->color_mask[0] && f->color_mask[1] && f->color_mask[2] && f->color_mask[3];
+    for (int i = 0; i < 4; i++) {
+        if (!(passed >> i & 1u))
+            continue;
+        uint8_t *p = fb->color + idx[i] * 4;
+        uint8_t src[4], out[4];
+        store_rgba8(src, q->color[i]);
+        if (f->logic_op_enabled) {
+            memcpy(out, p, 4);
+            fs_logic_op_rgba8(f->logic_op, src, out);
+        } else if (f->blend_enabled) {
+            memcpy(out, p, 4);
+            fs_blend_rgba8(c, src, out);
+        } else {
+            memcpy(out, src, 4);
+        }
+        if (all_channels)
+            memcpy(p, out, 4);
+        else
+            fs_masked_color_write(c, p, out);
+    }
+    c->stats.fragments_written += fs_popcount4(passed);
+}
+
+/* Depth test LESS/LEQUAL with depth writes, everything else off: the state
+ * of most opaque 3D drawing. */
+static void quad_depth_write(fs_context *c, const fs_quad *q, unsigned m, bool lequal)
+{
+    fs_framebuffer *fb = &c->fb;
+    size_t w = (size_t)fb->width;
+    size_t base = (size_t)q->y * w + (size_t)q->x;
+    unsigned passed = 0;
+    for (int i = 0; i < 4; i++) {
+        if (!(m >> i & 1u))
+            continue;
+        size_t k = base + (size_t)(i >> 1) * w + (size_t)(i & 1);
+        uint32_t z = q->z[i];
+        bool pass = lequal ? z <= fb->depth[k] : z < fb->depth[k];
+        if (!pass)
+            continue;
+        fb->depth[k] = z;
+        store_rgba8(fb->color + k * 4, q->color[i]);
+        passed |= 1u << i;
+    }
+    unsigned np = fs_popcount4(passed);
+    c->stats.killed_depth += fs_popcount4(m) - np;
+    occlusion_point(c, q, m, passed);
+    c->stats.fragments_written += np;
+}
+
+/* No tests at all: plain overwrite (2D, clears drawn as quads). */
+static void quad_plain(fs_context *c, const fs_quad *q, unsigned m)
+{
+    fs_framebuffer *fb = &c->fb;
+    size_t w = (size_t)fb->width;
+    size_t base = (size_t)q->y * w + (size_t)q->x;
+    for (int i = 0; i < 4; i++) {
+        if (m >> i & 1u)
+            store_rgba8(fb->color + (base + (size_t)(i >> 1) * w + (size_t)(i & 1)) * 4, q->color[i]);
+    }
+    occlusion_point(c, q, m, m);
+    c->stats.fragments_written += fs_popcount4(m);
 }
 
 void fs_fragment_quad(fs_context *c, fs_quad *q)
 {
-    fs_framebuffer *fb = &c->fb;
-    fs_fragment_state *f = &c->frag;
-    for (int i = 0; i < 4; i++) {
-        if (!(q->mask & (1u << i))) continue;
-        int x = q->x + (i & 1), y = q->y + (i >> 1);
-        if (x < 0 || y < 0 || x >= fb->width || y >= fb->height) {
-            c->stats.killed_ownership++;
-            continue;
+    const fs_fragment_state *f = &c->frag;
+    unsigned m = q->mask & 0xfu;
+    if (!m)
+        return;
+    bool simple = !f->scissor_enabled && !f->alpha_enabled && !f->stencil_enabled &&
+                  !f->blend_enabled && !f->logic_op_enabled &&
+                  f->color_mask[0] && f->color_mask[1] && f->color_mask[2] && f->color_mask[3];
+    int qx = q->x, qy = q->y;
+    if (simple && qx >= 0 && qy >= 0 && qx + 1 < c->fb.width && qy + 1 < c->fb.height) {
+        if (!f->depth_enabled) {
+            quad_plain(c, q, m);
+            return;
         }
-        size_t idx = (size_t)y * (size_t)fb->width + (size_t)x;
-        if (f->depth_enabled) {
-            if (!(q->z[i] < fb->depth[idx])) { c->stats.killed_depth++; continue; }
-            if (f->depth_write) fb->depth[idx] = q->z[i];
+        if (f->depth_write && (f->depth_func == GL_LESS || f->depth_func == GL_LEQUAL)) {
+            quad_depth_write(c, q, m, f->depth_func == GL_LEQUAL);
+            return;
         }
-        c->stats.fragments_passed_depth++;
-        uint8_t *p = fb->color + idx * 4;
-        for (int k = 0; k < 4; k++) p[k] = to_unorm8(q->color[i][k]);
-        c->stats.fragments_written++;
     }
+    fs_fragment_quad_general(c, q);
 }
