@@ -202,6 +202,63 @@ int fs_dispatch(fs_context *c, fs_call *call)
     return 0;
 }
 
+/* Array-length validation alone, for checking a whole trace before any of
+ * it executes (replay's first pass).  Returns -1 - k for a short argument k. */
+#define FS_VLOCAL(k, kind, name, cnt) FS_CT_##kind name = FS_UP_##kind(FS_CT_##kind, call->a[k]); (void)name;
+#define FS_VCK_ARR(k, name, cnt) \
+    if ((int64_t)(cnt) > 0 && (name == NULL || (int64_t)call->a[k].count < (int64_t)(cnt))) \
+        return -1 - (k);
+#define FS_VCK_E(k, name, cnt)
+#define FS_VCK_BM FS_VCK_E
+#define FS_VCK_B FS_VCK_E
+#define FS_VCK_I FS_VCK_E
+#define FS_VCK_U FS_VCK_E
+#define FS_VCK_SZ FS_VCK_E
+#define FS_VCK_UB FS_VCK_E
+#define FS_VCK_BY FS_VCK_E
+#define FS_VCK_S FS_VCK_E
+#define FS_VCK_US FS_VCK_E
+#define FS_VCK_F FS_VCK_E
+#define FS_VCK_D FS_VCK_E
+#define FS_VCK_CF FS_VCK_E
+#define FS_VCK_CD FS_VCK_E
+#define FS_VCK_CPTR FS_VCK_E
+#define FS_VCK_OV FS_VCK_E
+#define FS_VCK_OF FS_VCK_E
+#define FS_VCK_OD FS_VCK_E
+#define FS_VCK_OI FS_VCK_E
+#define FS_VCK_OB FS_VCK_E
+#define FS_VCK_AF FS_VCK_ARR
+#define FS_VCK_AD FS_VCK_ARR
+#define FS_VCK_AI FS_VCK_ARR
+#define FS_VCK_AU FS_VCK_ARR
+#define FS_VCK_AUB FS_VCK_ARR
+#define FS_VCK_ABY FS_VCK_ARR
+#define FS_VCK_AS FS_VCK_ARR
+#define FS_VCK_AUS FS_VCK_ARR
+#define FS_VCK_BLOB FS_VCK_ARR
+#define FS_VCHECK(k, kind, name, cnt) FS_VCK_##kind(k, name, cnt)
+/* Output counts may need a context; validation never evaluates them. */
+#define fs_readpixels_bytes(c, w, h, f, t) 0
+
+int fs_call_validate(const fs_call *call)
+{
+    switch ((enum fs_cmd)call->cmd) {
+#define FS_CMD(name, rk, flags, n, ...)                 \
+    case FS_CMD_##name: {                               \
+        FS_MAP(n, FS_VLOCAL, __VA_ARGS__)               \
+        FS_MAP(n, FS_VCHECK, __VA_ARGS__)               \
+        return 0;                                       \
+    }
+#include "gl_commands.def"
+#undef FS_CMD
+    case FS_CMD_COUNT:
+        break;
+    }
+    return -1 - FS_MAX_ARGS;
+}
+#undef fs_readpixels_bytes
+
 void fs_submit(fs_context *c, fs_call *call)
 {
     uint32_t flags = fs_cmd_table[call->cmd].flags;

@@ -163,6 +163,10 @@ void fs_submit(fs_context *c, fs_call *call);
  * an array argument is shorter than the command reads (malformed input). */
 int fs_dispatch(fs_context *c, fs_call *call);
 
+/* Checks array arguments against what the command reads, without a
+ * context.  Returns 0, or -1 - k when argument k is too short. */
+int fs_call_validate(const fs_call *call);
+
 /* Size helpers used by the count expressions in the table (driver/gl_sizes.c). */
 int64_t fs_index_bytes(GLsizei count, GLenum type);
 int64_t fs_calllists_bytes(GLsizei n, GLenum type);

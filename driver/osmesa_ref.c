@@ -1,0 +1,168 @@
+/* The OSMesa reference dispatcher: see osmesa_ref.h.  Generated from the
+ * same command table as the model's dispatcher. */
+#include <GL/osmesa.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "osmesa_ref.h"
+#include "gl_call_unpack.h"
+
+struct fs_osmesa {
+    OSMesaContext ctx;
+    int width, height, depth_bits;
+    uint8_t *color;
+    uint32_t *depth;
+    void *scratch;
+    size_t scratch_size;
+};
+
+fs_osmesa *fs_osmesa_create(int width, int height, int depth_bits, int stencil_bits, char *err, size_t errlen)
+{
+    fs_osmesa *o = calloc(1, sizeof *o);
+    if (!o || width <= 0 || height <= 0) {
+        snprintf(err, errlen, "osmesa: bad size %dx%d or out of memory", width, height);
+        free(o);
+        return NULL;
+    }
+    o->width = width;
+    o->height = height;
+    o->depth_bits = depth_bits;
+    o->ctx = OSMesaCreateContextExt(OSMESA_RGBA, depth_bits, stencil_bits, 0, NULL);
+    o->color = calloc((size_t)width * (size_t)height, 4);
+    o->depth = calloc((size_t)width * (size_t)height, sizeof *o->depth);
+    if (!o->ctx || !o->color || !o->depth ||
+        !OSMesaMakeCurrent(o->ctx, o->color, GL_UNSIGNED_BYTE, width, height)) {
+        snprintf(err, errlen, "osmesa: cannot create a %dx%d context", width, height);
+        fs_osmesa_destroy(o);
+        return NULL;
+    }
+    return o;
+}
+
+static void *scratch(fs_osmesa *o, size_t bytes)
+{
+    if (bytes > o->scratch_size) {
+        void *p = realloc(o->scratch, bytes);
+        if (!p)
+            return NULL;
+        o->scratch = p;
+        o->scratch_size = bytes;
+    }
+    return o->scratch;
+}
+
+/* OSMesa's own glReadPixels needs the real pack state, which the same call
+ * stream sets, so the byte count is computed like the model's. */
+static int64_t osm_readpixels_bytes(GLsizei w, GLsizei h)
+{
+    /* Up to 4 bytes per pixel plus the largest row padding (alignment 8). */
+    return w > 0 && h > 0 ? ((int64_t)w + 8) * h * 4 : 0;
+}
+
+#define FS_OCK_ARR(k, name, cnt) \
+    if ((int64_t)(cnt) > 0 && (name == NULL || (int64_t)call->a[k].count < (int64_t)(cnt))) return -1;
+#define FS_OCK_OUT(k, name, cnt, esize) \
+    if (name == NULL) {                                                       \
+        int64_t need_ = (int64_t)(cnt) > 16 ? (int64_t)(cnt) : 16;            \
+        name = scratch(o, (size_t)need_ * (esize));                            \
+        if (name == NULL) return -1;                                           \
+    }
+#define FS_OCK_NONE(k, name, cnt)
+#define FS_OCK_E FS_OCK_NONE
+#define FS_OCK_BM FS_OCK_NONE
+#define FS_OCK_B FS_OCK_NONE
+#define FS_OCK_I FS_OCK_NONE
+#define FS_OCK_U FS_OCK_NONE
+#define FS_OCK_SZ FS_OCK_NONE
+#define FS_OCK_UB FS_OCK_NONE
+#define FS_OCK_BY FS_OCK_NONE
+#define FS_OCK_S FS_OCK_NONE
+#define FS_OCK_US FS_OCK_NONE
+#define FS_OCK_F FS_OCK_NONE
+#define FS_OCK_D FS_OCK_NONE
+#define FS_OCK_CF FS_OCK_NONE
+#define FS_OCK_CD FS_OCK_NONE
+#define FS_OCK_CPTR FS_OCK_NONE
+#define FS_OCK_AF FS_OCK_ARR
+#define FS_OCK_AD FS_OCK_ARR
+#define FS_OCK_AI FS_OCK_ARR
+#define FS_OCK_AU FS_OCK_ARR
+#define FS_OCK_AUB FS_OCK_ARR
+#define FS_OCK_ABY FS_OCK_ARR
+#define FS_OCK_AS FS_OCK_ARR
+#define FS_OCK_AUS FS_OCK_ARR
+#define FS_OCK_BLOB FS_OCK_ARR
+#define FS_OCK_OV(k, name, cnt) FS_OCK_OUT(k, name, cnt, 1)
+#define FS_OCK_OF(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLfloat))
+#define FS_OCK_OD(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLdouble))
+#define FS_OCK_OI(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLint))
+#define FS_OCK_OB(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLboolean))
+#define FS_OCHECK(k, kind, name, cnt) FS_OCK_##kind(k, name, cnt)
+#define fs_readpixels_bytes(c, w, h, f, t) osm_readpixels_bytes(w, h)
+#define FS_OCALL_V(e) e
+#define FS_OCALL_U(e) (void)(e)
+#define FS_OCALL_E(e) (void)(e)
+#define FS_OCALL_B(e) (void)(e)
+#define FS_OCALL_I(e) (void)(e)
+#define FS_OCALL_STR(e) (void)(e)
+
+int fs_osmesa_dispatch(fs_osmesa *o, const fs_call *call)
+{
+    switch ((enum fs_cmd)call->cmd) {
+#define FS_CMD(name, rk, flags, n, ...)                                        \
+    case FS_CMD_##name: {                                                       \
+        FS_MAP(n, FS_LOCAL, __VA_ARGS__)                                        \
+        FS_MAP(n, FS_OCHECK, __VA_ARGS__)                                       \
+        FS_OCALL_##rk(gl##name(FS_CALL_ARGS(0 FS_MAP(n, FS_ANAME, __VA_ARGS__)))); \
+        return 0;                                                               \
+    }
+#include "gl_commands.def"
+#undef FS_CMD
+    case FS_CMD_COUNT:
+        break;
+    }
+    return -1;
+}
+#undef fs_readpixels_bytes
+
+const uint8_t *fs_osmesa_color(fs_osmesa *o)
+{
+    glFinish();
+    return o->color;
+}
+
+const uint32_t *fs_osmesa_depth(fs_osmesa *o)
+{
+    GLint w, h, bpv;
+    void *buf;
+    glFinish();
+    if (!OSMesaGetDepthBuffer(o->ctx, &w, &h, &bpv, &buf) || w != o->width || h != o->height)
+        return NULL;
+    size_t n = (size_t)w * (size_t)h;
+    uint32_t mask = o->depth_bits >= 32 ? 0xffffffffu : (1u << o->depth_bits) - 1;
+    for (size_t i = 0; i < n; i++) {
+        /* The notes measured 4 bytes per value with the depth in the low bits. */
+        uint32_t v;
+        if (bpv == 2) {
+            uint16_t s;
+            memcpy(&s, (const char *)buf + 2 * i, 2);
+            v = s;
+        } else {
+            memcpy(&v, (const char *)buf + 4 * i, 4);
+        }
+        o->depth[i] = v & mask;
+    }
+    return o->depth;
+}
+
+void fs_osmesa_destroy(fs_osmesa *o)
+{
+    if (!o)
+        return;
+    if (o->ctx)
+        OSMesaDestroyContext(o->ctx);
+    free(o->color);
+    free(o->depth);
+    free(o->scratch);
+    free(o);
+}

@@ -1,0 +1,661 @@
+/*
+ * Trace replay: apitrace calls -> fs_call.  See replay.h for the two passes.
+ *
+ * Client arrays: apitrace records glXxxPointer with the program's address
+ * (an opaque pointer, useless here) and, before each draw, a "fake"
+ * glXxxPointer call whose pointer argument is a blob with the vertex data
+ * the draw reads.  The replayer keeps those blobs alive and refuses a draw
+ * whose enabled arrays are not backed by recorded data covering every vertex
+ * it reads, so a trace can never make the model read foreign memory.
+ */
+#include <stdlib.h>
+#include <string.h>
+#include "replay.h"
+#include "trace.h"
+
+enum skip_kind { SKIP_UNKNOWN, SKIP_UNSAFE, SKIP_WINSYS };
+
+typedef struct skip_entry {
+    char *name;
+    uint64_t count;
+    enum skip_kind kind;
+} skip_entry;
+
+typedef struct arena_chunk {
+    struct arena_chunk *next;
+    size_t size, used;
+    _Alignas(16) unsigned char data[];
+} arena_chunk;
+
+/* What the replayer knows of one client array, to check draws. */
+typedef struct array_track {
+    bool enabled, has_data;
+    GLint size;
+    GLenum type;
+    GLsizei stride;
+    void *data; /* owned copy of the last recorded blob */
+    size_t bytes;
+} array_track;
+
+enum { ARR_VERTEX, ARR_NORMAL, ARR_COLOR, ARR_TEXCOORD, ARR_COUNT };
+
+struct fs_replayer {
+    char *path;
+    fs_trace_reader *tr;
+    fs_replay_info info;
+    bool frame_end_is_swap; /* any of the swap calls ends a frame */
+    int frame_end_cmd;      /* -1, or an fs_cmd that ends frames */
+    bool pending_frame_end;
+    uint64_t calls_since_frame;
+    uint64_t frames_done;
+    uint64_t p1_swaps, p1_finishes, p1_named; /* pass 1 counts */
+    const char *user_frame_end;
+    char err[512];
+    skip_entry *skips;
+    size_t nskips, skips_cap;
+    arena_chunk *arena;
+    array_track arr[ARR_COUNT];
+    /* name -> command id, open addressing */
+    struct { const char *name; int cmd; } *names;
+    size_t nnames;
+};
+
+static const char *const swap_calls[] = {
+    "glXSwapBuffers", "glXSwapBuffersMscOML", "eglSwapBuffers", "eglSwapBuffersWithDamageEXT",
+    "eglSwapBuffersWithDamageKHR", "wglSwapBuffers", "wglSwapLayerBuffers", "SwapBuffers",
+    "CGLFlushDrawable",
+};
+
+static bool is_swap(const char *name)
+{
+    for (size_t i = 0; i < sizeof swap_calls / sizeof swap_calls[0]; i++)
+        if (strcmp(name, swap_calls[i]) == 0)
+            return true;
+    return false;
+}
+
+static bool is_winsys(const char *name)
+{
+    return !strncmp(name, "glX", 3) || !strncmp(name, "egl", 3) || !strncmp(name, "wgl", 3) ||
+           !strncmp(name, "CGL", 3) || !strncmp(name, "OSMesa", 6);
+}
+
+/* ---- name lookup ---- */
+
+static uint64_t hash_str(const char *s)
+{
+    uint64_t h = 1469598103934665603ull; /* FNV-1a */
+    for (; *s; s++)
+        h = (h ^ (unsigned char)*s) * 1099511628211ull;
+    return h;
+}
+
+static int build_names(fs_replayer *r)
+{
+    r->nnames = 1024; /* > 2x the command count */
+    r->names = calloc(r->nnames, sizeof *r->names);
+    if (!r->names)
+        return -1;
+    for (int i = 0; i < FS_CMD_COUNT; i++) {
+        size_t j = hash_str(fs_cmd_table[i].name) & (r->nnames - 1);
+        while (r->names[j].name)
+            j = (j + 1) & (r->nnames - 1);
+        r->names[j].name = fs_cmd_table[i].name;
+        r->names[j].cmd = i;
+    }
+    return 0;
+}
+
+static int lookup(const fs_replayer *r, const char *name)
+{
+    for (size_t j = hash_str(name) & (r->nnames - 1);; j = (j + 1) & (r->nnames - 1)) {
+        if (!r->names[j].name)
+            return -1;
+        if (strcmp(r->names[j].name, name) == 0)
+            return r->names[j].cmd;
+    }
+}
+
+/* ---- bookkeeping ---- */
+
+static void count_skip(fs_replayer *r, const char *name, enum skip_kind kind)
+{
+    for (size_t i = 0; i < r->nskips; i++) {
+        if (r->skips[i].kind == kind && strcmp(r->skips[i].name, name) == 0) {
+            r->skips[i].count++;
+            return;
+        }
+    }
+    if (r->nskips == r->skips_cap) {
+        size_t cap = r->skips_cap ? r->skips_cap * 2 : 16;
+        skip_entry *s = realloc(r->skips, cap * sizeof *s);
+        if (!s)
+            return;
+        r->skips = s;
+        r->skips_cap = cap;
+    }
+    char *copy = strdup(name);
+    if (!copy)
+        return;
+    r->skips[r->nskips++] = (skip_entry){copy, 1, kind};
+}
+
+static void *arena_alloc(fs_replayer *r, size_t bytes)
+{
+    bytes = (bytes + 15) & ~(size_t)15;
+    arena_chunk *c = r->arena;
+    if (!c || c->size - c->used < bytes) {
+        size_t size = bytes > (1u << 20) ? bytes : (1u << 20);
+        c = malloc(sizeof *c + size);
+        if (!c)
+            return NULL;
+        c->next = r->arena;
+        c->size = size;
+        c->used = 0;
+        r->arena = c;
+    }
+    void *p = c->data + c->used;
+    c->used += bytes;
+    return p;
+}
+
+static void arena_reset(fs_replayer *r)
+{
+    /* Keep the newest chunk (the largest working set), free the rest. */
+    arena_chunk *c = r->arena;
+    if (!c)
+        return;
+    arena_chunk *rest = c->next;
+    c->next = NULL;
+    c->used = 0;
+    while (rest) {
+        arena_chunk *n = rest->next;
+        free(rest);
+        rest = n;
+    }
+}
+
+static int fail(fs_replayer *r, const fs_tcall *tc, const char *fmt, const char *detail)
+{
+    char what[256];
+    snprintf(what, sizeof what, fmt, detail);
+    snprintf(r->err, sizeof r->err, "%s: call %llu (%s) at stream offset %llu: %s", r->path,
+             (unsigned long long)tc->no, tc->name, (unsigned long long)tc->offset, what);
+    return -1;
+}
+
+/* ---- value conversion ---- */
+
+static bool tv_int(const fs_tval *v, int64_t *out)
+{
+    switch (v->type) {
+    case FS_TV_NULL: case FS_TV_FALSE: *out = 0; return true;
+    case FS_TV_TRUE: *out = 1; return true;
+    case FS_TV_SINT: case FS_TV_ENUM: *out = v->i; return true;
+    case FS_TV_UINT: case FS_TV_BITMASK: case FS_TV_OPAQUE: *out = (int64_t)v->u; return true;
+    case FS_TV_FLOAT: case FS_TV_DOUBLE:
+        if (!(v->d >= -9.2e18 && v->d <= 9.2e18))
+            return false;
+        *out = (int64_t)v->d;
+        return true;
+    default: return false;
+    }
+}
+
+static bool tv_double(const fs_tval *v, double *out)
+{
+    switch (v->type) {
+    case FS_TV_FLOAT: case FS_TV_DOUBLE: *out = v->d; return true;
+    case FS_TV_SINT: case FS_TV_ENUM: *out = (double)v->i; return true;
+    case FS_TV_UINT: *out = (double)v->u; return true;
+    case FS_TV_FALSE: case FS_TV_NULL: *out = 0; return true;
+    case FS_TV_TRUE: *out = 1; return true;
+    default: return false;
+    }
+}
+
+static size_t elem_size(int kind)
+{
+    switch (kind) {
+    case FS_K_AF: case FS_K_AI: case FS_K_AU: return 4;
+    case FS_K_AD: return 8;
+    case FS_K_AS: case FS_K_AUS: return 2;
+    default: return 1;
+    }
+}
+
+/* Converts an array value into a typed C array in the arena. */
+static int to_array(fs_replayer *r, const fs_tcall *tc, int kind, const fs_tval *v, fs_arg *a)
+{
+    size_t es = elem_size(kind);
+    if (v->type == FS_TV_NULL) {
+        a->p = NULL;
+        a->count = 0;
+        return 0;
+    }
+    if (v->type == FS_TV_BLOB || v->type == FS_TV_STRING) {
+        /* Raw bytes in the machine's representation (apitrace writes arrays
+         * it cannot type as blobs). */
+        if (v->str.len / es > UINT32_MAX)
+            return fail(r, tc, "%s array too long", fs_kind_names[kind]);
+        a->p = v->str.ptr;
+        a->count = (uint32_t)(v->str.len / es);
+        return 0;
+    }
+    if (v->type != FS_TV_ARRAY)
+        return fail(r, tc, "expected an array for a %s argument", fs_kind_names[kind]);
+    if (v->arr.n > UINT32_MAX)
+        return fail(r, tc, "%s array too long", fs_kind_names[kind]);
+    void *buf = arena_alloc(r, v->arr.n * es + 1);
+    if (!buf)
+        return fail(r, tc, "%s", "out of memory");
+    for (size_t i = 0; i < v->arr.n; i++) {
+        const fs_tval *e = &v->arr.elems[i];
+        double d;
+        int64_t n;
+        if (kind == FS_K_AF || kind == FS_K_AD) {
+            if (!tv_double(e, &d))
+                return fail(r, tc, "non-numeric element in a %s array", fs_kind_names[kind]);
+            if (kind == FS_K_AF)
+                ((GLfloat *)buf)[i] = (GLfloat)d;
+            else
+                ((GLdouble *)buf)[i] = d;
+            continue;
+        }
+        if (!tv_int(e, &n))
+            return fail(r, tc, "non-integer element in a %s array", fs_kind_names[kind]);
+        switch (kind) {
+        case FS_K_AI: ((GLint *)buf)[i] = (GLint)n; break;
+        case FS_K_AU: ((GLuint *)buf)[i] = (GLuint)n; break;
+        case FS_K_AS: ((GLshort *)buf)[i] = (GLshort)n; break;
+        case FS_K_AUS: ((GLushort *)buf)[i] = (GLushort)n; break;
+        case FS_K_ABY: ((GLbyte *)buf)[i] = (GLbyte)n; break;
+        default: ((GLubyte *)buf)[i] = (GLubyte)n; break; /* AUB, BLOB given as an array */
+        }
+    }
+    a->p = buf;
+    a->count = (uint32_t)v->arr.n;
+    return 0;
+}
+
+static int convert(fs_replayer *r, const fs_tcall *tc, int cmd, fs_call *call)
+{
+    const fs_cmd_info *info = &fs_cmd_table[cmd];
+    memset(call, 0, sizeof *call);
+    call->cmd = (uint16_t)cmd;
+    call->nargs = info->nargs;
+    call->flags = tc->flags;
+    if (tc->nargs < info->nargs) {
+        char n[32];
+        snprintf(n, sizeof n, "%u of %u", tc->nargs, (unsigned)info->nargs);
+        return fail(r, tc, "too few arguments (%s)", n);
+    }
+    for (int k = 0; k < info->nargs; k++) {
+        const fs_tval *v = &tc->args[k];
+        fs_arg *a = &call->a[k];
+        int kind = info->kinds[k];
+        switch (kind) {
+        case FS_K_E: case FS_K_BM: case FS_K_B: case FS_K_I: case FS_K_U: case FS_K_SZ:
+        case FS_K_UB: case FS_K_BY: case FS_K_S: case FS_K_US:
+            if (!tv_int(v, &a->i))
+                return fail(r, tc, "argument '%s' is not an integer", info->argnames[k]);
+            break;
+        case FS_K_F: case FS_K_D: case FS_K_CF: case FS_K_CD:
+            if (!tv_double(v, &a->d))
+                return fail(r, tc, "argument '%s' is not a number", info->argnames[k]);
+            break;
+        case FS_K_CPTR:
+            if (v->type == FS_TV_BLOB) {
+                a->p = v->str.ptr;
+                a->count = v->str.len > UINT32_MAX ? UINT32_MAX : (uint32_t)v->str.len;
+                a->is_data = 1;
+            } else {
+                int64_t addr;
+                if (!tv_int(v, &addr))
+                    return fail(r, tc, "argument '%s' is not a pointer", info->argnames[k]);
+                /* An address in the traced program (or a buffer offset):
+                 * never dereferenced. */
+                a->p = NULL;
+                a->is_data = 0;
+            }
+            break;
+        case FS_K_OV: case FS_K_OF: case FS_K_OD: case FS_K_OI: case FS_K_OB:
+            a->out = NULL; /* the dispatcher provides scratch space */
+            break;
+        default:
+            if (to_array(r, tc, kind, v, a) != 0)
+                return -1;
+            break;
+        }
+    }
+    int bad = fs_call_validate(call);
+    if (bad < 0) {
+        int k = -1 - bad;
+        return fail(r, tc, "argument '%s' holds fewer elements than the call reads",
+                    k < info->nargs ? info->argnames[k] : "?");
+    }
+    return 0;
+}
+
+/* ---- client-array safety ---- */
+
+static int array_slot(int cmd)
+{
+    switch (cmd) {
+    case FS_CMD_VertexPointer: return ARR_VERTEX;
+    case FS_CMD_NormalPointer: return ARR_NORMAL;
+    case FS_CMD_ColorPointer: return ARR_COLOR;
+    case FS_CMD_TexCoordPointer: return ARR_TEXCOORD;
+    default: return -1;
+    }
+}
+
+static int client_state_slot(GLenum array)
+{
+    switch (array) {
+    case GL_VERTEX_ARRAY: return ARR_VERTEX;
+    case GL_NORMAL_ARRAY: return ARR_NORMAL;
+    case GL_COLOR_ARRAY: return ARR_COLOR;
+    case GL_TEXTURE_COORD_ARRAY: return ARR_TEXCOORD;
+    default: return -1;
+    }
+}
+
+/* Keeps a pointer call's blob and points the call at the kept copy. */
+static int track_pointer(fs_replayer *r, const fs_tcall *tc, fs_call *call, int slot)
+{
+    array_track *t = &r->arr[slot];
+    int pk = slot == ARR_NORMAL ? 2 : 3; /* glNormalPointer has no size argument */
+    fs_arg *p = &call->a[pk];
+    t->size = slot == ARR_NORMAL ? 3 : (GLint)call->a[0].i;
+    t->type = (GLenum)call->a[pk - 2].i;
+    t->stride = (GLsizei)call->a[pk - 1].i;
+    t->has_data = p->is_data != 0;
+    if (!p->is_data)
+        return 0;
+    if (p->count > t->bytes || !t->data) {
+        void *d = realloc(t->data, p->count ? p->count : 1);
+        if (!d)
+            return fail(r, tc, "%s", "out of memory keeping array data");
+        t->data = d;
+    }
+    memcpy(t->data, p->p, p->count);
+    t->bytes = p->count;
+    p->p = t->data;
+    return 0;
+}
+
+static int64_t max_index(const fs_call *call, int64_t *lo)
+{
+    int64_t hi = -1;
+    *lo = 0;
+    switch (call->cmd) {
+    case FS_CMD_ArrayElement:
+        *lo = hi = call->a[0].i;
+        break;
+    case FS_CMD_DrawArrays:
+        *lo = call->a[1].i;
+        hi = call->a[2].i > 0 ? call->a[1].i + call->a[2].i - 1 : -1;
+        break;
+    default: {
+        int ci = call->cmd == FS_CMD_DrawElements ? 1 : 3;
+        int64_t count = call->a[ci].i;
+        GLenum type = (GLenum)call->a[ci + 1].i;
+        const unsigned char *idx = call->a[ci + 2].p;
+        int es = type == GL_UNSIGNED_BYTE ? 1 : type == GL_UNSIGNED_SHORT ? 2 : type == GL_UNSIGNED_INT ? 4 : 0;
+        if (!idx || es == 0 || count <= 0 || (int64_t)call->a[ci + 2].count < count * es)
+            return -1;
+        for (int64_t i = 0; i < count; i++) {
+            uint32_t v = 0;
+            if (es == 1) v = idx[i];
+            else if (es == 2) { uint16_t s; memcpy(&s, idx + 2 * i, 2); v = s; }
+            else memcpy(&v, idx + 4 * i, 4);
+            if ((int64_t)v > hi) hi = v;
+        }
+    }
+    }
+    return hi;
+}
+
+/* True when every enabled array holds recorded data for the draw's vertices. */
+static bool draw_is_safe(fs_replayer *r, const fs_call *call)
+{
+    int64_t lo;
+    int64_t hi = max_index(call, &lo);
+    if (hi < 0 || lo < 0)
+        return true; /* reads no vertex (or the GL call itself is an error) */
+    for (int s = 0; s < ARR_COUNT; s++) {
+        const array_track *t = &r->arr[s];
+        if (!t->enabled)
+            continue;
+        int ts = fs_type_size(t->type);
+        if (!t->has_data || ts <= 0 || t->size < 1 || t->size > 4 || t->stride < 0)
+            return false;
+        uint64_t elem = (uint64_t)ts * (uint64_t)t->size;
+        uint64_t stride = t->stride ? (uint64_t)t->stride : elem;
+        if ((uint64_t)hi * stride + elem > t->bytes)
+            return false;
+    }
+    return true;
+}
+
+/* ---- the two passes ---- */
+
+/* Reads the next call the model can execute (skipping and counting the
+ * rest).  Returns 1 with *call set, 2 for a frame-end call that is not a GL
+ * command, 0 at the end, -1 on error. */
+static int next_call(fs_replayer *r, fs_call *call, bool pass1)
+{
+    for (;;) {
+        fs_tcall tc;
+        arena_reset(r);
+        int got = fs_trace_next(r->tr, &tc);
+        if (got < 0) {
+            snprintf(r->err, sizeof r->err, "%s: %s", r->path, fs_trace_error(r->tr));
+            return -1;
+        }
+        if (got == 0)
+            return 0;
+        if (pass1) {
+            r->info.calls++;
+            r->p1_swaps += is_swap(tc.name);
+            r->p1_named += r->user_frame_end && !strcmp(tc.name, r->user_frame_end);
+        }
+        int cmd = lookup(r, tc.name);
+        bool ends_frame = !pass1 && ((r->frame_end_is_swap && is_swap(tc.name)) ||
+                                     (!r->frame_end_is_swap && !strcmp(tc.name, r->info.frame_end)));
+        if (cmd < 0) {
+            if (!pass1)
+                count_skip(r, tc.name, is_winsys(tc.name) ? SKIP_WINSYS : SKIP_UNKNOWN);
+            if (ends_frame)
+                return 2;
+            continue;
+        }
+        if (pass1 && cmd == FS_CMD_Finish)
+            r->p1_finishes++;
+        if (convert(r, &tc, cmd, call) != 0)
+            return -1;
+        if (pass1 && cmd == FS_CMD_Viewport && r->info.width == 0) {
+            int64_t w = call->a[0].i + call->a[2].i, h = call->a[1].i + call->a[3].i;
+            if (w > 0 && h > 0 && w <= 16384 && h <= 16384) {
+                r->info.width = (int)w;
+                r->info.height = (int)h;
+            }
+        }
+        int slot = array_slot(cmd);
+        if (slot >= 0 && track_pointer(r, &tc, call, slot) != 0)
+            return -1;
+        if (cmd == FS_CMD_EnableClientState || cmd == FS_CMD_DisableClientState) {
+            int s = client_state_slot((GLenum)call->a[0].i);
+            if (s >= 0)
+                r->arr[s].enabled = cmd == FS_CMD_EnableClientState;
+        }
+        if ((fs_cmd_table[cmd].flags & FS_F_DRAW) && !draw_is_safe(r, call)) {
+            if (!pass1) {
+                char what[96];
+                snprintf(what, sizeof what, "%s (client arrays not recorded in the trace)", tc.name);
+                count_skip(r, what, SKIP_UNSAFE);
+            }
+            continue;
+        }
+        if (!pass1 && (call->flags & FS_CALL_FAKE) && slot < 0)
+            continue; /* fake calls other than array data carry nothing to execute */
+        r->pending_frame_end = ends_frame;
+        return 1;
+    }
+}
+
+static void reset_arrays(fs_replayer *r)
+{
+    for (int i = 0; i < ARR_COUNT; i++) {
+        free(r->arr[i].data);
+        memset(&r->arr[i], 0, sizeof r->arr[i]);
+    }
+}
+
+fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *err, size_t errlen)
+{
+    fs_replayer *r = calloc(1, sizeof *r);
+    if (!r || !(r->path = strdup(path)) || build_names(r) != 0) {
+        snprintf(err, errlen, "%s: out of memory", path);
+        fs_replay_close(r);
+        return NULL;
+    }
+    r->tr = fs_trace_open(path, err, errlen);
+    if (!r->tr) {
+        fs_replay_close(r);
+        return NULL;
+    }
+    /* Pass 1: validate everything, count frame ends, find the window size. */
+    r->user_frame_end = opts ? opts->frame_end : NULL;
+    fs_call call;
+    int got;
+    while ((got = next_call(r, &call, true)) > 0)
+        ;
+    if (got < 0) {
+        snprintf(err, errlen, "%s", r->err);
+        fs_replay_close(r);
+        return NULL;
+    }
+    fs_trace_close(r->tr);
+    r->tr = NULL;
+    reset_arrays(r);
+    r->pending_frame_end = false;
+    if (r->user_frame_end) {
+        r->frame_end_is_swap = false;
+        snprintf(r->info.frame_end, sizeof r->info.frame_end, "%s", r->user_frame_end);
+        r->info.frames = r->p1_named;
+    } else if (r->p1_swaps > 0) {
+        r->frame_end_is_swap = true;
+        snprintf(r->info.frame_end, sizeof r->info.frame_end, "swap buffers");
+        r->info.frames = r->p1_swaps;
+    } else {
+        /* Captures of programs that swap through EGL have no swap calls; each
+         * of their frames ends with glFinish (shared/reference-notes.md). */
+        snprintf(r->info.frame_end, sizeof r->info.frame_end, "glFinish");
+        r->info.frames = r->p1_finishes;
+    }
+    if (r->info.frames == 0)
+        r->info.frames = 1; /* the whole trace is one frame */
+    if (opts && opts->width > 0 && opts->height > 0) {
+        r->info.width = opts->width;
+        r->info.height = opts->height;
+    }
+    if (r->info.width <= 0 || r->info.height <= 0) {
+        snprintf(err, errlen, "%s: no glViewport in the trace to take the window size from; give --size WxH", path);
+        fs_replay_close(r);
+        return NULL;
+    }
+    r->tr = fs_trace_open(path, err, errlen);
+    if (!r->tr) {
+        fs_replay_close(r);
+        return NULL;
+    }
+    return r;
+}
+
+const fs_replay_info *fs_replay_info_get(const fs_replayer *r) { return &r->info; }
+const char *fs_replay_error(const fs_replayer *r) { return r->err; }
+
+fs_replay_event fs_replay_next(fs_replayer *r, fs_call *call)
+{
+    if (r->pending_frame_end) {
+        r->pending_frame_end = false;
+        r->frames_done++;
+        r->calls_since_frame = 0;
+        return FS_REPLAY_FRAME_END;
+    }
+    int got = next_call(r, call, false);
+    if (got < 0)
+        return FS_REPLAY_ERROR;
+    if (got == 2) {
+        r->frames_done++;
+        r->calls_since_frame = 0;
+        return FS_REPLAY_FRAME_END;
+    }
+    if (got == 0) {
+        /* Only a trace with no frame boundary at all is one frame: trailing
+         * calls after the last boundary are an unfinished frame. */
+        if (r->frames_done == 0 && r->calls_since_frame > 0) {
+            r->frames_done++;
+            r->calls_since_frame = 0;
+            return FS_REPLAY_FRAME_END;
+        }
+        return FS_REPLAY_EOF;
+    }
+    r->calls_since_frame++;
+    return FS_REPLAY_CALL;
+}
+
+static const char *kind_name(enum skip_kind k)
+{
+    return k == SKIP_WINSYS ? "window_system" : k == SKIP_UNSAFE ? "unsafe" : "unknown";
+}
+
+void fs_replay_write_skipped_json(const fs_replayer *r, FILE *f, const char *indent)
+{
+    fprintf(f, "{");
+    for (size_t i = 0; i < r->nskips; i++)
+        fprintf(f, "%s\n%s  \"%s\": {\"count\": %llu, \"reason\": \"%s\"}", i ? "," : "", indent,
+                r->skips[i].name, (unsigned long long)r->skips[i].count, kind_name(r->skips[i].kind));
+    fprintf(f, "%s}", r->nskips ? "\n" : "");
+    (void)indent;
+}
+
+uint64_t fs_replay_skipped_total(const fs_replayer *r)
+{
+    uint64_t n = 0;
+    for (size_t i = 0; i < r->nskips; i++)
+        if (r->skips[i].kind != SKIP_WINSYS)
+            n += r->skips[i].count;
+    return n;
+}
+
+void fs_replay_print_skipped(const fs_replayer *r, FILE *f)
+{
+    for (size_t i = 0; i < r->nskips; i++)
+        if (r->skips[i].kind != SKIP_WINSYS)
+            fprintf(f, "  %-48s %10llu  (%s)\n", r->skips[i].name,
+                    (unsigned long long)r->skips[i].count,
+                    r->skips[i].kind == SKIP_UNSAFE ? "skipped" : "not implemented");
+}
+
+void fs_replay_close(fs_replayer *r)
+{
+    if (!r)
+        return;
+    if (r->tr)
+        fs_trace_close(r->tr);
+    reset_arrays(r);
+    for (size_t i = 0; i < r->nskips; i++)
+        free(r->skips[i].name);
+    free(r->skips);
+    while (r->arena) {
+        arena_chunk *n = r->arena->next;
+        free(r->arena);
+        r->arena = n;
+    }
+    free(r->names);
+    free(r->path);
+    free(r);
+}

@@ -1,0 +1,53 @@
+/*
+ * Replaying an apitrace trace: decoded trace calls (trace.h) become fs_call
+ * records for the model (and, in `fragsim check`, for OSMesa too), with
+ * frames delimited by swap calls or by a chosen frame-end call.
+ *
+ * The trace is read twice: a first pass validates the whole file, finds the
+ * frame boundaries and the window size, so a malformed trace is reported
+ * before any image is written.
+ */
+#ifndef FS_REPLAY_H
+#define FS_REPLAY_H
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+#include "gl_call.h"
+
+typedef struct fs_replay_opts {
+    const char *frame_end; /* call name that ends a frame, or NULL for automatic */
+    int width, height;     /* 0: from the first glViewport */
+} fs_replay_opts;
+
+typedef struct fs_replay_info {
+    uint64_t calls;         /* calls in the trace */
+    uint64_t frames;        /* frames found (a trailing partial frame counts) */
+    int width, height;      /* chosen window size */
+    char frame_end[64];     /* the call that ends frames */
+} fs_replay_info;
+
+typedef enum fs_replay_event {
+    FS_REPLAY_CALL,      /* *call is ready to execute */
+    FS_REPLAY_FRAME_END, /* the frame just ended (after executing its last call) */
+    FS_REPLAY_EOF,
+    FS_REPLAY_ERROR      /* fs_replay_error() says what and where */
+} fs_replay_event;
+
+typedef struct fs_replayer fs_replayer;
+
+/* Opens and validates the trace (first pass).  NULL on error, with one
+ * message naming the file and byte offset in err. */
+fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *err, size_t errlen);
+const fs_replay_info *fs_replay_info_get(const fs_replayer *r);
+/* Next event of the second pass.  A FS_REPLAY_CALL's call stays valid
+ * until the next call of this function. */
+fs_replay_event fs_replay_next(fs_replayer *r, fs_call *call);
+const char *fs_replay_error(const fs_replayer *r);
+/* Calls the replay could not execute, by name (unknown to fragsim, or
+ * unsafe: e.g. a draw whose client arrays the trace did not record), and
+ * window-system calls that were deliberately ignored. */
+void fs_replay_write_skipped_json(const fs_replayer *r, FILE *f, const char *indent);
+void fs_replay_print_skipped(const fs_replayer *r, FILE *f);
+uint64_t fs_replay_skipped_total(const fs_replayer *r);
+void fs_replay_close(fs_replayer *r);
+#endif
