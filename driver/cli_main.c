@@ -1,0 +1,573 @@
+/*
+ * The fragsim command line: replay, check, diff, config, stats.
+ * Every subcommand answers --help.  Errors are one line on stderr and a
+ * non-zero exit; statistics are still written when a run fails part-way.
+ */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+#include "../pipeline/context.h"
+#include "image.h"
+#include "osmesa_ref.h"
+#include "replay.h"
+
+#define DEFAULT_TOLERANCE 1
+
+typedef struct cli_opts {
+    const char *config_file;
+    const char *sets[32];
+    int nsets;
+    long frame_first, frame_last; /* inclusive; last -1 = to the end */
+    const char *frame_end;
+    int width, height;
+    const char *out_dir;
+    const char *stats_file;
+    const char *trace;
+    int tolerance;
+    bool quiet;
+} cli_opts;
+
+static const char *prog = "fragsim";
+
+static void usage_main(FILE *f)
+{
+    fprintf(f,
+            "usage: fragsim COMMAND [options]\n"
+            "\n"
+            "commands:\n"
+            "  replay TRACE    render an apitrace trace on the model; write PNGs and statistics\n"
+            "  check TRACE     render on the model and on OSMesa (llvmpipe) and compare per frame\n"
+            "  diff A B        compare two images (OpenImageIO)\n"
+            "  config --list   list every configuration key with its default and meaning\n"
+            "  stats --list    list every statistic with its unit and meaning\n"
+            "\n"
+            "`fragsim COMMAND --help` describes each command.\n");
+}
+
+static void usage_replay(FILE *f, bool check)
+{
+    fprintf(f,
+            "usage: fragsim %s [options] TRACE\n"
+            "\n"
+            "%s"
+            "options:\n"
+            "  --config FILE      INI configuration (see `fragsim config --list`)\n"
+            "  --set SEC.KEY=VAL  override one configuration key (repeatable)\n"
+            "  --frames A-B       frames to output (first frame is 0; A, A-, -B also work)\n"
+            "  --frame-end CALL   call that ends a frame (default: swap calls, else glFinish)\n"
+            "  --size WxH         window size (default: from the first glViewport)\n"
+            "  --out DIR          output directory (default: out)\n"
+            "  --stats FILE       statistics JSON (default: DIR/%s.json)\n"
+            "%s"
+            "  --quiet            no progress line\n",
+            check ? "check" : "replay",
+            check ? "Replays TRACE on the model and on OSMesa (llvmpipe, in this process) and\n"
+                    "reports per frame: pixels whose colour differs, the largest channel\n"
+                    "difference, PSNR and pixels whose depth differs.  Exit status 0 only when\n"
+                    "every frame's largest colour difference is within the tolerance.\n\n"
+                  : "Replays TRACE on the model; writes DIR/frame_NNNN.png per frame and a JSON\n"
+                    "statistics file (per frame counters, unsupported calls by name).\n\n",
+            check ? "check" : "stats",
+            check ? "  --tolerance N      largest allowed colour difference per channel (default 1)\n" : "");
+}
+
+static int parse_frames(const char *s, long *a, long *b)
+{
+    char *end;
+    *a = 0;
+    *b = -1;
+    if (*s == '-') {
+        *b = strtol(s + 1, &end, 10);
+        return *end || *b < 0 ? -1 : 0;
+    }
+    *a = strtol(s, &end, 10);
+    if (end == s || *a < 0)
+        return -1;
+    if (*end == '\0') {
+        *b = *a;
+        return 0;
+    }
+    if (*end != '-')
+        return -1;
+    if (end[1] == '\0')
+        return 0;
+    const char *t = end + 1;
+    *b = strtol(t, &end, 10);
+    return *end || *b < *a ? -1 : 0;
+}
+
+/* Returns 0, 1 when --help was printed, -1 on a usage error. */
+static int parse_opts(int argc, char **argv, cli_opts *o, bool check)
+{
+    memset(o, 0, sizeof *o);
+    o->frame_last = -1;
+    o->out_dir = "out";
+    o->tolerance = DEFAULT_TOLERANCE;
+    for (int i = 0; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+#define NEEDV()                                                              \
+    do {                                                                     \
+        if (!v) {                                                            \
+            fprintf(stderr, "%s: %s needs a value\n", prog, a);              \
+            return -1;                                                       \
+        }                                                                    \
+        i++;                                                                 \
+    } while (0)
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            usage_replay(stdout, check);
+            return 1;
+        } else if (!strcmp(a, "--config")) {
+            NEEDV();
+            o->config_file = v;
+        } else if (!strcmp(a, "--set")) {
+            NEEDV();
+            if (o->nsets == 32) {
+                fprintf(stderr, "%s: too many --set options\n", prog);
+                return -1;
+            }
+            o->sets[o->nsets++] = v;
+        } else if (!strcmp(a, "--frames")) {
+            NEEDV();
+            if (parse_frames(v, &o->frame_first, &o->frame_last) != 0) {
+                fprintf(stderr, "%s: --frames '%s': expected A-B, A, A- or -B with A <= B\n", prog, v);
+                return -1;
+            }
+        } else if (!strcmp(a, "--frame-end")) {
+            NEEDV();
+            o->frame_end = v;
+        } else if (!strcmp(a, "--size")) {
+            NEEDV();
+            char *end;
+            long w = strtol(v, &end, 10), h = 0;
+            if (*end == 'x')
+                h = strtol(end + 1, &end, 10);
+            if (*end || w <= 0 || h <= 0 || w > 16384 || h > 16384) {
+                fprintf(stderr, "%s: --size '%s': expected WxH, each 1..16384\n", prog, v);
+                return -1;
+            }
+            o->width = (int)w;
+            o->height = (int)h;
+        } else if (!strcmp(a, "--out")) {
+            NEEDV();
+            o->out_dir = v;
+        } else if (!strcmp(a, "--stats")) {
+            NEEDV();
+            o->stats_file = v;
+        } else if (check && !strcmp(a, "--tolerance")) {
+            NEEDV();
+            char *end;
+            long t = strtol(v, &end, 10);
+            if (*end || t < 0 || t > 255) {
+                fprintf(stderr, "%s: --tolerance '%s': expected 0..255\n", prog, v);
+                return -1;
+            }
+            o->tolerance = (int)t;
+        } else if (!strcmp(a, "--quiet")) {
+            o->quiet = true;
+        } else if (a[0] == '-' && a[1]) {
+            fprintf(stderr, "%s: unknown option %s (see --help)\n", prog, a);
+            return -1;
+        } else if (!o->trace) {
+            o->trace = a;
+        } else {
+            fprintf(stderr, "%s: more than one trace given (%s, %s)\n", prog, o->trace, a);
+            return -1;
+        }
+#undef NEEDV
+    }
+    if (!o->trace) {
+        fprintf(stderr, "%s: no trace given (see --help)\n", prog);
+        return -1;
+    }
+    return 0;
+}
+
+static int make_dir(const char *dir)
+{
+    char buf[4096];
+    snprintf(buf, sizeof buf, "%s", dir);
+    for (char *p = buf + 1; *p; p++) {
+        if (*p == '/') {
+            *p = '\0';
+            if (mkdir(buf, 0777) != 0 && errno != EEXIST)
+                return -1;
+            *p = '/';
+        }
+    }
+    return mkdir(buf, 0777) != 0 && errno != EEXIST ? -1 : 0;
+}
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+typedef struct frame_record {
+    long frame;
+    fs_stats stats;
+    fs_image_diff diff;
+    bool has_diff;
+    bool within;
+} frame_record;
+
+static void json_string(FILE *f, const char *s)
+{
+    fputc('"', f);
+    for (; *s; s++) {
+        if (*s == '"' || *s == '\\')
+            fprintf(f, "\\%c", *s);
+        else if ((unsigned char)*s < 0x20)
+            fprintf(f, "\\u%04x", *s);
+        else
+            fputc(*s, f);
+    }
+    fputc('"', f);
+}
+
+static void write_unsupported_json(FILE *f, const fs_context *c)
+{
+    int first = 1;
+    fprintf(f, "{");
+    for (int i = 0; i < FS_CMD_COUNT; i++) {
+        if (!c->unsupported[i])
+            continue;
+        fprintf(f, "%s\n    ", first ? "" : ",");
+        json_string(f, fs_cmd_table[i].name);
+        fprintf(f, ": %llu", (unsigned long long)c->unsupported[i]);
+        first = 0;
+    }
+    for (int i = 0; i < c->unsupported_feature_count; i++) {
+        fprintf(f, "%s\n    ", first ? "" : ",");
+        json_string(f, c->unsupported_feature[i].name);
+        fprintf(f, ": %llu", (unsigned long long)c->unsupported_feature[i].count);
+        first = 0;
+    }
+    fprintf(f, "%s}", first ? "" : "\n  ");
+}
+
+static int write_stats(const char *path, const cli_opts *o, const fs_replay_info *info,
+                       const fs_context *c, const fs_replayer *r, const frame_record *frames,
+                       size_t nframes, bool check, const char *status)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        fprintf(stderr, "%s: cannot write %s: %s\n", prog, path, strerror(errno));
+        return -1;
+    }
+    fprintf(f, "{\n  \"trace\": ");
+    json_string(f, o->trace);
+    fprintf(f, ",\n  \"status\": ");
+    json_string(f, status);
+    fprintf(f, ",\n  \"size\": [%d, %d],\n  \"frame_end\": ", info->width, info->height);
+    json_string(f, info->frame_end);
+    fprintf(f, ",\n  \"trace_calls\": %llu,\n  \"frames\": [", (unsigned long long)info->calls);
+    fs_stats total;
+    memset(&total, 0, sizeof total);
+    for (size_t i = 0; i < nframes; i++) {
+        fs_stats_add(&total, &frames[i].stats);
+        fprintf(f, "%s\n    {\n      \"frame\": %ld,\n", i ? "," : "", frames[i].frame);
+        if (!check)
+            fprintf(f, "      \"image\": \"frame_%04ld.png\",\n", frames[i].frame);
+        if (frames[i].has_diff) {
+            const fs_image_diff *d = &frames[i].diff;
+            fprintf(f,
+                    "      \"pixels_differ\": %llu,\n      \"max_color_diff\": %d,\n"
+                    "      \"psnr_db\": %s%.3f%s,\n      \"depth_differ\": %llu,\n"
+                    "      \"within_tolerance\": %s,\n",
+                    (unsigned long long)d->pixels_differ, d->max_diff, isinf(d->psnr) ? "\"" : "",
+                    isinf(d->psnr) ? 999.0 : d->psnr, isinf(d->psnr) ? " (identical)\"" : "",
+                    (unsigned long long)d->depth_differ, frames[i].within ? "true" : "false");
+        }
+        fprintf(f, "      \"stats\": {\n");
+        fs_stats_write_json(f, &frames[i].stats, "        ");
+        fprintf(f, "      }\n    }");
+    }
+    fprintf(f, "%s],\n  \"totals\": {\n", nframes ? "\n  " : "");
+    fs_stats_write_json(f, &total, "    ");
+    fprintf(f, "  },\n  \"unsupported\": ");
+    write_unsupported_json(f, c);
+    fprintf(f, ",\n  \"skipped_trace_calls\": ");
+    fs_replay_write_skipped_json(r, f, "  ");
+    fprintf(f, ",\n  \"config\": {");
+    /* The effective configuration, so any run can be reproduced. */
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *m = open_memstream(&buf, &len);
+    if (m) {
+        fs_config_write_ini(m, &c->cfg);
+        fclose(m);
+        int first = 1;
+        char *save = NULL, section[64] = "";
+        for (char *line = strtok_r(buf, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
+            char key[64];
+            long val;
+            if (sscanf(line, "[%63[^]]]", section) == 1)
+                continue;
+            if (sscanf(line, "%63s = %ld", key, &val) == 2) {
+                fprintf(f, "%s\n    \"%s.%s\": %ld", first ? "" : ",", section, key, val);
+                first = 0;
+            }
+        }
+        free(buf);
+    }
+    fprintf(f, "\n  }\n}\n");
+    if (fclose(f) != 0) {
+        fprintf(stderr, "%s: error writing %s\n", prog, path);
+        return -1;
+    }
+    return 0;
+}
+
+static void print_unsupported(FILE *f, const fs_context *c, const fs_replayer *r)
+{
+    bool any = fs_replay_skipped_total(r) > 0 || c->unsupported_feature_count > 0;
+    for (int i = 0; i < FS_CMD_COUNT && !any; i++)
+        any = c->unsupported[i] != 0;
+    if (!any)
+        return;
+    fprintf(f, "%s: calls not executed or not fully modelled:\n", prog);
+    for (int i = 0; i < FS_CMD_COUNT; i++)
+        if (c->unsupported[i])
+            fprintf(f, "  %-48s %10llu  (not implemented)\n", fs_cmd_table[i].name,
+                    (unsigned long long)c->unsupported[i]);
+    for (int i = 0; i < c->unsupported_feature_count; i++)
+        fprintf(f, "  %-48s %10llu  (not modelled)\n", c->unsupported_feature[i].name,
+                (unsigned long long)c->unsupported_feature[i].count);
+    fs_replay_print_skipped(r, f);
+}
+
+static int run_replay(int argc, char **argv, bool check)
+{
+    cli_opts o;
+    int p = parse_opts(argc, argv, &o, check);
+    if (p)
+        return p > 0 ? 0 : 2;
+    char err[1024];
+    fs_config cfg;
+    fs_config_defaults(&cfg);
+    if (o.config_file && fs_config_load(&cfg, o.config_file, err, sizeof err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        return 2;
+    }
+    for (int i = 0; i < o.nsets; i++) {
+        if (fs_config_set(&cfg, o.sets[i], err, sizeof err) != 0) {
+            fprintf(stderr, "%s: %s\n", prog, err);
+            return 2;
+        }
+    }
+    fs_replay_opts ro = {o.frame_end, o.width ? o.width : (int)cfg.framebuffer_width,
+                         o.height ? o.height : (int)cfg.framebuffer_height};
+    fs_replayer *r = fs_replay_open(o.trace, &ro, err, sizeof err);
+    if (!r) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        return 1;
+    }
+    const fs_replay_info *info = fs_replay_info_get(r);
+    fs_context *c = fs_context_create(&cfg, info->width, info->height);
+    fs_osmesa *ref = NULL;
+    if (!c) {
+        fprintf(stderr, "%s: cannot create a %dx%d context\n", prog, info->width, info->height);
+        fs_replay_close(r);
+        return 1;
+    }
+    if (check) {
+        ref = fs_osmesa_create(info->width, info->height, (int)cfg.framebuffer_depth_bits,
+                               (int)cfg.framebuffer_stencil_bits, err, sizeof err);
+        if (!ref) {
+            fprintf(stderr, "%s: %s\n", prog, err);
+            fs_context_destroy(c);
+            fs_replay_close(r);
+            return 1;
+        }
+    }
+    if (make_dir(o.out_dir) != 0) {
+        fprintf(stderr, "%s: cannot create %s: %s\n", prog, o.out_dir, strerror(errno));
+        fs_osmesa_destroy(ref);
+        fs_context_destroy(c);
+        fs_replay_close(r);
+        return 1;
+    }
+    char stats_path[4096];
+    if (o.stats_file)
+        snprintf(stats_path, sizeof stats_path, "%s", o.stats_file);
+    else
+        snprintf(stats_path, sizeof stats_path, "%s/%s.json", o.out_dir, check ? "check" : "stats");
+
+    bool progress = !o.quiet && isatty(2);
+    size_t cap = 16, nframes = 0;
+    frame_record *frames = malloc(cap * sizeof *frames);
+    long frame = 0;
+    int rc = 0;
+    const char *status = "ok";
+    double t0 = now_seconds(), last_progress = t0;
+    fs_call call;
+    bool all_within = true;
+    for (;;) {
+        if (o.frame_last >= 0 && frame > o.frame_last)
+            break;
+        fs_replay_event ev = fs_replay_next(r, &call);
+        if (ev == FS_REPLAY_ERROR) {
+            fprintf(stderr, "%s: %s\n", prog, fs_replay_error(r));
+            status = "error";
+            rc = 1;
+            break;
+        }
+        if (ev == FS_REPLAY_EOF)
+            break;
+        if (ev == FS_REPLAY_CALL) {
+            if (fs_dispatch(c, &call) != 0) {
+                fprintf(stderr, "%s: %s: malformed arguments to %s\n", prog, o.trace,
+                        fs_cmd_table[call.cmd].name);
+                status = "error";
+                rc = 1;
+                break;
+            }
+            if (ref)
+                fs_osmesa_dispatch(ref, &call);
+            continue;
+        }
+        /* End of a frame. */
+        if (frame >= o.frame_first) {
+            if (nframes == cap) {
+                cap *= 2;
+                frame_record *nf = realloc(frames, cap * sizeof *frames);
+                if (!nf) {
+                    fprintf(stderr, "%s: out of memory\n", prog);
+                    rc = 1;
+                    break;
+                }
+                frames = nf;
+            }
+            frame_record *fr = &frames[nframes++];
+            memset(fr, 0, sizeof *fr);
+            fr->frame = frame;
+            fr->stats = c->stats;
+            if (ref) {
+                fs_image_compare(c->fb.color, fs_osmesa_color(ref), info->width, info->height, &fr->diff);
+                const uint32_t *d = fs_osmesa_depth(ref);
+                if (d)
+                    fs_depth_compare(c->fb.depth, d, info->width, info->height, &fr->diff);
+                fr->has_diff = true;
+                fr->within = fr->diff.max_diff <= o.tolerance;
+                all_within &= fr->within;
+                printf("frame %4ld: %8llu pixels differ, max diff %3d, PSNR %s, %llu depth values differ%s\n",
+                       frame, (unsigned long long)fr->diff.pixels_differ, fr->diff.max_diff,
+                       isinf(fr->diff.psnr) ? "identical" : (snprintf(err, sizeof err, "%.2f dB", fr->diff.psnr), err),
+                       (unsigned long long)fr->diff.depth_differ, fr->within ? "" : "  <-- beyond tolerance");
+            } else {
+                char path[4200];
+                snprintf(path, sizeof path, "%s/frame_%04ld.png", o.out_dir, frame);
+                if (fs_image_write_png(path, c->fb.color, info->width, info->height, err, sizeof err) != 0) {
+                    fprintf(stderr, "%s: %s\n", prog, err);
+                    status = "error";
+                    rc = 1;
+                    break;
+                }
+            }
+        }
+        memset(&c->stats, 0, sizeof c->stats);
+        frame++;
+        double t = now_seconds();
+        if (progress && t - last_progress > 0.5) {
+            fprintf(stderr, "\rframe %ld/%llu  %.1f s", frame, (unsigned long long)info->frames, t - t0);
+            last_progress = t;
+        }
+    }
+    if (progress)
+        fprintf(stderr, "\r%60s\r", "");
+    if (rc == 0 && check && !all_within) {
+        status = "beyond tolerance";
+        rc = 3;
+    }
+    if (write_stats(stats_path, &o, info, c, r, frames, nframes, check, status) != 0 && rc == 0)
+        rc = 1;
+    print_unsupported(stderr, c, r);
+    if (rc == 0 || rc == 3)
+        fprintf(stderr, "%s: %zu frame%s (%dx%d) in %.2f s; %s %s; statistics in %s\n", prog, nframes,
+                nframes == 1 ? "" : "s", info->width, info->height, now_seconds() - t0,
+                check ? "compared with OSMesa" : "images in", check ? "" : o.out_dir, stats_path);
+    if (nframes == 0 && rc == 0)
+        fprintf(stderr, "%s: warning: no frame in the selected range\n", prog);
+    free(frames);
+    fs_osmesa_destroy(ref);
+    fs_context_destroy(c);
+    fs_replay_close(r);
+    return rc;
+}
+
+static int run_diff(int argc, char **argv)
+{
+    if (argc >= 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h"))) {
+        printf("usage: fragsim diff A B\n\nCompares two images (any format OpenImageIO reads):\n"
+               "pixels that differ, the largest channel difference and PSNR.\n"
+               "Exit status 0 when identical, 1 when they differ, 2 on error.\n");
+        return 0;
+    }
+    if (argc != 2) {
+        fprintf(stderr, "%s: diff needs two images (see --help)\n", prog);
+        return 2;
+    }
+    char err[1024];
+    uint8_t *a = NULL, *b = NULL;
+    int wa, ha, wb, hb;
+    if (fs_image_read(argv[0], &a, &wa, &ha, err, sizeof err) != 0 ||
+        fs_image_read(argv[1], &b, &wb, &hb, err, sizeof err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        free(a);
+        return 2;
+    }
+    if (wa != wb || ha != hb) {
+        fprintf(stderr, "%s: sizes differ: %dx%d vs %dx%d\n", prog, wa, ha, wb, hb);
+        free(a);
+        free(b);
+        return 1;
+    }
+    fs_image_diff d;
+    memset(&d, 0, sizeof d);
+    fs_image_compare(a, b, wa, ha, &d);
+    if (isinf(d.psnr))
+        printf("identical (%dx%d)\n", wa, ha);
+    else
+        printf("%llu of %llu pixels differ, max diff %d, PSNR %.2f dB\n",
+               (unsigned long long)d.pixels_differ, (unsigned long long)d.pixels, d.max_diff, d.psnr);
+    free(a);
+    free(b);
+    return d.pixels_differ ? 1 : 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
+        usage_main(argc < 2 ? stderr : stdout);
+        return argc < 2 ? 2 : 0;
+    }
+    const char *cmd = argv[1];
+    if (!strcmp(cmd, "replay"))
+        return run_replay(argc - 2, argv + 2, false);
+    if (!strcmp(cmd, "check"))
+        return run_replay(argc - 2, argv + 2, true);
+    if (!strcmp(cmd, "diff"))
+        return run_diff(argc - 2, argv + 2);
+    if (!strcmp(cmd, "config") && argc == 3 && !strcmp(argv[2], "--list")) {
+        fs_config_list(stdout);
+        return 0;
+    }
+    if (!strcmp(cmd, "stats") && argc == 3 && !strcmp(argv[2], "--list")) {
+        fs_stats_list(stdout);
+        return 0;
+    }
+    if (!strcmp(cmd, "config") || !strcmp(cmd, "stats")) {
+        printf("usage: fragsim %s --list\n", cmd);
+        return argc == 3 && (!strcmp(argv[2], "--help") || !strcmp(argv[2], "-h")) ? 0 : 2;
+    }
+    fprintf(stderr, "%s: unknown command '%s' (see fragsim --help)\n", prog, cmd);
+    return 2;
+}
