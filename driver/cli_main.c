@@ -43,6 +43,7 @@ static void usage_main(FILE *f)
             "  replay TRACE    render an apitrace trace on the model; write PNGs and statistics\n"
             "  check TRACE     render on the model and on OSMesa (llvmpipe) and compare per frame\n"
             "  diff A B        compare two images (OpenImageIO)\n"
+            "  bench TRACE     time a replay on the model or on OSMesa (used by `make bench`)\n"
             "  config --list   list every configuration key with its default and meaning\n"
             "  stats --list    list every statistic with its unit and meaning\n"
             "\n"
@@ -543,6 +544,101 @@ static int run_diff(int argc, char **argv)
     return d.pixels_differ ? 1 : 0;
 }
 
+/* `fragsim bench`: times the replay of a trace on one engine, so that
+ * scripts/bench.sh can run the model, llvmpipe and softpipe in separate
+ * processes (Mesa picks its driver once per process from GALLIUM_DRIVER). */
+static int run_bench(int argc, char **argv)
+{
+    const char *engine = "model", *trace = NULL;
+    long repeat = 1;
+    int width = 0, height = 0;
+    for (int i = 0; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            printf("usage: fragsim bench [--engine model|osmesa] [--repeat N] [--size WxH] TRACE\n\n"
+                   "Replays TRACE N times on one engine and prints one JSON line: seconds of\n"
+                   "rendering (trace decoding included, the same for every engine), frames,\n"
+                   "and the model's fragment count.  `make bench` compares the engines.\n");
+            return 0;
+        } else if (!strcmp(argv[i], "--engine") && i + 1 < argc) {
+            engine = argv[++i];
+        } else if (!strcmp(argv[i], "--repeat") && i + 1 < argc) {
+            repeat = strtol(argv[++i], NULL, 10);
+        } else if (!strcmp(argv[i], "--size") && i + 1 < argc) {
+            if (sscanf(argv[++i], "%dx%d", &width, &height) != 2 || width <= 0 || height <= 0) {
+                fprintf(stderr, "%s: --size: expected WxH\n", prog);
+                return 2;
+            }
+        } else if (argv[i][0] != '-' && !trace) {
+            trace = argv[i];
+        } else {
+            fprintf(stderr, "%s: bench: bad argument %s (see --help)\n", prog, argv[i]);
+            return 2;
+        }
+    }
+    bool model = !strcmp(engine, "model");
+    if (!trace || repeat < 1 || (!model && strcmp(engine, "osmesa"))) {
+        fprintf(stderr, "%s: bench: need a trace, --repeat >= 1 and --engine model|osmesa\n", prog);
+        return 2;
+    }
+    char err[1024];
+    fs_replay_opts ro = {NULL, width, height};
+    double seconds = 0;
+    uint64_t fragments = 0, frames = 0;
+    const char *renderer = "fragsim";
+    fs_context *c = NULL;
+    fs_osmesa *ref = NULL;
+    for (long rep = 0; rep < repeat; rep++) {
+        fs_replayer *r = fs_replay_open(trace, &ro, err, sizeof err);
+        if (!r) {
+            fprintf(stderr, "%s: %s\n", prog, err);
+            return 1;
+        }
+        const fs_replay_info *info = fs_replay_info_get(r);
+        if (!c && model)
+            c = fs_context_create(NULL, info->width, info->height);
+        if (!ref && !model) {
+            ref = fs_osmesa_create(info->width, info->height, 24, 8, err, sizeof err);
+            if (ref)
+                renderer = (const char *)glGetString(GL_RENDERER);
+        }
+        if ((model && !c) || (!model && !ref)) {
+            fprintf(stderr, "%s: cannot create the %s context\n", prog, engine);
+            fs_replay_close(r);
+            return 1;
+        }
+        fs_call call;
+        fs_replay_event ev;
+        double t0 = now_seconds();
+        while ((ev = fs_replay_next(r, &call)) != FS_REPLAY_EOF) {
+            if (ev == FS_REPLAY_ERROR) {
+                fprintf(stderr, "%s: %s\n", prog, fs_replay_error(r));
+                fs_replay_close(r);
+                return 1;
+            }
+            if (ev == FS_REPLAY_FRAME_END) {
+                if (!model)
+                    (void)fs_osmesa_color(ref); /* glFinish: llvmpipe renders lazily */
+                frames++;
+                continue;
+            }
+            if (model)
+                fs_dispatch(c, &call);
+            else
+                fs_osmesa_dispatch(ref, &call);
+        }
+        seconds += now_seconds() - t0;
+        fs_replay_close(r);
+    }
+    if (model)
+        fragments = c->stats.fragments_generated; /* counted over every frame: stats reset only by replay */
+    printf("{\"engine\": \"%s\", \"renderer\": \"%s\", \"seconds\": %.6f, \"frames\": %llu, "
+           "\"fragments\": %llu}\n",
+           engine, renderer, seconds, (unsigned long long)frames, (unsigned long long)fragments);
+    fs_context_destroy(c);
+    fs_osmesa_destroy(ref);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
@@ -554,6 +650,8 @@ int main(int argc, char **argv)
         return run_replay(argc - 2, argv + 2, false);
     if (!strcmp(cmd, "check"))
         return run_replay(argc - 2, argv + 2, true);
+    if (!strcmp(cmd, "bench"))
+        return run_bench(argc - 2, argv + 2);
     if (!strcmp(cmd, "diff"))
         return run_diff(argc - 2, argv + 2);
     if (!strcmp(cmd, "config") && argc == 3 && !strcmp(argv[2], "--list")) {
