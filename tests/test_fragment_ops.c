@@ -1,0 +1,675 @@
+/*
+ * Per-fragment operations (GL 1.5 spec 4.1-4.3) against the GL spec's
+ * closed-form rules and against OSMesa/llvmpipe in the same process.
+ *
+ * fragsim is fed quads built directly (one covered pixel per quad, or whole
+ * quads), so these tests measure the fragment stage alone: depth values are
+ * taken from what llvmpipe stored for the same primitive, not recomputed.
+ */
+#define GL_GLEXT_PROTOTYPES
+#include <GL/osmesa.h>
+#include <GL/gl.h>
+#include <GL/glext.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <math.h>
+#include "check.h"
+#include "../pipeline/context.h"
+#include "../pipeline/fragment_stages.h"
+
+/* ---------------------------------------------------------------- helpers */
+
+typedef struct osm {
+    OSMesaContext ctx;
+    uint8_t *buf;
+    int w, h;
+} osm;
+
+static bool osm_open(osm *o, int w, int h)
+{
+    o->w = w;
+    o->h = h;
+    o->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+    o->buf = calloc((size_t)w * (size_t)h, 4);
+    if (!o->ctx || !o->buf || !OSMesaMakeCurrent(o->ctx, o->buf, GL_UNSIGNED_BYTE, w, h))
+        return false;
+    glViewport(0, 0, w, h);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glOrtho(0, w, 0, h, -1, 1);
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glDisable(GL_DITHER); /* no effect in llvmpipe either way; kept equal below */
+    glEnable(GL_DITHER);
+    return true;
+}
+
+static void osm_close(osm *o)
+{
+    if (o->ctx)
+        OSMesaDestroyContext(o->ctx);
+    free(o->buf);
+}
+
+/* Points of size 1 at pixel centres, colours and depths per point. */
+static void osm_points(int n, const float *xyz, const float *rgba)
+{
+    glEnableClientState(GL_VERTEX_ARRAY);
+    glEnableClientState(GL_COLOR_ARRAY);
+    glVertexPointer(3, GL_FLOAT, 0, xyz);
+    glColorPointer(4, GL_FLOAT, 0, rgba);
+    glDrawArrays(GL_POINTS, 0, n);
+    glDisableClientState(GL_VERTEX_ARRAY);
+    glDisableClientState(GL_COLOR_ARRAY);
+}
+
+/* Writes RGBA8 into OSMesa's colour buffer with every fragment operation
+ * that could alter it switched off; the caller's state is restored. */
+static void osm_put_rgba(const osm *o, const uint8_t *rgba)
+{
+    glPushAttrib(GL_ALL_ATTRIB_BITS);
+    glDisable(GL_BLEND);
+    glDisable(GL_COLOR_LOGIC_OP);
+    glDisable(GL_ALPHA_TEST);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(1, 1, 1, 1);
+    glWindowPos2i(0, 0);
+    glDrawPixels(o->w, o->h, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    glPopAttrib();
+}
+
+static void osm_read_rgba(const osm *o, uint8_t *out)
+{
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, o->w, o->h, GL_RGBA, GL_UNSIGNED_BYTE, out);
+}
+
+/* Raw depth values (low 24 bits of each 32-bit word). */
+static void osm_read_depth_raw(const osm *o, uint32_t *out)
+{
+    GLint w, h, bpv;
+    void *p;
+    glFinish();
+    if (!OSMesaGetDepthBuffer(o->ctx, &w, &h, &bpv, &p) || bpv != 4) {
+        memset(out, 0xff, (size_t)o->w * (size_t)o->h * 4);
+        return;
+    }
+    const uint32_t *src = p;
+    for (int i = 0; i < o->w * o->h; i++)
+        out[i] = src[i] & 0xffffffu;
+}
+
+static void osm_read_stencil(const osm *o, uint8_t *out)
+{
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, o->w, o->h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, out);
+}
+
+/* One fragment at pixel (x,y) as a quad with one covered pixel. */
+static void frag_pixel(fs_context *c, int x, int y, const float rgba[4], uint32_t z)
+{
+    fs_quad q;
+    memset(&q, 0, sizeof q);
+    q.x = x & ~1;
+    q.y = y & ~1;
+    int i = (x & 1) | ((y & 1) << 1);
+    q.mask = 1u << i;
+    q.front_facing = true;
+    q.z[i] = z;
+    memcpy(q.color[i], rgba, sizeof q.color[i]);
+    fs_fragment_quad(c, &q);
+}
+
+static uint32_t rng_next(uint32_t *s)
+{
+    *s ^= *s << 13;
+    *s ^= *s >> 17;
+    *s ^= *s << 5;
+    return *s;
+}
+
+static float rng_unit(uint32_t *s)
+{
+    return (float)(rng_next(s) >> 8) / 16777215.0f;
+}
+
+static const GLenum k_factors[] = {
+    GL_ZERO, GL_ONE, GL_SRC_COLOR, GL_ONE_MINUS_SRC_COLOR, GL_DST_COLOR, GL_ONE_MINUS_DST_COLOR,
+    GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_DST_ALPHA, GL_ONE_MINUS_DST_ALPHA,
+    GL_SRC_ALPHA_SATURATE, GL_CONSTANT_COLOR, GL_ONE_MINUS_CONSTANT_COLOR,
+    GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA,
+};
+#define N_FACTORS (int)(sizeof k_factors / sizeof k_factors[0])
+
+static const GLenum k_funcs[] = {GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL,
+                                 GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
+static const GLenum k_sops[] = {GL_KEEP, GL_ZERO, GL_REPLACE, GL_INCR, GL_DECR,
+                                GL_INVERT, GL_INCR_WRAP, GL_DECR_WRAP};
+
+/* Counts differing bytes and the largest difference. */
+static long count_diff(const uint8_t *a, const uint8_t *b, size_t n, int *maxd)
+{
+    long d = 0;
+    *maxd = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (a[i] != b[i]) {
+            d++;
+            int e = abs((int)a[i] - (int)b[i]);
+            if (e > *maxd)
+                *maxd = e;
+        }
+    }
+    return d;
+}
+
+/* ------------------------------------------- conversion and blending vs OSMesa */
+
+#define SW 256
+#define SH 256
+
+/* Float colour -> unorm8: a fine sweep of [0,1] plus every rounding tie
+ * (k + 0.5)/255 and its float neighbours. */
+TEST(color_conversion_vs_osmesa)
+{
+    osm o;
+    REQUIRE(osm_open(&o, SW, SH));
+    fs_context *c = fs_context_create(NULL, SW, SH);
+    REQUIRE(c);
+    int n = SW * SH;
+    float *xyz = malloc(sizeof(float) * 3 * (size_t)n), *col = malloc(sizeof(float) * 4 * (size_t)n);
+    uint8_t *ref = malloc((size_t)n * 4);
+    REQUIRE(xyz && col && ref);
+    for (int i = 0; i < n; i++) {
+        float v;
+        if (i < n / 2) {
+            v = (float)i / (float)(n / 2 - 1);
+        } else {
+            int k = ((i - n / 2) / 64) % 255, j = (i - n / 2) % 64;
+            v = ((float)k + 0.5f) / 255.0f;
+            for (int t = 0; t < j - 32; t++) v = nextafterf(v, 2.0f);
+            for (int t = 0; t < 32 - j; t++) v = nextafterf(v, -1.0f);
+        }
+        xyz[i * 3] = (float)(i % SW) + 0.5f;
+        xyz[i * 3 + 1] = (float)(i / SW) + 0.5f;
+        xyz[i * 3 + 2] = 0.0f;
+        float rgba[4] = {v, 1.0f - v, v * 0.5f, fminf(1.0f, v * 3.0f)};
+        memcpy(col + i * 4, rgba, sizeof rgba);
+        frag_pixel(c, i % SW, i / SW, rgba, 0);
+    }
+    osm_points(n, xyz, col);
+    osm_read_rgba(&o, ref);
+    int maxd;
+    long d = count_diff(ref, c->fb.color, (size_t)n * 4, &maxd);
+    printf("  colour conversion: %ld of %d values differ from OSMesa (max %d)\n", d, n * 4, maxd);
+    CHECK_EQ_INT(d, 0);
+    CHECK_EQ_INT(c->stats.fragments_written, n);
+    free(xyz);
+    free(col);
+    free(ref);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+/* Every (sfactor, dfactor) pair GL 1.5 accepts, random source floats and
+ * destination bytes (with 0 and 255 mixed in). */
+TEST(blend_all_factor_pairs_vs_osmesa)
+{
+    enum { BW = 128, BH = 128 };
+    osm o;
+    REQUIRE(osm_open(&o, BW, BH));
+    fs_context *c = fs_context_create(NULL, BW, BH);
+    REQUIRE(c);
+    int n = BW * BH;
+    float *xyz = malloc(sizeof(float) * 3 * (size_t)n), *col = malloc(sizeof(float) * 4 * (size_t)n);
+    uint8_t *dst = malloc((size_t)n * 4), *ref = malloc((size_t)n * 4);
+    REQUIRE(xyz && col && dst && ref);
+    for (int i = 0; i < n; i++) {
+        xyz[i * 3] = (float)(i % BW) + 0.5f;
+        xyz[i * 3 + 1] = (float)(i / BW) + 0.5f;
+        xyz[i * 3 + 2] = 0.0f;
+    }
+    uint32_t seed = 0x1234567u;
+    long total = 0, diff = 0;
+    int maxd_all = 0, pairs = 0;
+    for (int a = 0; a < N_FACTORS; a++) {
+        for (int b = 0; b < N_FACTORS; b++) {
+            if (k_factors[b] == GL_SRC_ALPHA_SATURATE)
+                continue;
+            pairs++;
+            for (int i = 0; i < n * 4; i++) {
+                int v = (int)(rng_next(&seed) & 255u);
+                if (i % 32 < 4) v = 0;
+                else if (i % 32 < 8) v = 255;
+                dst[i] = (uint8_t)v;
+                float s = rng_unit(&seed);
+                if (i % 29 == 0) s = 1.0f;
+                else if (i % 31 == 0) s = 0.0f;
+                col[i] = s;
+            }
+            osm_put_rgba(&o, dst);
+            glEnable(GL_BLEND);
+            glBlendFunc(k_factors[a], k_factors[b]);
+            osm_points(n, xyz, col);
+            glDisable(GL_BLEND);
+            osm_read_rgba(&o, ref);
+
+            memcpy(c->fb.color, dst, (size_t)n * 4);
+            c->frag.blend_enabled = true;
+            fs_exec_BlendFunc(c, k_factors[a], k_factors[b]);
+            CHECK_EQ_INT(c->error, GL_NO_ERROR);
+            for (int i = 0; i < n; i++)
+                frag_pixel(c, i % BW, i / BW, col + i * 4, 0);
+            int maxd;
+            long d = count_diff(ref, c->fb.color, (size_t)n * 4, &maxd);
+            if (d)
+                fprintf(stderr, "  blend 0x%x/0x%x: %ld bytes differ (max %d)\n",
+                        k_factors[a], k_factors[b], d, maxd);
+            diff += d;
+            total += n * 4;
+            if (maxd > maxd_all) maxd_all = maxd;
+        }
+    }
+    printf("  blending: %d factor pairs, %ld of %ld values differ from OSMesa (max %d)\n",
+           pairs, diff, total, maxd_all);
+    CHECK_EQ_INT(diff, 0);
+    CHECK(maxd_all <= 1);
+    free(xyz);
+    free(col);
+    free(dst);
+    free(ref);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+/* The common transparency pair, exhaustively over (src, dst) for a sweep of
+ * alphas. */
+TEST(blend_src_alpha_exhaustive_vs_osmesa)
+{
+    osm o;
+    REQUIRE(osm_open(&o, SW, SH));
+    fs_context *c = fs_context_create(NULL, SW, SH);
+    REQUIRE(c);
+    int n = SW * SH;
+    float *xyz = malloc(sizeof(float) * 3 * (size_t)n), *col = malloc(sizeof(float) * 4 * (size_t)n);
+    uint8_t *dst = malloc((size_t)n * 4), *ref = malloc((size_t)n * 4);
+    REQUIRE(xyz && col && dst && ref);
+    long diff = 0, total = 0;
+    for (int alpha = 0; alpha < 256; alpha += 5) {
+        for (int i = 0; i < n; i++) {
+            xyz[i * 3] = (float)(i % SW) + 0.5f;
+            xyz[i * 3 + 1] = (float)(i / SW) + 0.5f;
+            xyz[i * 3 + 2] = 0.0f;
+            dst[i * 4] = (uint8_t)(i % 256);
+            dst[i * 4 + 1] = (uint8_t)(i / 256);
+            dst[i * 4 + 2] = (uint8_t)(i * 7);
+            dst[i * 4 + 3] = (uint8_t)(i * 13);
+            col[i * 4] = (float)(i / 256) / 255.0f;
+            col[i * 4 + 1] = (float)(i % 256) / 255.0f;
+            col[i * 4 + 2] = (float)((i * 3) & 255) / 255.0f;
+            col[i * 4 + 3] = (float)alpha / 255.0f;
+        }
+        osm_put_rgba(&o, dst);
+        glEnable(GL_BLEND);
+        glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        osm_points(n, xyz, col);
+        glDisable(GL_BLEND);
+        osm_read_rgba(&o, ref);
+        memcpy(c->fb.color, dst, (size_t)n * 4);
+        c->frag.blend_enabled = true;
+        fs_exec_BlendFunc(c, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        for (int i = 0; i < n; i++)
+            frag_pixel(c, i % SW, i / SW, col + i * 4, 0);
+        int maxd;
+        diff += count_diff(ref, c->fb.color, (size_t)n * 4, &maxd);
+        total += n * 4;
+    }
+    printf("  SRC_ALPHA/ONE_MINUS_SRC_ALPHA: %ld of %ld values differ from OSMesa\n", diff, total);
+    CHECK_EQ_INT(diff, 0);
+    free(xyz);
+    free(col);
+    free(dst);
+    free(ref);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+/* Alpha test: which fragments survive, for fragment alphas a few ulps and a
+ * few 1/255 steps around several references. */
+TEST(alpha_test_vs_osmesa)
+{
+    enum { AW = 64, AH = 64 };
+    static const float refs[] = {0.0f, 0.5f, 1.0f / 3.0f, 0.2f, 128.0f / 255.0f, 1.0f};
+    osm o;
+    REQUIRE(osm_open(&o, AW, AH));
+    fs_context *c = fs_context_create(NULL, AW, AH);
+    REQUIRE(c);
+    int n = AW * AH;
+    float *xyz = malloc(sizeof(float) * 3 * (size_t)n), *col = malloc(sizeof(float) * 4 * (size_t)n);
+    uint8_t *zero = calloc((size_t)n, 4), *ref = malloc((size_t)n * 4);
+    REQUIRE(xyz && col && zero && ref);
+    long diff = 0;
+    int cases = 0;
+    for (size_t r = 0; r < sizeof refs / sizeof refs[0]; r++) {
+        for (int i = 0; i < n; i++) {
+            int j = i % 64, k = (i / 64) % 16;
+            float a = refs[r] + (float)(k - 8) / 510.0f;
+            for (int t = 0; t < j - 32; t++) a = nextafterf(a, 2.0f);
+            for (int t = 0; t < 32 - j; t++) a = nextafterf(a, -1.0f);
+            if (i >= 1024) a = refs[r]; /* exact equality cases */
+            a = a < 0.0f ? 0.0f : (a > 1.0f ? 1.0f : a);
+            xyz[i * 3] = (float)(i % AW) + 0.5f;
+            xyz[i * 3 + 1] = (float)(i / AW) + 0.5f;
+            xyz[i * 3 + 2] = 0.0f;
+            col[i * 4] = col[i * 4 + 1] = col[i * 4 + 2] = 1.0f;
+            col[i * 4 + 3] = a;
+        }
+        for (int f = 0; f < 8; f++) {
+            cases++;
+            osm_put_rgba(&o, zero);
+            glEnable(GL_ALPHA_TEST);
+            glAlphaFunc(k_funcs[f], refs[r]);
+            osm_points(n, xyz, col);
+            glDisable(GL_ALPHA_TEST);
+            osm_read_rgba(&o, ref);
+            memset(c->fb.color, 0, (size_t)n * 4);
+            c->frag.alpha_enabled = true;
+            fs_exec_AlphaFunc(c, k_funcs[f], refs[r]);
+            for (int i = 0; i < n; i++)
+                frag_pixel(c, i % AW, i / AW, col + i * 4, 0);
+            int maxd;
+            long d = count_diff(ref, c->fb.color, (size_t)n * 4, &maxd);
+            if (d)
+                fprintf(stderr, "  alpha func 0x%x ref %.9g: %ld bytes differ\n", k_funcs[f], refs[r], d);
+            diff += d;
+        }
+    }
+    printf("  alpha test: %d func/ref cases, %ld bytes differ from OSMesa\n", cases, diff);
+    CHECK_EQ_INT(diff, 0);
+    free(xyz);
+    free(col);
+    free(zero);
+    free(ref);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+TEST(logic_ops_vs_osmesa)
+{
+    enum { LW = 64, LH = 64 };
+    osm o;
+    REQUIRE(osm_open(&o, LW, LH));
+    fs_context *c = fs_context_create(NULL, LW, LH);
+    REQUIRE(c);
+    int n = LW * LH;
+    float *xyz = malloc(sizeof(float) * 3 * (size_t)n), *col = malloc(sizeof(float) * 4 * (size_t)n);
+    uint8_t *dst = malloc((size_t)n * 4), *ref = malloc((size_t)n * 4);
+    REQUIRE(xyz && col && dst && ref);
+    uint32_t seed = 99;
+    long diff = 0;
+    for (GLenum op = GL_CLEAR; op <= GL_SET; op++) {
+        for (int i = 0; i < n; i++) {
+            xyz[i * 3] = (float)(i % LW) + 0.5f;
+            xyz[i * 3 + 1] = (float)(i / LW) + 0.5f;
+            xyz[i * 3 + 2] = 0.0f;
+            for (int k = 0; k < 4; k++) {
+                dst[i * 4 + k] = (uint8_t)rng_next(&seed);
+                col[i * 4 + k] = rng_unit(&seed);
+            }
+        }
+        osm_put_rgba(&o, dst);
+        glEnable(GL_COLOR_LOGIC_OP);
+        glEnable(GL_BLEND); /* logic op takes precedence over blending */
+        glBlendFunc(GL_ONE, GL_ONE);
+        glLogicOp(op);
+        osm_points(n, xyz, col);
+        glDisable(GL_COLOR_LOGIC_OP);
+        glDisable(GL_BLEND);
+        osm_read_rgba(&o, ref);
+        memcpy(c->fb.color, dst, (size_t)n * 4);
+        c->frag.logic_op_enabled = true;
+        c->frag.blend_enabled = true;
+        fs_exec_BlendFunc(c, GL_ONE, GL_ONE);
+        fs_exec_LogicOp(c, op);
+        for (int i = 0; i < n; i++)
+            frag_pixel(c, i % LW, i / LW, col + i * 4, 0);
+        int maxd;
+        long d = count_diff(ref, c->fb.color, (size_t)n * 4, &maxd);
+        if (d)
+            fprintf(stderr, "  logic op 0x%x: %ld bytes differ\n", op, d);
+        diff += d;
+    }
+    printf("  logic ops: 16 ops, %ld bytes differ from OSMesa\n", diff);
+    CHECK_EQ_INT(diff, 0);
+    free(xyz);
+    free(col);
+    free(dst);
+    free(ref);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+/* ------------------------------------------ a random scene of all the stages */
+
+typedef struct scene_state {
+    bool depth, stencil, alpha, blend, logic, scissor;
+    GLenum depth_func, alpha_func, stencil_func, sfail, zfail, zpass, bsrc, bdst, lop;
+    bool depth_mask;
+    GLboolean cmask[4];
+    GLint sref, scissor_box[4];
+    GLuint svmask, swmask;
+    float aref;
+} scene_state;
+
+static void random_state(scene_state *s, uint32_t *seed, int w, int h)
+{
+    uint32_t r = rng_next(seed);
+    s->depth = r & 1;
+    s->stencil = (r >> 1) & 1;
+    s->alpha = ((r >> 2) & 3) == 0;
+    s->blend = ((r >> 4) & 3) == 0;
+    s->logic = ((r >> 6) & 7) == 0;
+    s->scissor = ((r >> 9) & 3) == 0;
+    s->depth_mask = ((r >> 11) & 3) != 0;
+    s->depth_func = k_funcs[rng_next(seed) % 8];
+    s->alpha_func = k_funcs[rng_next(seed) % 8];
+    s->stencil_func = k_funcs[rng_next(seed) % 8];
+    s->sfail = k_sops[rng_next(seed) % 8];
+    s->zfail = k_sops[rng_next(seed) % 8];
+    s->zpass = k_sops[rng_next(seed) % 8];
+    do {
+        s->bsrc = k_factors[rng_next(seed) % N_FACTORS];
+        s->bdst = k_factors[rng_next(seed) % N_FACTORS];
+    } while (s->bdst == GL_SRC_ALPHA_SATURATE);
+    s->lop = GL_CLEAR + rng_next(seed) % 16;
+    for (int k = 0; k < 4; k++)
+        s->cmask[k] = (rng_next(seed) % 5) != 0;
+    s->sref = (GLint)(rng_next(seed) % 300) - 20;
+    s->svmask = (rng_next(seed) & 1) ? 0xffffffffu : rng_next(seed);
+    s->swmask = (rng_next(seed) & 1) ? 0xffffffffu : rng_next(seed);
+    s->aref = (float)(rng_next(seed) % 256) / 255.0f;
+    s->scissor_box[0] = (GLint)(rng_next(seed) % (unsigned)w) - 4;
+    s->scissor_box[1] = (GLint)(rng_next(seed) % (unsigned)h) - 4;
+    s->scissor_box[2] = (GLint)(rng_next(seed) % (unsigned)w);
+    s->scissor_box[3] = (GLint)(rng_next(seed) % (unsigned)h);
+}
+
+static void gl_toggle(GLenum cap, bool on)
+{
+    if (on) glEnable(cap);
+    else glDisable(cap);
+}
+
+static void apply_osmesa(const scene_state *s)
+{
+    gl_toggle(GL_DEPTH_TEST, s->depth);
+    gl_toggle(GL_STENCIL_TEST, s->stencil);
+    gl_toggle(GL_ALPHA_TEST, s->alpha);
+    gl_toggle(GL_BLEND, s->blend);
+    gl_toggle(GL_COLOR_LOGIC_OP, s->logic);
+    gl_toggle(GL_SCISSOR_TEST, s->scissor);
+    glDepthFunc(s->depth_func);
+    glDepthMask(s->depth_mask);
+    glAlphaFunc(s->alpha_func, s->aref);
+    glStencilFunc(s->stencil_func, s->sref, s->svmask);
+    glStencilOp(s->sfail, s->zfail, s->zpass);
+    glStencilMask(s->swmask);
+    glBlendFunc(s->bsrc, s->bdst);
+    glLogicOp(s->lop);
+    glColorMask(s->cmask[0], s->cmask[1], s->cmask[2], s->cmask[3]);
+    glScissor(s->scissor_box[0], s->scissor_box[1], s->scissor_box[2], s->scissor_box[3]);
+}
+
+static void apply_fragsim(fs_context *c, const scene_state *s)
+{
+    c->frag.depth_enabled = s->depth;
+    c->frag.stencil_enabled = s->stencil;
+    c->frag.alpha_enabled = s->alpha;
+    c->frag.blend_enabled = s->blend;
+    c->frag.logic_op_enabled = s->logic;
+    c->frag.scissor_enabled = s->scissor;
+    fs_exec_DepthFunc(c, s->depth_func);
+    fs_exec_DepthMask(c, s->depth_mask);
+    fs_exec_AlphaFunc(c, s->alpha_func, s->aref);
+    fs_exec_StencilFunc(c, s->stencil_func, s->sref, s->svmask);
+    fs_exec_StencilOp(c, s->sfail, s->zfail, s->zpass);
+    fs_exec_StencilMask(c, s->swmask);
+    fs_exec_BlendFunc(c, s->bsrc, s->bdst);
+    fs_exec_LogicOp(c, s->lop);
+    fs_exec_ColorMask(c, s->cmask[0], s->cmask[1], s->cmask[2], s->cmask[3]);
+    fs_exec_Scissor(c, s->scissor_box[0], s->scissor_box[1], s->scissor_box[2], s->scissor_box[3]);
+}
+
+/* Random state and random point sets drawn into both, comparing colour,
+ * depth and stencil after every draw.  Depth values for fragsim are the ones
+ * llvmpipe stores for the same window z (measured first). */
+TEST(random_scene_vs_osmesa)
+{
+    enum { RW = 48, RH = 40, NZ = 16, DRAWS = 300 };
+    osm o;
+    REQUIRE(osm_open(&o, RW, RH));
+    fs_context *c = fs_context_create(NULL, RW, RH);
+    REQUIRE(c);
+    int n = RW * RH;
+    float *xyz = malloc(sizeof(float) * 3 * (size_t)n), *col = malloc(sizeof(float) * 4 * (size_t)n);
+    uint32_t *zraw = malloc((size_t)n * 4), *zunits = malloc((size_t)n * 4);
+    uint8_t *ref = malloc((size_t)n * 4), *sref = malloc((size_t)n);
+    REQUIRE(xyz && col && zraw && zunits && ref && sref);
+
+    /* The depth llvmpipe stores for each of NZ window depths. */
+    float zs[NZ];
+    uint32_t zu[NZ];
+    for (int k = 0; k < NZ; k++)
+        zs[k] = -0.9f + 1.8f * (float)k / (float)(NZ - 1) + (k % 3 == 1 ? 1e-4f : 0.0f);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    for (int k = 0; k < NZ; k++) {
+        float p[3] = {(float)k + 0.5f, 0.5f, zs[k]}, cc[4] = {1, 1, 1, 1};
+        osm_points(1, p, cc);
+    }
+    osm_read_depth_raw(&o, zraw);
+    for (int k = 0; k < NZ; k++)
+        zu[k] = zraw[k];
+
+    uint32_t seed = 0xC0FFEEu;
+    long cdiff = 0, zdiff = 0, sdiff = 0;
+    int draws = 0, reported = 0;
+    for (int round = 0; round < 4; round++) {
+        /* Same start for both: clear OSMesa, copy its buffers. */
+        glDisable(GL_SCISSOR_TEST);
+        glColorMask(1, 1, 1, 1);
+        glDepthMask(1);
+        glStencilMask(0xff);
+        glClearColor(0.25f, 0.5f, 0.75f, 1.0f);
+        glClearDepth(0.75);
+        glClearStencil(round * 50);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        osm_read_rgba(&o, c->fb.color);
+        osm_read_depth_raw(&o, c->fb.depth);
+        osm_read_stencil(&o, c->fb.stencil);
+
+        for (int d = 0; d < DRAWS / 4; d++) {
+            scene_state s;
+            random_state(&s, &seed, RW, RH);
+            apply_osmesa(&s);
+            apply_fragsim(c, &s);
+            CHECK_EQ_INT(c->error, GL_NO_ERROR);
+            /* A random subset of pixels, each at most once per draw. */
+            int m = 0;
+            for (int i = 0; i < n; i++) {
+                if (rng_next(&seed) % 3 == 0)
+                    continue;
+                int k = (int)(rng_next(&seed) % NZ);
+                xyz[m * 3] = (float)(i % RW) + 0.5f;
+                xyz[m * 3 + 1] = (float)(i / RW) + 0.5f;
+                xyz[m * 3 + 2] = zs[k];
+                zunits[m] = zu[k];
+                for (int ch = 0; ch < 4; ch++) {
+                    float v = (float)(rng_next(&seed) % 256) / 255.0f;
+                    if (rng_next(&seed) & 1) v = rng_unit(&seed);
+                    col[m * 4 + ch] = v;
+                }
+                m++;
+            }
+            osm_points(m, xyz, col);
+            for (int j = 0; j < m; j++)
+                frag_pixel(c, (int)xyz[j * 3], (int)xyz[j * 3 + 1], col + j * 4, zunits[j]);
+            osm_read_rgba(&o, ref);
+            osm_read_depth_raw(&o, zraw);
+            osm_read_stencil(&o, sref);
+            int maxd;
+            long dc = count_diff(ref, c->fb.color, (size_t)n * 4, &maxd);
+            long dz = 0, ds = count_diff(sref, c->fb.stencil, (size_t)n, &maxd);
+            for (int i = 0; i < n; i++)
+                dz += zraw[i] != c->fb.depth[i];
+            if ((dc || dz || ds) && reported++ < 3)
+                fprintf(stderr, "  draw %d: %ld colour, %ld depth, %ld stencil differ; depth %d/0x%x/%d "
+                        "stencil %d/0x%x ref %d vm 0x%x wm 0x%x ops 0x%x/0x%x/0x%x alpha %d/0x%x/%g "
+                        "blend %d 0x%x/0x%x logic %d/0x%x scissor %d mask %d%d%d%d\n",
+                        draws, dc, dz, ds, s.depth, s.depth_func, s.depth_mask, s.stencil,
+                        s.stencil_func, s.sref, s.svmask, s.swmask, s.sfail, s.zfail, s.zpass,
+                        s.alpha, s.alpha_func, s.aref, s.blend, s.bsrc, s.bdst, s.logic, s.lop,
+                        s.scissor, s.cmask[0], s.cmask[1], s.cmask[2], s.cmask[3]);
+            cdiff += dc;
+            zdiff += dz;
+            sdiff += ds;
+            /* Resynchronise so that one difference is not counted again. */
+            memcpy(c->fb.color, ref, (size_t)n * 4);
+            memcpy(c->fb.depth, zraw, (size_t)n * 4);
+            memcpy(c->fb.stencil, sref, (size_t)n);
+            draws++;
+        }
+    }
+    printf("  random scene: %d draws, differing values: colour %ld, depth %ld, stencil %ld\n",
+           draws, cdiff, zdiff, sdiff);
+    CHECK_EQ_INT(cdiff, 0);
+    CHECK_EQ_INT(zdiff, 0);
+    CHECK_EQ_INT(sdiff, 0);
+    free(xyz);
+    free(col);
+    free(zraw);
+    free(zunits);
+    free(ref);
+    free(sref);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+TEST_LIST = {
+    TEST_ENTRY(color_conversion_vs_osmesa),
+    TEST_ENTRY(blend_all_factor_pairs_vs_osmesa),
+    TEST_ENTRY(blend_src_alpha_exhaustive_vs_osmesa),
+    TEST_ENTRY(alpha_test_vs_osmesa),
+    TEST_ENTRY(logic_ops_vs_osmesa),
+    TEST_ENTRY(random_scene_vs_osmesa),
+    TEST_END,
+};
+
+int main(int argc, char **argv)
+{
+    return check_main(argc, argv, test_list);
+}
