@@ -498,8 +498,9 @@ static int next_call(fs_replayer *r, fs_call *call, bool pass1)
             }
             continue;
         }
-        if (!pass1 && (call->flags & FS_CALL_FAKE) && slot < 0)
-            continue; /* fake calls other than array data carry nothing to execute */
+        /* Fake calls are executed too: apitrace adds them for what a replay
+         * needs, e.g. the viewport and scissor a new window gets at
+         * glXMakeCurrent, and the array data before a draw. */
         r->pending_frame_end = ends_frame;
         return 1;
     }
