@@ -1,0 +1,143 @@
+#!/bin/bash
+# Command-line tests of fragsim replay/check/diff/config: the whole chain
+# from a trace file to images, statistics and the OSMesa cross-check, and
+# bad input at the CLI level (clear error, non-zero exit, no image written).
+. "$(dirname "$0")/cli_lib.sh"
+: "${FRAGSIM:?}" "${SCENEGEN:?}"
+SCENES="city cathedrals forest garbage terrain demo"
+
+scene_trace() { # NAME -> path of a small trace of that scene
+    local t="$WORK/$1.trace"
+    [ -f "$t" ] || "$SCENEGEN" "$1" --scale small -o "$t" >/dev/null || return 1
+    echo "$t"
+}
+
+test_help() {
+    "$FRAGSIM" --help | grep -q "replay TRACE" || fail "no command list"
+    for c in replay check diff bench; do
+        "$FRAGSIM" $c --help >/dev/null || fail "$c --help failed"
+    done
+    "$FRAGSIM" nosuchcommand 2>/dev/null; [ $? -eq 2 ] || fail "unknown command must exit 2"
+    "$FRAGSIM" replay --bogus x.trace 2>"$WORK/e"; [ $? -eq 2 ] || fail "unknown option must exit 2"
+    grep -q "unknown option --bogus" "$WORK/e" || fail "message: $(cat "$WORK/e")"
+}
+
+test_missing_trace() {
+    "$FRAGSIM" replay --out "$WORK/o1" "$WORK/none.trace" 2>"$WORK/e"
+    [ $? -eq 1 ] || fail "expected exit 1"
+    grep -q "none.trace" "$WORK/e" || fail "message does not name the file: $(cat "$WORK/e")"
+    ! ls "$WORK"/o1/*.png 2>/dev/null || fail "an image was written"
+}
+
+test_truncated_trace() {
+    local t; t=$(scene_trace demo) || fail "scenegen failed"
+    local n; n=$(stat -c %s "$t")
+    head -c $((n / 2)) "$t" >"$WORK/half.trace"
+    "$FRAGSIM" replay --out "$WORK/o2" "$WORK/half.trace" 2>"$WORK/e"
+    [ $? -eq 1 ] || fail "expected exit 1; stderr: $(cat "$WORK/e")"
+    grep -qi "offset" "$WORK/e" || fail "no byte offset in: $(cat "$WORK/e")"
+    ! ls "$WORK"/o2/*.png 2>/dev/null || fail "a partial image was written"
+}
+
+test_garbage_trace() {
+    head -c 5000 /dev/urandom >"$WORK/rand.trace"
+    printf 'at' | cat - "$WORK/rand.trace" >"$WORK/rand2.trace"
+    for f in "$WORK/rand.trace" "$WORK/rand2.trace"; do
+        timeout 20 "$FRAGSIM" replay --out "$WORK/o3" "$f" 2>"$WORK/e"
+        local rc=$?
+        [ $rc -eq 1 ] || fail "$f: expected exit 1, got $rc: $(cat "$WORK/e")"
+    done
+    ! ls "$WORK"/o3/*.png 2>/dev/null || fail "an image was written"
+}
+
+test_config_errors() {
+    local t; t=$(scene_trace demo) || fail "scenegen failed"
+    printf '[raster]\nsubpixel_bits = 8\nno_such_key = 1\n' >"$WORK/bad.ini"
+    "$FRAGSIM" replay --config "$WORK/bad.ini" --out "$WORK/o4" "$t" 2>"$WORK/e"
+    [ $? -eq 2 ] || fail "unknown key must exit 2"
+    grep -q "bad.ini:3" "$WORK/e" || fail "no file:line in: $(cat "$WORK/e")"
+    "$FRAGSIM" replay --set framebuffer.depth_bits=99 --out "$WORK/o4" "$t" 2>"$WORK/e"
+    [ $? -eq 2 ] || fail "out-of-range value must exit 2"
+    grep -q "out of range" "$WORK/e" || fail "message: $(cat "$WORK/e")"
+    "$FRAGSIM" config --list | grep -q "raster.subpixel_bits" || fail "config --list"
+    "$FRAGSIM" stats --list | grep -q "fragments_generated" || fail "stats --list"
+}
+
+test_replay_writes_images_and_stats() {
+    local t; t=$(scene_trace demo) || fail "scenegen failed"
+    "$FRAGSIM" replay --quiet --out "$WORK/o5" "$t" || fail "replay failed"
+    [ -s "$WORK/o5/frame_0000.png" ] || fail "no frame_0000.png"
+    grep -q '"fragments_generated"' "$WORK/o5/stats.json" || fail "no statistics"
+    grep -q '"unsupported"' "$WORK/o5/stats.json" || fail "no unsupported section"
+    if command -v python3 >/dev/null; then
+        python3 -m json.tool "$WORK/o5/stats.json" >/dev/null || fail "stats.json is not valid JSON"
+    fi
+}
+
+test_replay_is_deterministic() {
+    local t; t=$(scene_trace city) || fail "scenegen failed"
+    "$FRAGSIM" replay --quiet --out "$WORK/d1" "$t" || fail "replay 1"
+    "$FRAGSIM" replay --quiet --out "$WORK/d2" "$t" || fail "replay 2"
+    for f in "$WORK"/d1/*.png; do cmp -s "$f" "$WORK/d2/$(basename "$f")" || fail "$f differs"; done
+    sed 's/"trace": .*//' "$WORK/d1/stats.json" >"$WORK/s1"
+    sed 's/"trace": .*//' "$WORK/d2/stats.json" >"$WORK/s2"
+    cmp -s "$WORK/s1" "$WORK/s2" || fail "statistics differ"
+}
+
+test_frames_option() {
+    local t; t=$(scene_trace city) || fail "scenegen failed"
+    "$FRAGSIM" replay --quiet --frames 1-1 --out "$WORK/f1" "$t" || fail "replay"
+    [ -f "$WORK/f1/frame_0001.png" ] || fail "frame 1 missing"
+    [ ! -f "$WORK/f1/frame_0000.png" ] || fail "frame 0 should not be written"
+    "$FRAGSIM" replay --frames 3-1 "$t" 2>/dev/null; [ $? -eq 2 ] || fail "bad range must exit 2"
+}
+
+test_diff() {
+    local t; t=$(scene_trace demo) || fail "scenegen failed"
+    "$FRAGSIM" replay --quiet --out "$WORK/o6" "$t" || fail "replay"
+    "$FRAGSIM" diff "$WORK/o6/frame_0000.png" "$WORK/o6/frame_0000.png" >/dev/null || fail "identical images differ"
+    "$FRAGSIM" replay --quiet --size 64x64 --out "$WORK/o7" "$t" || fail "replay small"
+    "$FRAGSIM" diff "$WORK/o6/frame_0000.png" "$WORK/o7/frame_0000.png" >/dev/null 2>&1
+    [ $? -eq 1 ] || fail "different images must exit 1"
+}
+
+test_check_every_scene() {
+    for s in $SCENES; do
+        local t; t=$(scene_trace "$s") || fail "scenegen $s failed"
+        "$FRAGSIM" check --quiet --out "$WORK/c_$s" "$t" >"$WORK/c_$s.log" 2>&1 \
+            || { cat "$WORK/c_$s.log"; fail "check $s failed"; }
+        echo "$s: $(grep -c '^frame' "$WORK/c_$s.log") frames within tolerance"
+    done
+}
+
+test_apitrace_dump_reads_our_traces() {
+    command -v apitrace >/dev/null || skip "apitrace not installed"
+    for s in $SCENES; do
+        local t; t=$(scene_trace "$s") || fail "scenegen $s failed"
+        apitrace dump --color=never "$t" >"$WORK/dump_$s" 2>"$WORK/dump_err" || fail "apitrace dump $s: $(cat "$WORK/dump_err")"
+        local n; n=$(grep -cE '^[0-9]+ ' "$WORK/dump_$s")
+        "$FRAGSIM" replay --quiet --out "$WORK/a_$s" "$t" || fail "replay $s"
+        local m; m=$(sed -nE 's/.*"trace_calls": ([0-9]+).*/\1/p' "$WORK/a_$s/stats.json")
+        [ "$n" = "$m" ] || fail "$s: apitrace dump prints $n calls, fragsim read $m"
+    done
+}
+
+test_glxgears_capture() {
+    command -v apitrace >/dev/null || skip "apitrace not installed"
+    command -v xvfb-run >/dev/null || skip "xvfb-run not installed"
+    command -v glxgears >/dev/null || skip "glxgears (mesa-utils) not installed"
+    xvfb-run -a -s "-screen 0 300x300x24" timeout -s TERM 2 \
+        apitrace trace -o "$WORK/gears.trace" glxgears >/dev/null 2>&1
+    [ -s "$WORK/gears.trace" ] || fail "no capture"
+    "$FRAGSIM" check --quiet --frames 0-9 --out "$WORK/gears" "$WORK/gears.trace" >"$WORK/g.log" 2>&1 \
+        || { cat "$WORK/g.log"; fail "check of the glxgears capture failed"; }
+    cat "$WORK/g.log"
+    [ "$(grep -c '^frame' "$WORK/g.log")" -eq 10 ] || fail "expected 10 frames"
+}
+
+for t in test_help test_missing_trace test_truncated_trace test_garbage_trace test_config_errors \
+         test_replay_writes_images_and_stats test_replay_is_deterministic test_frames_option test_diff \
+         test_check_every_scene test_apitrace_dump_reads_our_traces test_glxgears_capture; do
+    run_test "$t"
+done
+finish
