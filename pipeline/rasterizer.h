@@ -25,6 +25,13 @@ typedef struct fs_rvertex {
     float inv_w;    /* 1 / clip w, for perspective-correct interpolation */
     float color[4]; /* RGBA, clamped to [0,1] */
     float tex[4];   /* s, t, r, q of texture unit 0 (after the texture matrix) */
+    /* Optional, read only when fs_raster_state.use_y_raster is set: the
+     * window y in llvmpipe's y-down frame exactly as llvmpipe computes it,
+     * fma(y_ndc, -height/2, fb_height - (viewport_y + height/2)).  Deriving
+     * it from y (fb_height - y) rounds twice, which moves about 1 depth
+     * value in 20 by one unit and rare edge pixels when the viewport
+     * scale makes y_ndc * height/2 inexact. */
+    float y_raster;
 } fs_rvertex;
 
 /* Pixel i of a quad: 0 = (x,y), 1 = (x+1,y), 2 = (x,y+1), 3 = (x+1,y+1). */
@@ -48,6 +55,16 @@ typedef struct fs_raster_state {
     GLenum polygon_mode[2];     /* front, back: GL_FILL */
     float point_size, line_width;
     int subpixel_bits;          /* from the config, default 8 */
+    /* Set by texturing when a texture unit is enabled: interpolating the four
+     * texture coordinates costs as much as the colour, so it is skipped
+     * while nothing reads them (fs_quad.tex is then left unset). */
+    bool interpolate_tex;
+    /* Selects the plain per-pixel reference rasterizer instead of the
+     * incremental one; both must give identical quads (tests hold them
+     * equal). */
+    bool reference_path;
+    /* The vertex stage fills fs_rvertex.y_raster (see there). */
+    bool use_y_raster;
 } fs_raster_state;
 
 void fs_raster_state_init(fs_raster_state *r, int subpixel_bits);

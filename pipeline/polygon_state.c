@@ -1,0 +1,65 @@
+/*
+ * Rasterizer state commands: glCullFace, glFrontFace (GL 1.5 spec 3.5.1),
+ * glPolygonOffset (3.5.5), glPolygonMode (3.5.4), glPointSize (3.3),
+ * glLineWidth (3.4).  Errors follow GL 1.5 spec 2.5: the offending call has
+ * no other effect.
+ */
+#include "context.h"
+
+void fs_exec_CullFace(fs_context *c, GLenum mode)
+{
+    if (mode != GL_FRONT && mode != GL_BACK && mode != GL_FRONT_AND_BACK) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    c->raster.cull_mode = mode;
+}
+
+void fs_exec_FrontFace(fs_context *c, GLenum mode)
+{
+    if (mode != GL_CW && mode != GL_CCW) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    c->raster.front_face = mode;
+}
+
+void fs_exec_PolygonOffset(fs_context *c, GLfloat factor, GLfloat units)
+{
+    /* No error cases (GL 1.5 spec 3.5.5). */
+    c->raster.offset_factor = factor;
+    c->raster.offset_units = units;
+}
+
+void fs_exec_PolygonMode(fs_context *c, GLenum face, GLenum mode)
+{
+    if ((face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) ||
+        (mode != GL_POINT && mode != GL_LINE && mode != GL_FILL)) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    if (face != GL_BACK)
+        c->raster.polygon_mode[0] = mode;
+    if (face != GL_FRONT)
+        c->raster.polygon_mode[1] = mode;
+}
+
+void fs_exec_PointSize(fs_context *c, GLfloat size)
+{
+    /* GL 1.5 spec 3.3: size <= 0 is INVALID_VALUE (a NaN is rejected too). */
+    if (!(size > 0.0f)) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    c->raster.point_size = size;
+}
+
+void fs_exec_LineWidth(fs_context *c, GLfloat width)
+{
+    /* GL 1.5 spec 3.4.2: width <= 0 is INVALID_VALUE. */
+    if (!(width > 0.0f)) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    c->raster.line_width = width;
+}

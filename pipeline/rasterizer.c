@@ -1,0 +1,453 @@
+/*
+ * Triangle rasterization (GL 1.5 spec 3.5), modelled pixel-exactly on
+ * llvmpipe as OSMesa uses it (Mesa 22.3: lp_setup_tri.c, lp_rast_tri.c,
+ * lp_state_setup.c, lp_bld_interp.c; read for the rules, not copied).
+ *
+ * Coverage: vertices are snapped to fixed point with subpixel_bits fraction
+ * bits after subtracting the half-pixel centre offset, edge functions are
+ * exact 64-bit integers, and a +1 bias on the constant term includes pixels
+ * exactly on left edges and on horizontal edges at the triangle's lowest GL y
+ * (llvmpipe's bottom_edge_rule in its y-down frame).  Facing and zero-area
+ * culling use the fixed-point signed area (llvmpipe's calc_fixed_position).
+ *
+ * Attributes: planes are set up in float from the unsnapped positions in
+ * llvmpipe's order of operations, evaluated at integer pixel positions with
+ * a fused multiply-add (LLVM fuses llvm.fmuladd on this FMA-capable CPU), and
+ * colours/texture coordinates are interpolated perspective-correctly
+ * (llvmpipe sets LP_INTERP_PERSPECTIVE for smooth colours).
+ */
+#include <math.h>
+#include <string.h>
+#include "rasterizer_priv.h"
+
+#ifdef __clang__
+/* Every float operation below must round separately, as llvmpipe's do. */
+#pragma STDC FP_CONTRACT OFF
+#endif
+
+void fs_raster_state_init(fs_raster_state *r, int subpixel_bits)
+{
+    /* Initial values: GL 1.5 spec table 6.13. */
+    memset(r, 0, sizeof *r);
+    r->cull_enabled = false;
+    r->cull_mode = GL_BACK;
+    r->front_face = GL_CCW;
+    r->offset_fill = false;
+    r->offset_factor = 0.0f;
+    r->offset_units = 0.0f;
+    r->polygon_mode[0] = r->polygon_mode[1] = GL_FILL;
+    r->point_size = 1.0f;
+    r->line_width = 1.0f;
+    r->subpixel_bits = subpixel_bits < 1 ? 8 : subpixel_bits > 12 ? 12 : subpixel_bits;
+    r->interpolate_tex = false;
+    r->reference_path = false;
+    r->use_y_raster = false;
+}
+
+/* ---- attribute planes and quad emission (shared with lines and points) ---- */
+
+/* llvmpipe evaluates a0 + dadx*x + dady*y as two llvm.fmuladd calls, which
+ * LLVM turns into FMA instructions on this machine.  The product of a float
+ * and a small integer is exact in double, so one double addition rounded to
+ * float reproduces the FMA except when the double sum itself had to round
+ * onto a float rounding boundary (probability about 2^-29). */
+static inline float fmadd(float a, float b, float c)
+{
+    return (float)((double)a * (double)b + (double)c);
+}
+
+static inline float plane_at(const fs_plane *p, float x, float y)
+{
+    if (p->constant)
+        return p->a0;
+    return fmadd(p->dady, y, fmadd(p->dadx, x, p->a0));
+}
+
+void fs_plane_constant(fs_plane *p, float v)
+{
+    p->a0 = v;
+    p->dadx = p->dady = 0.0f;
+    p->constant = true;
+}
+
+uint32_t fs_raster_quantize_depth(float z, int depth_bits)
+{
+    /* llvmpipe clamps the fragment depth to [0,1] (unorm buffer, depth clamp
+     * off) and converts it with lp_build_clamped_float_to_unsigned_norm. */
+    if (!(z > 0.0f))
+        return 0;
+    if (z >= 1.0f)
+        return depth_bits >= 32 ? 0xffffffffu : (uint32_t)((1ull << depth_bits) - 1);
+    /* Measured against OSMesaGetDepthBuffer (tests/test_rasterizer.c,
+     * random_*: every written depth equal): the depth is scaled by
+     * 2^bits - 1 in float and rounded to nearest even. */
+    float scale = (float)((1u << depth_bits) - 1);
+    return (uint32_t)lrintf(z * scale);
+}
+
+void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
+{
+    const int depth_bits = c->fb.depth_bits;
+    q->front_facing = s->front;
+    unsigned m = q->mask;
+    c->stats.quads_generated++;
+    for (int i = 0; i < 4; i++) {
+        if (!(m & (1u << i)))
+            continue;
+        c->stats.fragments_generated++;
+        float px = (float)(q->x + (i & 1));
+        float py = (float)fs_raster_row_to_gl(s->height, q->y + (i >> 1));
+        /* llvmpipe adds the polygon offset after interpolation (stored in
+         * a0.x of the position), even when it is zero. */
+        float z = plane_at(&s->z, px, py) + s->zoffset;
+        q->z[i] = fs_raster_quantize_depth(z, depth_bits);
+        if (s->perspective) {
+            /* Perspective-correct (GL 1.5 spec 3.5.1 eq. 3.7): a/w and 1/w are
+             * linear in window space; llvmpipe divides per pixel. */
+            float oow = 1.0f / plane_at(&s->w, px, py);
+            for (int k = 0; k < 4; k++)
+                q->color[i][k] = plane_at(&s->color[k], px, py) * oow;
+            if (s->use_tex)
+                for (int k = 0; k < 4; k++)
+                    q->tex[i][k] = plane_at(&s->tex[k], px, py) * oow;
+        } else {
+            for (int k = 0; k < 4; k++)
+                q->color[i][k] = plane_at(&s->color[k], px, py);
+            if (s->use_tex)
+                for (int k = 0; k < 4; k++)
+                    q->tex[i][k] = plane_at(&s->tex[k], px, py);
+        }
+    }
+    fs_fragment_quad(c, q);
+}
+
+/* ---- triangle setup ---- */
+
+typedef struct tri_edges {
+    /* E(x, y) = c - dcdx*x + dcdy*y at integer pixel (x, y) of the raster
+     * frame, fill-rule bias included; the pixel is inside when E > 0 for all
+     * three edges (llvmpipe tests E - 1 >= 0). */
+    int64_t c[3], dcdx[3], dcdy[3];
+    int x0, x1, y0, y1; /* bounding box in raster pixels, inclusive, on screen */
+} tri_edges;
+
+/* Floor division by 2^s for negative values too (>> of a negative signed
+ * value is implementation-defined in C). */
+static inline int64_t floor_shift(int64_t v, int s)
+{
+    return v >= 0 ? v >> s : -(((-v) - 1) >> s) - 1;
+}
+
+/* Fixed-point limit: coordinates of |v| < 2^29 subpixels keep every edge
+ * product below 2^61.  llvmpipe itself only ever sees clipped vertices (draw
+ * clips with no guard band), so anything beyond is not a case to match. */
+#define FIXED_LIMIT 536870912.0f
+
+typedef struct vpos { float x, y; } vpos;
+
+/* Builds the plane of one attribute (lp_state_setup.c calc_coef4). */
+typedef struct coef_args {
+    float x0c, y0c, dx01o, dy01o, dx20o, dy20o;
+} coef_args;
+
+static void calc_coef(fs_plane *p, const coef_args *g, float a0, float a1, float a2)
+{
+    float da01 = a0 - a1;
+    float da20 = a2 - a0;
+    float t1 = da01 * g->dy20o;
+    float t2 = da20 * g->dy01o;
+    float dadx = t1 - t2;
+    float t3 = da20 * g->dx01o;
+    float t4 = da01 * g->dx20o;
+    float dady = t3 - t4;
+    float ax = dadx * g->x0c;
+    float ay = dady * g->y0c;
+    float sum = ax + ay;
+    p->a0 = a0 - sum;
+    p->dadx = dadx;
+    p->dady = dady;
+    p->constant = dadx == 0.0f && dady == 0.0f && p->a0 == a0;
+}
+
+static bool polygon_culled(const fs_raster_state *r, bool front)
+{
+    if (!r->cull_enabled)
+        return false;
+    /* GL 1.5 spec 3.5.1: culling by facing. */
+    switch (r->cull_mode) {
+    case GL_FRONT: return front;
+    case GL_BACK: return !front;
+    case GL_FRONT_AND_BACK: return true;
+    default: return false;
+    }
+}
+
+static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e);
+static void raster_tri_reference(fs_context *c, const fs_prim_setup *s, const tri_edges *e);
+
+void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2)
+{
+    const fs_raster_state *r = &c->raster;
+    const int W = c->fb.width, H = c->fb.height;
+    const int order = r->subpixel_bits;
+    const float fixed_one = (float)(1 << order);
+    const fs_rvertex *v[3] = {v0, v1, v2};
+    vpos p[3];
+    int64_t X[3], Y[3];
+
+    /* Snap (lp_setup_tri.c calc_fixed_position): subtract the pixel-centre
+     * offset, scale, round to nearest even (cvtps2dq).  Non-finite or
+     * out-of-range positions cannot be snapped: the triangle is dropped
+     * and counted with the culled ones. */
+    for (int i = 0; i < 3; i++) {
+        p[i].x = v[i]->x;
+        p[i].y = r->use_y_raster ? v[i]->y_raster : fs_raster_y(H, v[i]->y);
+        float fx = (p[i].x - 0.5f) * fixed_one;
+        float fy = (p[i].y - 0.5f) * fixed_one;
+        if (!(fabsf(fx) < FIXED_LIMIT) || !(fabsf(fy) < FIXED_LIMIT)) {
+            c->stats.triangles_culled++;
+            return;
+        }
+        X[i] = (int64_t)lrintf(fx);
+        Y[i] = (int64_t)lrintf(fy);
+    }
+
+    /* Signed area in fixed point; positive is counter-clockwise in GL's
+     * y-up window coordinates (the two y flips of llvmpipe's frame and its
+     * area formula cancel). */
+    int64_t area = (X[0] - X[1]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[0] - Y[1]);
+    if (area == 0) {
+        c->stats.triangles_culled++;
+        return;
+    }
+    /* GL 1.5 spec 3.5.1: facing from the sign of the area and glFrontFace. */
+    bool ccw = area > 0;
+    bool front = (r->front_face == GL_CCW) ? ccw : !ccw;
+    if (polygon_culled(r, front)) {
+        c->stats.triangles_culled++;
+        return;
+    }
+    GLenum mode = r->polygon_mode[front ? 0 : 1];
+    if (mode == GL_LINE)
+        fs_unsupported(c, "glPolygonMode(GL_LINE)");
+    else if (mode == GL_POINT)
+        fs_unsupported(c, "glPolygonMode(GL_POINT)");
+
+    /* llvmpipe rasterizes every triangle counter-clockwise; a clockwise one
+     * has v0 and v1 swapped (last-vertex provoking convention), which also
+     * changes which vertex the attribute planes are built from. */
+    int idx[3] = {0, 1, 2};
+    if (!ccw) {
+        idx[0] = 1;
+        idx[1] = 0;
+    }
+    int64_t x[3], y[3];
+    for (int i = 0; i < 3; i++) {
+        x[i] = X[idx[i]];
+        y[i] = Y[idx[i]];
+    }
+
+    tri_edges e;
+    /* Bounding box (do_triangle_ccw): inclusive x0, exclusive max x; the y
+     * rounding is adjusted by one subpixel for the bottom-edge rule. */
+    {
+        const int adj = 1;
+        int64_t minx = x[0], maxx = x[0], miny = y[0], maxy = y[0];
+        for (int i = 1; i < 3; i++) {
+            if (x[i] < minx) minx = x[i];
+            if (x[i] > maxx) maxx = x[i];
+            if (y[i] < miny) miny = y[i];
+            if (y[i] > maxy) maxy = y[i];
+        }
+        int64_t bx0 = floor_shift(minx, order);
+        int64_t bx1 = floor_shift(maxx - 1, order);
+        int64_t by0 = floor_shift(miny + adj, order);
+        int64_t by1 = floor_shift(maxy - 1 + adj, order);
+        /* Pixel ownership (GL 1.5 spec 4.1.1): only the window's pixels. */
+        if (bx0 < 0) bx0 = 0;
+        if (by0 < 0) by0 = 0;
+        if (bx1 > W - 1) bx1 = W - 1;
+        if (by1 > H - 1) by1 = H - 1;
+        if (bx0 > bx1 || by0 > by1) {
+            /* Entirely off screen: llvmpipe counts it culled too. */
+            c->stats.triangles_rasterized++;
+            return;
+        }
+        e.x0 = (int)bx0;
+        e.x1 = (int)bx1;
+        e.y0 = (int)by0;
+        e.y1 = (int)by1;
+    }
+    for (int i = 0; i < 3; i++) {
+        int j = (i + 1) % 3;
+        int64_t dcdx = y[i] - y[j];
+        int64_t dcdy = x[i] - x[j];
+        int64_t cc = dcdx * x[i] - dcdy * y[i];
+        /* Fill convention: pixels exactly on an edge belong to left edges
+         * (dcdx < 0) and, for horizontal edges, to the bottom edge of GL's
+         * y-up window (dcdy < 0 in llvmpipe's y-down frame). */
+        if (dcdx < 0 || (dcdx == 0 && dcdy < 0))
+            cc++;
+        e.c[i] = cc;
+        e.dcdx[i] = dcdx * (1 << order);
+        e.dcdy[i] = dcdy * (1 << order);
+    }
+
+    /* Attribute planes (lp_state_setup.c init_args/calc_coef4) from the
+     * unsnapped float positions, in llvmpipe's vertex order. */
+    const fs_rvertex *a = v[idx[0]], *b = v[idx[1]], *d = v[idx[2]];
+    vpos pa = p[idx[0]], pb = p[idx[1]], pd = p[idx[2]];
+    coef_args g;
+    float dx01 = pa.x - pb.x, dy01 = pa.y - pb.y;
+    float dx20 = pd.x - pa.x, dy20 = pd.y - pa.y;
+    float ef_e = dx01 * dy20;
+    float ef_f = dy01 * dx20;
+    float ooa = 1.0f / (ef_e - ef_f);
+    g.x0c = pa.x - 0.5f;
+    g.y0c = pa.y - 0.5f;
+    g.dx20o = dx20 * ooa;
+    g.dy20o = dy20 * ooa;
+    g.dx01o = dx01 * ooa;
+    g.dy01o = dy01 * ooa;
+
+    fs_prim_setup s;
+    s.front = front;
+    s.height = H;
+    s.use_tex = r->interpolate_tex;
+    s.zoffset = 0.0f;
+    if (r->offset_fill && mode == GL_FILL && (r->offset_factor != 0.0f || r->offset_units != 0.0f)) {
+        /* GL 1.5 spec 3.5.5: o = m*factor + r*units with m the max depth
+         * slope; llvmpipe (lp_do_offset_tri) takes m = max(|dz/dx|, |dz/dy|)
+         * from the plane and r = 2 / (2^bits - 1) (util_get_depth_format_mrd
+         * times two, in double, then rounded to float). */
+        float dz01 = a->z - b->z, dz20 = d->z - a->z;
+        float r1a = dz20 * dy01, r1b = dy20 * dz01;
+        float r2a = dx20 * dz01, r2b = dz20 * dx01;
+        float res1 = r1a - r1b, res2 = r2a - r2b;
+        float dzdx = fabsf(res1 * ooa), dzdy = fabsf(res2 * ooa);
+        /* Unordered-greater select: a NaN dz/dy picks dz/dx. */
+        float mx = !(dzdx <= dzdy) ? dzdx : dzdy;
+        float mult = mx * r->offset_factor;
+        double mrd = 1.0 / (double)((1ull << c->fb.depth_bits) - 1);
+        float units = (float)((double)r->offset_units * mrd * 2.0);
+        s.zoffset = units + mult;
+    }
+    calc_coef(&s.z, &g, a->z, b->z, d->z);
+    s.perspective = !(a->inv_w == 1.0f && b->inv_w == 1.0f && d->inv_w == 1.0f);
+    if (s.perspective) {
+        calc_coef(&s.w, &g, a->inv_w, b->inv_w, d->inv_w);
+        for (int k = 0; k < 4; k++) {
+            float ca = a->color[k] * a->inv_w, cb = b->color[k] * b->inv_w, cd = d->color[k] * d->inv_w;
+            calc_coef(&s.color[k], &g, ca, cb, cd);
+        }
+        if (s.use_tex)
+            for (int k = 0; k < 4; k++) {
+                float ta = a->tex[k] * a->inv_w, tb = b->tex[k] * b->inv_w, td = d->tex[k] * d->inv_w;
+                calc_coef(&s.tex[k], &g, ta, tb, td);
+            }
+    } else {
+        /* With every 1/w equal to 1, llvmpipe's multiply by 1/w and divide by
+         * the interpolated 1/w (exactly 1) change nothing. */
+        for (int k = 0; k < 4; k++)
+            calc_coef(&s.color[k], &g, a->color[k], b->color[k], d->color[k]);
+        if (s.use_tex)
+            for (int k = 0; k < 4; k++)
+                calc_coef(&s.tex[k], &g, a->tex[k], b->tex[k], d->tex[k]);
+    }
+
+    c->stats.triangles_rasterized++;
+    if (r->reference_path)
+        raster_tri_reference(c, &s, &e);
+    else
+        raster_tri_fast(c, &s, &e);
+}
+
+/* ---- coverage: the plain reference and the incremental fast path ---- */
+
+/* Quads are aligned to even GL coordinates; the raster frame is flipped in
+ * y, so GL row gy is raster row H-1-gy. */
+static void raster_tri_reference(fs_context *c, const fs_prim_setup *s, const tri_edges *e)
+{
+    const int H = s->height;
+    int gy0 = fs_raster_row_to_gl(H, e->y1), gy1 = fs_raster_row_to_gl(H, e->y0);
+    for (int qy = gy0 & ~1; qy <= gy1; qy += 2) {
+        for (int qx = e->x0 & ~1; qx <= e->x1; qx += 2) {
+            unsigned mask = 0;
+            for (int i = 0; i < 4; i++) {
+                int px = qx + (i & 1), gy = qy + (i >> 1);
+                int ry = fs_raster_row_to_gl(H, gy);
+                if (px < e->x0 || px > e->x1 || ry < e->y0 || ry > e->y1)
+                    continue;
+                bool in = true;
+                for (int k = 0; k < 3; k++)
+                    in = in && e->c[k] - e->dcdx[k] * px + e->dcdy[k] * ry > 0;
+                if (in)
+                    mask |= 1u << i;
+            }
+            if (mask) {
+                fs_quad q;
+                q.x = qx;
+                q.y = qy;
+                q.mask = mask;
+                fs_raster_emit_quad(c, s, &q);
+            }
+        }
+    }
+}
+
+/* The same coverage with the edge functions stepped incrementally: per quad
+ * the three edges' values at the four pixels are formed by additions and the
+ * mask is read from sign bits (E - 1 >= 0 for all edges). */
+static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e)
+{
+    const int H = s->height;
+    const int gy0 = fs_raster_row_to_gl(H, e->y1), gy1 = fs_raster_row_to_gl(H, e->y0);
+    const int qx0 = e->x0 & ~1, qy0 = gy0 & ~1;
+    /* Masks that keep pixels inside the bounding box at its borders. */
+    const unsigned left = (e->x0 & 1) ? 0xAu : 0xFu;   /* drop column 0 */
+    const unsigned right = (e->x1 & 1) ? 0xFu : 0x5u;  /* drop column 1 */
+    const unsigned bottom = (gy0 & 1) ? 0xCu : 0xFu;   /* drop row 0 */
+    const unsigned top = (gy1 & 1) ? 0xFu : 0x3u;      /* drop row 1 */
+    const int qxl = e->x1 & ~1, qyl = gy1 & ~1;
+
+    /* In GL rows, moving up one row moves down one raster row. */
+    int64_t row[3], ddx[3], ddy[3];
+    for (int k = 0; k < 3; k++) {
+        ddx[k] = -e->dcdx[k];
+        ddy[k] = -e->dcdy[k];
+        int64_t ry = fs_raster_row_to_gl(H, qy0);
+        row[k] = e->c[k] - 1 - e->dcdx[k] * qx0 + e->dcdy[k] * ry;
+    }
+    for (int qy = qy0; qy <= gy1; qy += 2) {
+        unsigned ymask = (qy == qy0 ? bottom : 0xFu) & (qy == qyl ? top : 0xFu);
+        int64_t e0 = row[0], e1 = row[1], e2 = row[2];
+        for (int qx = qx0; qx <= e->x1; qx += 2) {
+            /* Pixel 0 at (qx, qy); 1 = +x; 2 = +y; 3 = +x+y. */
+            int64_t a0 = e0 | e1 | e2;
+            int64_t a1 = (e0 + ddx[0]) | (e1 + ddx[1]) | (e2 + ddx[2]);
+            int64_t a2 = (e0 + ddy[0]) | (e1 + ddy[1]) | (e2 + ddy[2]);
+            int64_t a3 = (e0 + ddx[0] + ddy[0]) | (e1 + ddx[1] + ddy[1]) | (e2 + ddx[2] + ddy[2]);
+            unsigned mask = (unsigned)(~((uint64_t)a0 >> 63) & 1u) |
+                            (unsigned)((~((uint64_t)a1 >> 63) & 1u) << 1) |
+                            (unsigned)((~((uint64_t)a2 >> 63) & 1u) << 2) |
+                            (unsigned)((~((uint64_t)a3 >> 63) & 1u) << 3);
+            mask &= ymask;
+            if (qx == qx0)
+                mask &= left;
+            if (qx == qxl)
+                mask &= right;
+            if (mask) {
+                fs_quad q;
+                q.x = qx;
+                q.y = qy;
+                q.mask = mask;
+                fs_raster_emit_quad(c, s, &q);
+            }
+            e0 += 2 * ddx[0];
+            e1 += 2 * ddx[1];
+            e2 += 2 * ddx[2];
+        }
+        for (int k = 0; k < 3; k++)
+            row[k] += 2 * ddy[k];
+    }
+}

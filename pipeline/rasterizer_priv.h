@@ -1,0 +1,52 @@
+/*
+ * Shared by the rasterizer files (rasterizer.c, rasterize_line.c,
+ * rasterize_point.c): the attribute planes and the quad emitter, so lines,
+ * points and triangles interpolate and quantise exactly the same way.
+ *
+ * The model follows llvmpipe (Mesa 22.3, lp_setup_*.c and lp_state_setup.c,
+ * read for facts only): primitives are set up in llvmpipe's own window frame,
+ * which for OSMesa's window-system buffer has y pointing down
+ * (y_raster = height - y_gl), and every float operation is done in the same
+ * order and precision so that depth and colours come out bit-identical.
+ */
+#ifndef FS_RASTERIZER_PRIV_H
+#define FS_RASTERIZER_PRIV_H
+#include <stdint.h>
+#include <stdbool.h>
+#include "context.h"
+
+/* An attribute plane a(x, y) = a0 + dadx*x + dady*y at integer pixel
+ * coordinates of the raster frame (the pixel-centre half offset is folded
+ * into a0, as llvmpipe's setup does). */
+typedef struct fs_plane {
+    float a0, dadx, dady;
+    bool constant;  /* dadx == dady == 0: a(x, y) == a0 exactly */
+} fs_plane;
+
+typedef struct fs_prim_setup {
+    fs_plane z, w, color[4], tex[4];
+    float zoffset;       /* polygon offset, added after interpolation */
+    bool perspective;    /* false when every 1/w is 1: the division is exact then */
+    bool use_tex;        /* interpolate texture coordinates */
+    bool front;
+    int height;          /* framebuffer height, for the y flip */
+} fs_prim_setup;
+
+/* Quantises a window depth like llvmpipe's unorm depth conversion. */
+uint32_t fs_raster_quantize_depth(float z, int depth_bits);
+
+/* Fills q->z, colours (and texture coordinates) for the pixels in q->mask,
+ * counts the quad and hands it to the per-fragment operations. */
+void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q);
+
+/* Flat (constant) planes, used by points and lines whose attributes llvmpipe
+ * sets up per primitive. */
+void fs_plane_constant(fs_plane *p, float v);
+
+/* The vertical frame flip between GL window coordinates and llvmpipe's raster
+ * frame: OSMesa renders to a window-system buffer, which Mesa's state tracker
+ * draws upside down and OSMesa flips back on read (measured: see
+ * tests/test_rasterizer.c, test fill_convention). */
+static inline float fs_raster_y(int height, float y_gl) { return (float)height - y_gl; }
+static inline int fs_raster_row_to_gl(int height, int row) { return height - 1 - row; }
+#endif

@@ -1,0 +1,463 @@
+/*
+ * Rasterizer tests: coverage, depth and colours of fs_raster_triangle
+ * (and lines and points) against OSMesa (llvmpipe) in the same process.
+ *
+ * Vertices are given to OSMesa in clip coordinates with identity matrices, so
+ * that the window coordinates llvmpipe computes (x_ndc * W/2 + W/2) are exact
+ * and equal to the fs_rvertex coordinates given to fragsim.
+ */
+#include <GL/osmesa.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <math.h>
+#include <time.h>
+#include "check.h"
+#include "../pipeline/context.h"
+
+/* ---- a tiny deterministic generator ---- */
+typedef struct rng { uint64_t s; } rng;
+static uint32_t rnd(rng *r)
+{
+    r->s ^= r->s << 13;
+    r->s ^= r->s >> 7;
+    r->s ^= r->s << 17;
+    return (uint32_t)(r->s >> 11);
+}
+static float rndf(rng *r) { return (float)(rnd(r) & 0xffffff) / 16777216.0f; } /* [0,1) */
+/* A window coordinate on a 1/1024 grid (finer than the 1/256 snap grid, so
+ * rounding ties are exercised and the NDC value is exact). */
+static float rnd_coord(rng *r, float lo, float hi)
+{
+    float v = lo + (hi - lo) * rndf(r);
+    return floorf(v * 1024.0f) / 1024.0f;
+}
+
+/* ---- the vertices a test draws ---- */
+typedef struct tv {
+    float x, y;    /* window coordinates */
+    float zn;      /* NDC depth */
+    float w;       /* clip w (1 = no perspective) */
+    float col[4];
+} tv;
+
+typedef struct osm {
+    OSMesaContext ctx;
+    int w, h;
+    uint8_t *color;
+} osm;
+
+static bool osm_open(osm *o, int w, int h)
+{
+    o->w = w;
+    o->h = h;
+    o->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+    o->color = calloc((size_t)w * h, 4);
+    if (!o->ctx || !o->color)
+        return false;
+    if (!OSMesaMakeCurrent(o->ctx, o->color, GL_UNSIGNED_BYTE, w, h))
+        return false;
+    glViewport(0, 0, w, h);
+    glMatrixMode(GL_PROJECTION);
+    glLoadIdentity();
+    glMatrixMode(GL_MODELVIEW);
+    glLoadIdentity();
+    glShadeModel(GL_SMOOTH);
+    glDisable(GL_DITHER);
+    return true;
+}
+
+static void osm_close(osm *o)
+{
+    if (o->ctx)
+        OSMesaDestroyContext(o->ctx);
+    free(o->color);
+}
+
+static void osm_clear(void)
+{
+    glClearColor(0, 0, 0, 0);
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+static void osm_vertex(const osm *o, const tv *v)
+{
+    /* Clip coordinates whose window position is exactly (x, y). */
+    float hw = (float)o->w * 0.5f, hh = (float)o->h * 0.5f;
+    float xn = (v->x - hw) / hw, yn = (v->y - hh) / hh;
+    glColor4fv(v->col);
+    glVertex4f(xn * v->w, yn * v->w, v->zn * v->w, v->w);
+}
+
+static void osm_tris(const osm *o, const tv *v, int ntri)
+{
+    glBegin(GL_TRIANGLES);
+    for (int i = 0; i < 3 * ntri; i++)
+        osm_vertex(o, &v[i]);
+    glEnd();
+    glFinish();
+}
+
+/* OSMesa's depth buffer, bottom row first like the colour buffer. */
+static const uint32_t *osm_depth(const osm *o)
+{
+    GLint w, h, bpv;
+    void *buf;
+    if (!OSMesaGetDepthBuffer(o->ctx, &w, &h, &bpv, &buf) || w != o->w || h != o->h || bpv != 4)
+        return NULL;
+    return buf;
+}
+
+/* ---- fragsim side ---- */
+static fs_rvertex to_rvertex(const fs_context *c, const tv *v)
+{
+    fs_rvertex r;
+    memset(&r, 0, sizeof r);
+    /* What llvmpipe's draw module computes: x_ndc * (W/2) + W/2, with x_ndc =
+     * x_clip * (1/w). */
+    float hw = (float)c->fb.width * 0.5f, hh = (float)c->fb.height * 0.5f;
+    float xn = (v->x - hw) / hw, yn = (v->y - hh) / hh;
+    float oow = 1.0f / v->w;
+    float xc = xn * v->w, yc = yn * v->w, zc = v->zn * v->w;
+    r.x = fmaf(xc * oow, hw, hw);
+    r.y = fmaf(yc * oow, hh, hh);
+    r.z = fmaf(zc * oow, 0.5f, 0.5f);
+    r.y_raster = fmaf(yc * oow, -hh, hh);
+    r.inv_w = oow;
+    for (int k = 0; k < 4; k++)
+        r.color[k] = v->col[k];
+    return r;
+}
+
+static void fs_clear(fs_context *c)
+{
+    size_t n = (size_t)c->fb.width * c->fb.height;
+    memset(c->fb.color, 0, n * 4);
+    for (size_t i = 0; i < n; i++)
+        c->fb.depth[i] = c->fb.depth_max;
+}
+
+static void fs_tris(fs_context *c, const tv *v, int ntri)
+{
+    for (int t = 0; t < ntri; t++) {
+        fs_rvertex a = to_rvertex(c, &v[3 * t]), b = to_rvertex(c, &v[3 * t + 1]), d = to_rvertex(c, &v[3 * t + 2]);
+        fs_raster_triangle(c, &a, &b, &d);
+    }
+}
+
+/* ---- comparison ---- */
+typedef struct cmp_result {
+    long pixels;          /* pixels covered in either image */
+    long color_exact_diff;/* pixels whose colour differs at all */
+    long color_far;       /* pixels with a channel off by more than 1 */
+    long depth_written;   /* pixels with a depth written in either */
+    long depth_equal;
+    long depth_off_by_one;
+    int first_x, first_y; /* first colour difference */
+} cmp_result;
+
+static cmp_result compare(const osm *o, const fs_context *c, bool depth)
+{
+    cmp_result r = {0, 0, 0, 0, 0, 0, -1, -1};
+    const uint32_t *od = depth ? osm_depth(o) : NULL;
+    for (int y = 0; y < o->h; y++)
+        for (int x = 0; x < o->w; x++) {
+            size_t i = (size_t)y * o->w + x;
+            const uint8_t *a = o->color + 4 * i, *b = c->fb.color + 4 * i;
+            bool covered = (a[0] | a[1] | a[2] | a[3] | b[0] | b[1] | b[2] | b[3]) != 0;
+            if (covered)
+                r.pixels++;
+            int maxd = 0;
+            for (int k = 0; k < 4; k++) {
+                int d = abs((int)a[k] - (int)b[k]);
+                if (d > maxd)
+                    maxd = d;
+            }
+            if (maxd) {
+                if (r.color_exact_diff == 0) {
+                    r.first_x = x;
+                    r.first_y = y;
+                }
+                r.color_exact_diff++;
+            }
+            if (maxd > 1)
+                r.color_far++;
+            if (od) {
+                uint32_t za = od[i] & 0xffffff, zb = c->fb.depth[i];
+                if (za != 0xffffff || zb != 0xffffff) {
+                    r.depth_written++;
+                    if (za == zb)
+                        r.depth_equal++;
+                    else if (za + 1 == zb || zb + 1 == za)
+                        r.depth_off_by_one++;
+                }
+            }
+        }
+    return r;
+}
+
+/* An ID colour per triangle: exact through float -> unorm8 in both. */
+static void id_color(float col[4], int id)
+{
+    int v = id + 1;
+    col[0] = (float)(v & 0xff) / 255.0f;
+    col[1] = (float)((v >> 8) & 0xff) / 255.0f;
+    col[2] = (float)((v * 37) & 0xff) / 255.0f;
+    col[3] = 1.0f;
+}
+
+/* Draws batches in both and compares.  mode 0: painter's order with ID
+ * colours, no depth test (coverage); mode 1: depth test LESS with ID colours
+ * (depth); mode 2: smooth random colours, no depth test. */
+typedef struct run_totals {
+    long pixels, color_diff, color_far, depth_written, depth_equal, depth_off1;
+    int frames_with_diff;
+} run_totals;
+
+static void run_batch(osm *o, fs_context *c, const tv *v, int ntri, int mode, run_totals *t, bool verbose)
+{
+    osm_clear();
+    fs_clear(c);
+    if (mode == 1) {
+        glEnable(GL_DEPTH_TEST);
+        glDepthFunc(GL_LESS);
+        c->frag.depth_enabled = true;
+        c->frag.depth_func = GL_LESS;
+    } else {
+        glDisable(GL_DEPTH_TEST);
+        c->frag.depth_enabled = false;
+    }
+    osm_tris(o, v, ntri);
+    fs_tris(c, v, ntri);
+    cmp_result r = compare(o, c, mode == 1);
+    t->pixels += r.pixels;
+    t->color_diff += r.color_exact_diff;
+    t->color_far += r.color_far;
+    t->depth_written += r.depth_written;
+    t->depth_equal += r.depth_equal;
+    t->depth_off1 += r.depth_off_by_one;
+    if ((mode == 2 ? r.color_far : r.color_exact_diff) != 0) {
+        t->frames_with_diff++;
+        if (verbose && t->frames_with_diff <= 3) {
+            size_t i = (size_t)r.first_y * o->w + r.first_x;
+            fprintf(stderr, "    mode %d: first diff at (%d,%d): osmesa %d,%d,%d,%d fragsim %d,%d,%d,%d\n",
+                    mode, r.first_x, r.first_y, o->color[4 * i], o->color[4 * i + 1], o->color[4 * i + 2],
+                    o->color[4 * i + 3], c->fb.color[4 * i], c->fb.color[4 * i + 1], c->fb.color[4 * i + 2],
+                    c->fb.color[4 * i + 3]);
+            if (ntri <= 4)
+                for (int k = 0; k < 3 * ntri; k++)
+                    fprintf(stderr, "      v%d = (%.9g, %.9g)\n", k, v[k].x, v[k].y);
+        }
+    }
+}
+
+/* A random triangle inside [0,w]x[0,h]: llvmpipe clips anything crossing
+ * the window edge (no guard band), which moves vertices; clipping is the
+ * vertex stage's job and is tested there. */
+static void random_tri(rng *r, tv *v, float w, float h, float maxsize, int id, bool smooth)
+{
+    float cx = rnd_coord(r, 0.0f, w), cy = rnd_coord(r, 0.0f, h);
+    for (int k = 0; k < 3; k++) {
+        v[k].x = rnd_coord(r, fmaxf(0.0f, cx - maxsize), fminf(w, cx + maxsize));
+        v[k].y = rnd_coord(r, fmaxf(0.0f, cy - maxsize), fminf(h, cy + maxsize));
+        v[k].zn = rndf(r) * 2.0f - 1.0f;
+        v[k].w = 1.0f;
+        if (smooth)
+            for (int j = 0; j < 4; j++)
+                v[k].col[j] = rndf(r);
+        else
+            id_color(v[k].col, id);
+    }
+}
+
+/* ---- tests ---- */
+
+#define W 64
+#define H 64
+
+static fs_context *make_ctx(int w, int h)
+{
+    fs_context *c = fs_context_create(NULL, w, h);
+    return c;
+}
+
+/* Edges through pixel centres, horizontal and vertical edges, both windings,
+ * vertices on pixel centres and on snap-rounding ties: one triangle per frame
+ * so that any coverage difference is seen. */
+TEST(fill_convention)
+{
+    osm o;
+    REQUIRE(osm_open(&o, W, H));
+    fs_context *c = make_ctx(W, H);
+    REQUIRE(c);
+    run_totals t = {0};
+    int n = 0;
+    /* Axis-aligned rectangles (two triangles) and right triangles with
+     * corners at pixel centres, at half-pixel offsets and at tie points of
+     * the 1/256 snap grid (1/512 away). */
+    const float offs[] = {0.0f, 0.5f, 0.25f, 1.0f / 512.0f, 0.5f + 1.0f / 512.0f, 0.5f - 1.0f / 512.0f, 3.0f / 512.0f};
+    for (unsigned a = 0; a < sizeof offs / sizeof offs[0]; a++)
+        for (unsigned b = 0; b < sizeof offs / sizeof offs[0]; b++)
+            for (int wind = 0; wind < 2; wind++)
+                for (int shape = 0; shape < 4; shape++) {
+                    float x0 = 10.0f + offs[a], y0 = 12.0f + offs[b];
+                    float x1 = x0 + 7.0f, y1 = y0 + 5.0f;
+                    tv v[6];
+                    memset(v, 0, sizeof v);
+                    for (int k = 0; k < 6; k++) {
+                        v[k].w = 1.0f;
+                        id_color(v[k].col, 7);
+                    }
+                    float P[4][2] = {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+                    /* shapes: lower-right, upper-left, lower-left, upper-right halves */
+                    int tri[4][3] = {{0, 1, 2}, {0, 2, 3}, {0, 1, 3}, {1, 2, 3}};
+                    for (int k = 0; k < 3; k++) {
+                        int q = tri[shape][wind ? 2 - k : k];
+                        v[k].x = P[q][0];
+                        v[k].y = P[q][1];
+                    }
+                    run_batch(&o, c, v, 1, 0, &t, true);
+                    n++;
+                }
+    printf("    fill_convention: %d triangles, %ld pixels, %ld differ\n", n, t.pixels, t.color_diff);
+    CHECK_EQ_INT(t.color_diff, 0);
+    CHECK(t.pixels > 0);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+static void random_run(check_state *check_st_, int frames, int per_frame, float maxsize, int w, int h,
+                       uint64_t seed, const char *name, bool y_raster)
+{
+    osm o;
+    REQUIRE(osm_open(&o, w, h));
+    fs_context *c = make_ctx(w, h);
+    REQUIRE(c);
+    c->raster.use_y_raster = y_raster;
+    rng r = {seed};
+    run_totals cov = {0}, dep = {0}, smooth = {0};
+    tv *v = calloc((size_t)per_frame * 3, sizeof *v);
+    REQUIRE(v);
+    for (int f = 0; f < frames; f++) {
+        for (int i = 0; i < per_frame; i++)
+            random_tri(&r, &v[3 * i], (float)w, (float)h, maxsize, i, false);
+        run_batch(&o, c, v, per_frame, 0, &cov, true);
+        run_batch(&o, c, v, per_frame, 1, &dep, true);
+        for (int i = 0; i < per_frame; i++)
+            for (int k = 0; k < 3; k++)
+                for (int j = 0; j < 4; j++)
+                    v[3 * i + k].col[j] = rndf(&r);
+        run_batch(&o, c, v, per_frame, 2, &smooth, true);
+    }
+    printf("    %s: %d triangles; coverage: %ld px, %ld differ; depth: %ld px written, %.4f%% equal, "
+           "%ld off by one, %ld winner differences; smooth colour: %ld px differ, %ld by more than 1\n",
+           name, frames * per_frame, cov.pixels, cov.color_diff, dep.depth_written,
+           dep.depth_written ? 100.0 * (double)dep.depth_equal / (double)dep.depth_written : 100.0,
+           dep.depth_off1, dep.color_diff, smooth.color_diff, smooth.color_far);
+    CHECK_EQ_INT(cov.color_diff, 0);
+    CHECK_EQ_INT(smooth.color_far, 0);
+    CHECK(cov.pixels > 0);
+    /* Depth must agree at least where both are exact; allow rare one-unit
+     * FMA emulation misses but no larger differences. */
+    CHECK_EQ_INT(dep.depth_written - dep.depth_equal - dep.depth_off1, 0);
+    free(v);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+TEST(random_small)
+{
+    random_run(check_st_, 200, 20, 6.0f, W, H, 0x1234567ull, "random_small", false);
+}
+
+TEST(random_medium)
+{
+    random_run(check_st_, 100, 10, 30.0f, W, H, 0x7654321ull, "random_medium", false);
+}
+
+TEST(random_odd_size)
+{
+    /* 67x45: y_ndc * 22.5 is inexact, so the exact llvmpipe y is needed. */
+    random_run(check_st_, 100, 10, 20.0f, 67, 45, 0xabcdefull, "random_odd_size", true);
+}
+
+/* The same without y_raster: measures what the double rounding of
+ * fb_height - y costs (reported, not required to be exact). */
+TEST(random_odd_size_gl_y)
+{
+    osm o;
+    REQUIRE(osm_open(&o, 67, 45));
+    fs_context *c = make_ctx(67, 45);
+    REQUIRE(c);
+    rng r = {0xabcdefull};
+    run_totals cov = {0}, dep = {0};
+    tv v[30];
+    for (int f = 0; f < 100; f++) {
+        for (int i = 0; i < 10; i++)
+            random_tri(&r, &v[3 * i], 67.0f, 45.0f, 20.0f, i, false);
+        run_batch(&o, c, v, 10, 0, &cov, false);
+        run_batch(&o, c, v, 10, 1, &dep, false);
+    }
+    printf("    without y_raster: coverage %ld of %ld px differ; depth %.4f%% equal\n", cov.color_diff, cov.pixels,
+           100.0 * (double)dep.depth_equal / (double)dep.depth_written);
+    CHECK(cov.color_diff * 1000 < cov.pixels);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+TEST(slivers)
+{
+    osm o;
+    REQUIRE(osm_open(&o, W, H));
+    fs_context *c = make_ctx(W, H);
+    REQUIRE(c);
+    rng r = {99};
+    run_totals t = {0};
+    tv v[3];
+    memset(v, 0, sizeof v);
+    for (int i = 0; i < 2000; i++) {
+        /* Long thin triangles and sub-pixel ones. */
+        float x0 = rnd_coord(&r, 0, W), y0 = rnd_coord(&r, 0, H);
+        float x1 = rnd_coord(&r, 0, W), y1 = rnd_coord(&r, 0, H);
+        float t3 = rndf(&r);
+        float eps = (i & 1) ? rnd_coord(&r, 0, 0.05f) : rnd_coord(&r, 0, 0.6f);
+        v[0].x = x0; v[0].y = y0;
+        v[1].x = x1; v[1].y = y1;
+        if (i % 3 == 0) {
+            v[1].x = x0 + rnd_coord(&r, -1.5f, 1.5f);
+            v[1].y = y0 + rnd_coord(&r, -1.5f, 1.5f);
+            v[2].x = x0 + rnd_coord(&r, -1.5f, 1.5f);
+            v[2].y = y0 + rnd_coord(&r, -1.5f, 1.5f);
+        } else {
+            v[2].x = floorf((x0 + (x1 - x0) * t3 + eps) * 1024.0f) / 1024.0f;
+            v[2].y = floorf((y0 + (y1 - y0) * t3 - eps) * 1024.0f) / 1024.0f;
+        }
+        for (int k = 0; k < 3; k++) {
+            v[k].w = 1.0f;
+            v[k].zn = 0.0f;
+            id_color(v[k].col, i);
+        }
+        run_batch(&o, c, v, 1, 0, &t, true);
+    }
+    printf("    slivers: 2000 triangles, %ld pixels, %ld differ\n", t.pixels, t.color_diff);
+    CHECK_EQ_INT(t.color_diff, 0);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+TEST_LIST = {
+    TEST_ENTRY(fill_convention),
+    TEST_ENTRY(random_small),
+    TEST_ENTRY(random_medium),
+    TEST_ENTRY(random_odd_size),
+    TEST_ENTRY(random_odd_size_gl_y),
+    TEST_ENTRY(slivers),
+    TEST_END
+};
+
+int main(int argc, char **argv)
+{
+    return check_main(argc, argv, test_list);
+}
