@@ -6,6 +6,7 @@
  * layout).  Other legal format/type pairs are counted as unsupported.
  * Depth conversions follow Mesa's (checked against OSMesa by the tests).
  */
+#include <math.h>
 #include "fragment_stages.h"
 
 /* Components per pixel of a GL 1.5 format, 0 if the enum is not a format. */
@@ -143,9 +144,11 @@ void fs_exec_ReadPixels(fs_context *c, GLint x, GLint y, GLsizei width, GLsizei 
                 uint32_t v = depth_to_uint(fb->depth[i], fb->depth_bits);
                 memcpy(out, &v, 4);
             } else if (type == GL_UNSIGNED_SHORT) {
-                /* Through float, then round to 16 bits as Mesa packs it. */
-                double f = (double)fb->depth[i] / (double)fb->depth_max;
-                uint16_t v = (uint16_t)(f * 65535.0 + 0.5);
+                /* Through the float value, then scaled and rounded in float
+                 * as Mesa packs it: the float rounding of f * 65535 can reach
+                 * a .5 tie that exact arithmetic would not. */
+                float f = (float)((double)fb->depth[i] / (double)fb->depth_max);
+                uint16_t v = (uint16_t)lrintf(f * 65535.0f);
                 memcpy(out, &v, 2);
             } else {
                 float v = (float)((double)fb->depth[i] / (double)fb->depth_max);

@@ -659,6 +659,389 @@ TEST(random_scene_vs_osmesa)
     osm_close(&o);
 }
 
+/* ------------------------------------------------------------------ clear */
+
+/* Clear colours (a sweep plus every rounding tie and its neighbours), both a
+ * full clear and a scissored, colour-masked one, since a GL implementation may
+ * take different routes for the two. */
+TEST(clear_color_vs_osmesa)
+{
+    enum { CW = 8, CH = 8 };
+    osm o;
+    REQUIRE(osm_open(&o, CW, CH));
+    fs_context *c = fs_context_create(NULL, CW, CH);
+    REQUIRE(c);
+    uint8_t ref[CW * CH * 4];
+    long diff = 0, total = 0;
+    for (int i = 0; i < 3000; i++) {
+        float v[4];
+        for (int k = 0; k < 4; k++) {
+            int j = i * 4 + k;
+            if (j < 4000) {
+                v[k] = (float)j / 3999.0f;
+            } else {
+                v[k] = ((float)((j / 16) % 255) + 0.5f) / 255.0f;
+                for (int t = 0; t < j % 16 - 8; t++) v[k] = nextafterf(v[k], 2.0f);
+                for (int t = 0; t < 8 - j % 16; t++) v[k] = nextafterf(v[k], -1.0f);
+            }
+        }
+        bool partial = i & 1;
+        glClearColor(v[0], v[1], v[2], v[3]);
+        fs_exec_ClearColor(c, v[0], v[1], v[2], v[3]);
+        gl_toggle(GL_SCISSOR_TEST, partial);
+        glScissor(1, 2, 5, 4);
+        glColorMask(1, 1, (GLboolean)!partial, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+        c->frag.scissor_enabled = partial;
+        fs_exec_Scissor(c, 1, 2, 5, 4);
+        fs_exec_ColorMask(c, 1, 1, (GLboolean)!partial, 1);
+        fs_exec_Clear(c, GL_COLOR_BUFFER_BIT);
+        osm_read_rgba(&o, ref);
+        int maxd;
+        long d = count_diff(ref, c->fb.color, sizeof ref, &maxd);
+        if (d && diff == 0)
+            fprintf(stderr, "  clear %.9g %.9g %.9g %.9g (%s): %ld bytes differ\n", v[0], v[1], v[2], v[3],
+                    partial ? "scissored" : "full", d);
+        diff += d;
+        total += (long)sizeof ref;
+    }
+    printf("  clear colour: %ld of %ld bytes differ from OSMesa\n", diff, total);
+    CHECK_EQ_INT(diff, 0);
+    glDisable(GL_SCISSOR_TEST);
+    glColorMask(1, 1, 1, 1);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+TEST(clear_depth_stencil_vs_osmesa)
+{
+    enum { CW = 8, CH = 8 };
+    osm o;
+    REQUIRE(osm_open(&o, CW, CH));
+    fs_context *c = fs_context_create(NULL, CW, CH);
+    REQUIRE(c);
+    uint32_t zref[CW * CH];
+    uint8_t sref[CW * CH];
+    long zd = 0, sd = 0, zd_scissored = 0;
+    uint32_t zmax_scissored = 0;
+    for (int i = 0; i < 2000; i++) {
+        double z = (double)i / 1999.0;
+        if (i % 3 == 1) z = ((double)(i * 8191 % 16777215) + 0.5) / 16777215.0; /* ties */
+        if (i % 3 == 2) z = nextafter((double)(i * 4099 % 16777215) / 16777215.0, 2.0);
+        bool partial = i & 1;
+        GLint sv = i * 7 - 300;
+        GLuint wm = partial ? 0x5au : 0xffu;
+        glClearDepth(z);
+        glClearStencil(sv);
+        glStencilMask(wm);
+        gl_toggle(GL_SCISSOR_TEST, partial);
+        glScissor(2, 1, 3, 6);
+        glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        fs_exec_ClearDepth(c, z);
+        fs_exec_ClearStencil(c, sv);
+        fs_exec_StencilMask(c, wm);
+        c->frag.scissor_enabled = partial;
+        fs_exec_Scissor(c, 2, 1, 3, 6);
+        fs_exec_Clear(c, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        osm_read_depth_raw(&o, zref);
+        osm_read_stencil(&o, sref);
+        long dz = 0, ds = 0;
+        for (int p = 0; p < CW * CH; p++) {
+            uint32_t e = zref[p] > c->fb.depth[p] ? zref[p] - c->fb.depth[p] : c->fb.depth[p] - zref[p];
+            if (partial) {
+                zd_scissored += e != 0;
+                if (e > zmax_scissored) zmax_scissored = e;
+            } else {
+                dz += e != 0;
+            }
+            ds += sref[p] != c->fb.stencil[p];
+        }
+        /* Keep the next scissored clear's outside pixels comparable. */
+        memcpy(c->fb.depth, zref, sizeof zref);
+        if ((dz || ds) && zd + sd == 0)
+            fprintf(stderr, "  clear depth %.17g (%s): osmesa 0x%x fragsim 0x%x; stencil %d\n", z,
+                    partial ? "scissored" : "full", zref[2 * CW + 2], c->fb.depth[2 * CW + 2], sv);
+        zd += dz;
+        sd += ds;
+    }
+    printf("  clear depth/stencil: full clears: %ld depth values differ; scissored clears: %ld of %d "
+           "depth values differ (max %u unit); %ld stencil values differ\n",
+           zd, zd_scissored, 1000 * CW * CH, zmax_scissored, sd);
+    CHECK_EQ_INT(zd, 0);
+    CHECK(zmax_scissored <= 1); /* known: llvmpipe's scissored clear rounds differently */
+    CHECK_EQ_INT(sd, 0);
+    glDisable(GL_SCISSOR_TEST);
+    glStencilMask(0xff);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+/* GL 4.2.3 closed form: clear writes exactly the scissor box (clipped to the
+ * window) through the write masks, ignores the per-fragment tests, and
+ * depth/stencil writes follow DepthMask/StencilMask. */
+TEST(clear_scissor_and_masks)
+{
+    fs_context *c = fs_context_create(NULL, 10, 7);
+    REQUIRE(c);
+    memset(c->fb.color, 0x11, 10 * 7 * 4);
+    memset(c->fb.stencil, 0xf0, 10 * 7);
+    for (int i = 0; i < 70; i++) c->fb.depth[i] = 5;
+    c->frag.scissor_enabled = true;
+    c->frag.depth_enabled = c->frag.stencil_enabled = c->frag.alpha_enabled = true;
+    c->frag.blend_enabled = c->frag.logic_op_enabled = true;
+    fs_exec_DepthFunc(c, GL_NEVER);
+    fs_exec_StencilFunc(c, GL_NEVER, 0, 0xff);
+    fs_exec_AlphaFunc(c, GL_NEVER, 0);
+    fs_exec_LogicOp(c, GL_NOOP);
+    fs_exec_Scissor(c, -2, 3, 5, 100); /* clipped to x 0..2, y 3..6 */
+    fs_exec_ColorMask(c, 1, 0, 1, 0);
+    fs_exec_ClearColor(c, 1.0f, 1.0f, 0.0f, 1.0f);
+    fs_exec_ClearStencil(c, 0x1ff); /* only the low 8 bits count */
+    fs_exec_StencilMask(c, 0x0f);
+    fs_exec_ClearDepth(c, 2.0); /* clamped to 1 */
+    fs_exec_DepthMask(c, GL_FALSE);
+    fs_exec_Clear(c, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT);
+    CHECK_EQ_INT(c->error, GL_NO_ERROR);
+    CHECK_EQ_INT(c->stats.clears, 1);
+    long bad = 0;
+    for (int y = 0; y < 7; y++) {
+        for (int x = 0; x < 10; x++) {
+            int i = y * 10 + x;
+            bool in = x < 3 && y >= 3;
+            const uint8_t *p = c->fb.color + i * 4;
+            uint8_t want[4] = {in ? 255 : 0x11, 0x11, in ? 0 : 0x11, 0x11};
+            bad += memcmp(p, want, 4) != 0;
+            bad += c->fb.stencil[i] != (in ? 0xff : 0xf0);
+            bad += c->fb.depth[i] != 5; /* depth mask off */
+        }
+    }
+    CHECK_EQ_INT(bad, 0);
+    fs_exec_DepthMask(c, GL_TRUE);
+    fs_exec_Clear(c, GL_DEPTH_BUFFER_BIT);
+    CHECK_EQ_UINT(c->fb.depth[3 * 10 + 0], 0xffffffu);
+    CHECK_EQ_UINT(c->fb.depth[3 * 10 + 3], 5);
+    /* An empty scissor box clears nothing. */
+    fs_exec_Scissor(c, 4, 4, 0, 3);
+    fs_exec_ColorMask(c, 1, 1, 1, 1);
+    fs_exec_Clear(c, GL_COLOR_BUFFER_BIT);
+    CHECK_EQ_INT(c->fb.color[(4 * 10 + 4) * 4 + 1], 0x11);
+    /* Without the scissor test the whole window is cleared. */
+    c->frag.scissor_enabled = false;
+    fs_exec_Clear(c, GL_COLOR_BUFFER_BIT);
+    CHECK_EQ_INT(c->fb.color[(6 * 10 + 9) * 4 + 1], 255);
+    CHECK_EQ_INT(c->fb.color[0], 255);
+    fs_context_destroy(c);
+}
+
+/* ------------------------------------------------------------- read pixels */
+
+/* Depth read back in every supported type, from identical depth contents. */
+TEST(read_pixels_depth_vs_osmesa)
+{
+    enum { RW = 64, RH = 32 };
+    osm o;
+    REQUIRE(osm_open(&o, RW, RH));
+    fs_context *c = fs_context_create(NULL, RW, RH);
+    REQUIRE(c);
+    int n = RW * RH;
+    float *xyz = malloc(sizeof(float) * 3 * (size_t)n), *col = malloc(sizeof(float) * 4 * (size_t)n);
+    uint32_t *a = malloc((size_t)n * 4), *b = malloc((size_t)n * 4);
+    REQUIRE(xyz && col && a && b);
+    uint32_t seed = 7;
+    for (int i = 0; i < n; i++) {
+        xyz[i * 3] = (float)(i % RW) + 0.5f;
+        xyz[i * 3 + 1] = (float)(i / RW) + 0.5f;
+        float z = rng_unit(&seed) * 2.0f - 1.0f;
+        if (i < 8) z = (i & 1) ? 1.0f : -1.0f; /* the extremes */
+        xyz[i * 3 + 2] = z;
+        col[i * 4] = col[i * 4 + 1] = col[i * 4 + 2] = col[i * 4 + 3] = 1.0f;
+    }
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    osm_points(n, xyz, col);
+    glDisable(GL_DEPTH_TEST);
+    osm_read_depth_raw(&o, c->fb.depth);
+    static const GLenum types[] = {GL_UNSIGNED_INT, GL_UNSIGNED_SHORT, GL_FLOAT};
+    for (int t = 0; t < 3; t++) {
+        size_t bytes = (size_t)n * (types[t] == GL_UNSIGNED_SHORT ? 2 : 4);
+        memset(a, 0, (size_t)n * 4);
+        memset(b, 0, (size_t)n * 4);
+        glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        glReadPixels(0, 0, RW, RH, GL_DEPTH_COMPONENT, types[t], a);
+        c->pack_alignment = 4;
+        fs_exec_ReadPixels(c, 0, 0, RW, RH, GL_DEPTH_COMPONENT, types[t], b);
+        CHECK_EQ_INT(c->error, GL_NO_ERROR);
+        int maxd;
+        long d = count_diff((uint8_t *)a, (uint8_t *)b, bytes, &maxd);
+        if (d) {
+            for (int i = 0; i < n; i++) {
+                uint32_t va = 0, vb = 0;
+                size_t sz = types[t] == GL_UNSIGNED_SHORT ? 2 : 4;
+                memcpy(&va, (uint8_t *)a + i * sz, sz);
+                memcpy(&vb, (uint8_t *)b + i * sz, sz);
+                if (va != vb) {
+                    fprintf(stderr, "  depth type 0x%x: raw 0x%06x osmesa 0x%08x fragsim 0x%08x\n", types[t],
+                            c->fb.depth[i], va, vb);
+                    break;
+                }
+            }
+        }
+        printf("  ReadPixels depth type 0x%x: %ld bytes differ from OSMesa\n", types[t], d);
+        CHECK_EQ_INT(d, 0);
+    }
+    free(xyz);
+    free(col);
+    free(a);
+    free(b);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+/* Row layout with GL_PACK_ALIGNMENT (GL 1.5 spec 3.6.4/4.3.2), clipping at the
+ * window edge, and the byte count helper. */
+TEST(read_pixels_layout)
+{
+    fs_context *c = fs_context_create(NULL, 5, 4);
+    REQUIRE(c);
+    for (int i = 0; i < 20; i++) {
+        for (int k = 0; k < 4; k++) c->fb.color[i * 4 + k] = (uint8_t)(i * 4 + k);
+        c->fb.stencil[i] = (uint8_t)(200 + i);
+        c->fb.depth[i] = (uint32_t)i * 0x10101u;
+    }
+    static const int aligns[] = {1, 2, 4, 8};
+    for (int ai = 0; ai < 4; ai++) {
+        int al = aligns[ai];
+        c->pack_alignment = al;
+        /* 3 stencil bytes per row: stride rounds 3 up to the alignment. */
+        int stride = (3 + al - 1) / al * al;
+        CHECK_EQ_INT(fs_readpixels_bytes(c, 3, 2, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE), stride + 3);
+        uint8_t buf[64];
+        memset(buf, 0xee, sizeof buf);
+        fs_exec_ReadPixels(c, 1, 1, 3, 2, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, buf);
+        for (int y = 0; y < 2; y++)
+            for (int x = 0; x < 3; x++)
+                CHECK_EQ_INT(buf[y * stride + x], 200 + (y + 1) * 5 + x + 1);
+        for (int p = 3; p < stride; p++)
+            CHECK_EQ_INT(buf[p], 0xee); /* padding untouched */
+        CHECK_EQ_INT(buf[stride + 3], 0xee);
+        /* 3 RGBA pixels = 12 bytes: stride 16 only for alignment 8. */
+        int rs = (12 + al - 1) / al * al;
+        CHECK_EQ_INT(fs_readpixels_bytes(c, 3, 3, GL_RGBA, GL_UNSIGNED_BYTE), rs * 2 + 12);
+        memset(buf, 0xee, sizeof buf);
+        fs_exec_ReadPixels(c, 2, 0, 3, 3, GL_RGBA, GL_UNSIGNED_BYTE, buf);
+        for (int y = 0; y < 3; y++)
+            for (int x = 0; x < 12; x++)
+                CHECK_EQ_INT(buf[y * rs + x], ((y * 5 + 2) * 4 + x) & 255);
+    }
+    /* Partly outside the window: outside pixels are left alone. */
+    c->pack_alignment = 1;
+    uint8_t b2[4 * 4];
+    memset(b2, 0xee, sizeof b2);
+    fs_exec_ReadPixels(c, 4, 3, 2, 2, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, b2);
+    CHECK_EQ_INT(b2[0], 200 + 3 * 5 + 4);
+    CHECK_EQ_INT(b2[1], 0xee);
+    CHECK_EQ_INT(b2[2], 0xee);
+    CHECK_EQ_INT(b2[3], 0xee);
+    /* 24-bit depth as GL_UNSIGNED_INT: the top bits replicate down, so the
+     * maximum reads as 0xffffffff. */
+    c->fb.depth[0] = 0xffffff;
+    c->fb.depth[1] = 0x800000;
+    uint32_t z[2];
+    fs_exec_ReadPixels(c, 0, 0, 2, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, z);
+    CHECK_EQ_UINT(z[0], 0xffffffffu);
+    CHECK_EQ_UINT(z[1], 0x80000080u);
+    float fz[2];
+    fs_exec_ReadPixels(c, 0, 0, 2, 1, GL_DEPTH_COMPONENT, GL_FLOAT, fz);
+    CHECK(fz[0] == 1.0f);
+    CHECK_NEAR(fz[1], 0x800000 / 16777215.0, 1e-7);
+    CHECK_EQ_INT(fs_readpixels_bytes(c, 2, 2, GL_DEPTH_COMPONENT, GL_FLOAT), 16);
+    CHECK_EQ_INT(fs_readpixels_bytes(c, -1, 2, GL_RGBA, GL_UNSIGNED_BYTE), 0);
+    CHECK_EQ_INT(fs_readpixels_bytes(c, 2, 2, 0x1234, GL_UNSIGNED_BYTE), 0);
+    /* A legal pair fragsim does not read is counted, not an error. */
+    fs_exec_ReadPixels(c, 0, 0, 1, 1, GL_RGB, GL_FLOAT, fz);
+    CHECK_EQ_INT(c->error, GL_NO_ERROR);
+    CHECK_EQ_INT(c->stats.unsupported_calls, 1);
+    fs_context_destroy(c);
+}
+
+/* --------------------------------------------------------------- GL errors */
+
+typedef struct err_case {
+    const char *what;
+    int cmd;
+} err_case;
+
+/* Runs call number i on OSMesa (gl) or fragsim (c != NULL). */
+static void error_call(fs_context *c, int i, void *buf)
+{
+#define BOTH(glcall, fscall) do { if (c) fscall; else glcall; } while (0)
+    switch (i) {
+    case 0: BOTH(glScissor(0, 0, -1, 5), fs_exec_Scissor(c, 0, 0, -1, 5)); break;
+    case 1: BOTH(glScissor(0, 0, 4, -5), fs_exec_Scissor(c, 0, 0, 4, -5)); break;
+    case 2: BOTH(glAlphaFunc(GL_ZERO, 0.5f), fs_exec_AlphaFunc(c, GL_ZERO, 0.5f)); break;
+    case 3: BOTH(glAlphaFunc(GL_ALWAYS + 1, 0.5f), fs_exec_AlphaFunc(c, GL_ALWAYS + 1, 0.5f)); break;
+    case 4: BOTH(glStencilFunc(GL_KEEP, 1, 1), fs_exec_StencilFunc(c, GL_KEEP, 1, 1)); break;
+    case 5: BOTH(glStencilOp(GL_LESS, GL_KEEP, GL_KEEP), fs_exec_StencilOp(c, GL_LESS, GL_KEEP, GL_KEEP)); break;
+    case 6: BOTH(glStencilOp(GL_KEEP, 0x1234, GL_KEEP), fs_exec_StencilOp(c, GL_KEEP, 0x1234, GL_KEEP)); break;
+    case 7: BOTH(glStencilOp(GL_KEEP, GL_KEEP, GL_ONE), fs_exec_StencilOp(c, GL_KEEP, GL_KEEP, GL_ONE)); break;
+    case 8: BOTH(glDepthFunc(GL_NEVER - 1), fs_exec_DepthFunc(c, GL_NEVER - 1)); break;
+    case 9: BOTH(glBlendFunc(GL_LESS, GL_ONE), fs_exec_BlendFunc(c, GL_LESS, GL_ONE)); break;
+    case 10: BOTH(glBlendFunc(GL_ONE, 0x1234), fs_exec_BlendFunc(c, GL_ONE, 0x1234)); break;
+    case 11: BOTH(glLogicOp(GL_SET + 1), fs_exec_LogicOp(c, GL_SET + 1)); break;
+    case 12: BOTH(glLogicOp(GL_CLEAR - 1), fs_exec_LogicOp(c, GL_CLEAR - 1)); break;
+    case 13: BOTH(glClear(0x1), fs_exec_Clear(c, 0x1)); break;
+    case 14: BOTH(glClear(GL_COLOR_BUFFER_BIT | 0x80000000u), fs_exec_Clear(c, GL_COLOR_BUFFER_BIT | 0x80000000u)); break;
+    case 15: BOTH(glReadPixels(0, 0, 1, 1, 0x1234, GL_UNSIGNED_BYTE, buf),
+                  fs_exec_ReadPixels(c, 0, 0, 1, 1, 0x1234, GL_UNSIGNED_BYTE, buf)); break;
+    case 16: BOTH(glReadPixels(0, 0, 1, 1, GL_RGBA, 0x1234, buf),
+                  fs_exec_ReadPixels(c, 0, 0, 1, 1, GL_RGBA, 0x1234, buf)); break;
+    case 17: BOTH(glReadPixels(0, 0, -1, 1, GL_RGBA, GL_UNSIGNED_BYTE, buf),
+                  fs_exec_ReadPixels(c, 0, 0, -1, 1, GL_RGBA, GL_UNSIGNED_BYTE, buf)); break;
+    case 18: BOTH(glReadPixels(0, 0, 1, -1, GL_DEPTH_COMPONENT, GL_FLOAT, buf),
+                  fs_exec_ReadPixels(c, 0, 0, 1, -1, GL_DEPTH_COMPONENT, GL_FLOAT, buf)); break;
+    case 19: BOTH(glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_SHORT_5_6_5, buf),
+                  fs_exec_ReadPixels(c, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_SHORT_5_6_5, buf)); break;
+    case 20: BOTH(glReadPixels(0, 0, 1, 1, GL_RGBA, GL_BITMAP, buf),
+                  fs_exec_ReadPixels(c, 0, 0, 1, 1, GL_RGBA, GL_BITMAP, buf)); break;
+    /* Valid calls: no error. */
+    case 21: BOTH(glBlendFunc(GL_SRC_ALPHA_SATURATE, GL_ONE), fs_exec_BlendFunc(c, GL_SRC_ALPHA_SATURATE, GL_ONE)); break;
+    case 22: BOTH(glStencilOp(GL_INCR_WRAP, GL_DECR_WRAP, GL_INVERT), fs_exec_StencilOp(c, GL_INCR_WRAP, GL_DECR_WRAP, GL_INVERT)); break;
+    case 23: BOTH(glClear(GL_ACCUM_BUFFER_BIT), fs_exec_Clear(c, GL_ACCUM_BUFFER_BIT)); break;
+    case 24: BOTH(glScissor(-5, -5, 0, 0), fs_exec_Scissor(c, -5, -5, 0, 0)); break;
+    case 25: BOTH(glReadPixels(0, 0, 0, 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, buf),
+                  fs_exec_ReadPixels(c, 0, 0, 0, 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, buf)); break;
+    default: break;
+    }
+#undef BOTH
+}
+#define N_ERROR_CASES 26
+
+/* Each erroneous call raises the same error as Mesa and changes no state. */
+TEST(gl_errors_match_osmesa)
+{
+    osm o;
+    REQUIRE(osm_open(&o, 8, 8));
+    fs_context *c = fs_context_create(NULL, 8, 8);
+    REQUIRE(c);
+    uint8_t buf[64];
+    while (glGetError() != GL_NO_ERROR) {}
+    for (int i = 0; i < N_ERROR_CASES; i++) {
+        error_call(NULL, i, buf);
+        GLenum want = glGetError();
+        fs_fragment_state before = c->frag;
+        c->error = GL_NO_ERROR;
+        error_call(c, i, buf);
+        if (c->error != want)
+            fprintf(stderr, "  error case %d: osmesa 0x%x fragsim 0x%x\n", i, want, c->error);
+        CHECK_EQ_INT(c->error, want);
+        if (want != GL_NO_ERROR)
+            CHECK(memcmp(&before, &c->frag, sizeof before) == 0);
+    }
+    CHECK(c->stats.gl_errors > 0);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
 TEST_LIST = {
     TEST_ENTRY(color_conversion_vs_osmesa),
     TEST_ENTRY(blend_all_factor_pairs_vs_osmesa),
@@ -666,6 +1049,12 @@ TEST_LIST = {
     TEST_ENTRY(alpha_test_vs_osmesa),
     TEST_ENTRY(logic_ops_vs_osmesa),
     TEST_ENTRY(random_scene_vs_osmesa),
+    TEST_ENTRY(clear_color_vs_osmesa),
+    TEST_ENTRY(clear_depth_stencil_vs_osmesa),
+    TEST_ENTRY(clear_scissor_and_masks),
+    TEST_ENTRY(read_pixels_depth_vs_osmesa),
+    TEST_ENTRY(read_pixels_layout),
+    TEST_ENTRY(gl_errors_match_osmesa),
     TEST_END,
 };
 
