@@ -1042,6 +1042,413 @@ TEST(gl_errors_match_osmesa)
     osm_close(&o);
 }
 
+/* ------------------------------------------------- closed-form stage rules */
+
+/* Stencil ops (GL 1.5 spec 4.1.5): INCR/DECR saturate, the _WRAP forms wrap,
+ * INVERT flips, REPLACE writes the clamped reference, all through the write
+ * mask; the test compares (ref & mask) with (stored & mask). */
+TEST(stencil_ops_closed_form)
+{
+    fs_context *c = fs_context_create(NULL, 2, 2);
+    REQUIRE(c);
+    static const int stored_vals[] = {0, 1, 127, 128, 254, 255};
+    static const GLuint wmasks[] = {0xffffffffu, 0x0f, 0xf0, 0};
+    static const GLint refs[] = {-5, 0, 77, 255, 1000};
+    long bad = 0;
+    float white[4] = {1, 1, 1, 1};
+    c->frag.stencil_enabled = true;
+    for (int oi = 0; oi < 8; oi++) {
+        GLenum op = k_sops[oi];
+        for (size_t si = 0; si < 6; si++) {
+            for (size_t wi = 0; wi < 4; wi++) {
+                for (size_t ri = 0; ri < 5; ri++) {
+                    unsigned s0 = (unsigned)stored_vals[si], wm = wmasks[wi] & 255u;
+                    unsigned ref = (unsigned)(refs[ri] < 0 ? 0 : refs[ri] > 255 ? 255 : refs[ri]);
+                    unsigned v;
+                    switch (op) {
+                    case GL_ZERO: v = 0; break;
+                    case GL_REPLACE: v = ref; break;
+                    case GL_INCR: v = s0 == 255 ? 255 : s0 + 1; break;
+                    case GL_DECR: v = s0 == 0 ? 0 : s0 - 1; break;
+                    case GL_INVERT: v = 255 - s0; break;
+                    case GL_INCR_WRAP: v = (s0 + 1) % 256; break;
+                    case GL_DECR_WRAP: v = (s0 + 255) % 256; break;
+                    default: v = s0; break;
+                    }
+                    unsigned want = (s0 & ~wm & 255u) | (v & wm);
+                    /* zpass: stencil ALWAYS, depth off */
+                    fs_exec_StencilFunc(c, GL_ALWAYS, refs[ri], 0xff);
+                    fs_exec_StencilOp(c, GL_KEEP, GL_KEEP, op);
+                    fs_exec_StencilMask(c, wmasks[wi]);
+                    c->frag.depth_enabled = false;
+                    c->fb.stencil[0] = (uint8_t)s0;
+                    frag_pixel(c, 0, 0, white, 0);
+                    bad += c->fb.stencil[0] != want;
+                    /* fail: stencil NEVER */
+                    fs_exec_StencilFunc(c, GL_NEVER, refs[ri], 0xff);
+                    fs_exec_StencilOp(c, op, GL_KEEP, GL_KEEP);
+                    c->fb.stencil[1] = (uint8_t)s0;
+                    frag_pixel(c, 1, 0, white, 0);
+                    bad += c->fb.stencil[1] != want;
+                    /* zfail: stencil ALWAYS, depth NEVER */
+                    fs_exec_StencilFunc(c, GL_ALWAYS, refs[ri], 0xff);
+                    fs_exec_StencilOp(c, GL_KEEP, op, GL_KEEP);
+                    c->frag.depth_enabled = true;
+                    fs_exec_DepthFunc(c, GL_NEVER);
+                    c->fb.stencil[2] = (uint8_t)s0;
+                    frag_pixel(c, 0, 1, white, 0);
+                    bad += c->fb.stencil[2] != want;
+                }
+            }
+        }
+    }
+    CHECK_EQ_INT(bad, 0);
+    /* Functions with a value mask. */
+    c->frag.depth_enabled = false;
+    fs_exec_StencilOp(c, GL_KEEP, GL_KEEP, GL_KEEP);
+    bad = 0;
+    for (int f = 0; f < 8; f++) {
+        for (unsigned st = 0; st < 256; st += 17) {
+            for (int r = -3; r < 300; r += 37) {
+                GLuint vm = (GLuint)(r * 2654435761u) | 0x3u;
+                unsigned rr = (unsigned)(r < 0 ? 0 : r > 255 ? 255 : r) & vm, ss = st & vm;
+                bool want;
+                switch (k_funcs[f]) {
+                case GL_NEVER: want = false; break;
+                case GL_LESS: want = rr < ss; break;
+                case GL_EQUAL: want = rr == ss; break;
+                case GL_LEQUAL: want = rr <= ss; break;
+                case GL_GREATER: want = rr > ss; break;
+                case GL_NOTEQUAL: want = rr != ss; break;
+                case GL_GEQUAL: want = rr >= ss; break;
+                default: want = true; break;
+                }
+                fs_exec_StencilFunc(c, k_funcs[f], r, vm);
+                c->fb.stencil[3] = (uint8_t)st;
+                memset(c->fb.color + 12, 0, 4);
+                frag_pixel(c, 1, 1, white, 0);
+                bad += (c->fb.color[12] == 255) != want;
+            }
+        }
+    }
+    CHECK_EQ_INT(bad, 0);
+    CHECK(c->stats.killed_stencil > 0);
+    fs_context_destroy(c);
+}
+
+/* Depth functions (4.1.6) and the depth mask, with the unsigned compare at
+ * the ends of the range; a disabled depth test writes no depth. */
+TEST(depth_funcs_closed_form)
+{
+    fs_context *c = fs_context_create(NULL, 2, 2);
+    REQUIRE(c);
+    static const uint32_t vals[] = {0, 1, 0x7fffff, 0x800000, 0xfffffe, 0xffffff};
+    float col[4] = {1, 0, 0, 1};
+    long bad = 0;
+    c->frag.depth_enabled = true;
+    for (int f = 0; f < 8; f++) {
+        for (int a = 0; a < 6; a++) {
+            for (int b = 0; b < 6; b++) {
+                for (int wr = 0; wr < 2; wr++) {
+                    uint32_t z = vals[a], st = vals[b];
+                    bool want;
+                    switch (k_funcs[f]) {
+                    case GL_NEVER: want = false; break;
+                    case GL_LESS: want = z < st; break;
+                    case GL_EQUAL: want = z == st; break;
+                    case GL_LEQUAL: want = z <= st; break;
+                    case GL_GREATER: want = z > st; break;
+                    case GL_NOTEQUAL: want = z != st; break;
+                    case GL_GEQUAL: want = z >= st; break;
+                    default: want = true; break;
+                    }
+                    fs_exec_DepthFunc(c, k_funcs[f]);
+                    fs_exec_DepthMask(c, (GLboolean)wr);
+                    /* LESS/LEQUAL take the fast path here (the quad is
+                     * inside the window); the others the general one. */
+                    c->fb.depth[3] = st;
+                    memset(c->fb.color + 12, 0, 4);
+                    uint64_t passed0 = c->stats.fragments_passed_depth;
+                    frag_pixel(c, 1, 1, col, z);
+                    bool passed = c->fb.color[12] == 255;
+                    bad += passed != want;
+                    bad += (c->stats.fragments_passed_depth - passed0) != (uint64_t)want;
+                    bad += c->fb.depth[3] != (want && wr ? z : st);
+                }
+            }
+        }
+    }
+    CHECK_EQ_INT(bad, 0);
+    c->frag.depth_enabled = false;
+    fs_exec_DepthFunc(c, GL_NEVER);
+    c->fb.depth[0] = 9;
+    frag_pixel(c, 0, 0, col, 3);
+    CHECK_EQ_INT(c->fb.depth[0], 9);
+    CHECK_EQ_INT(c->fb.color[0], 255);
+    fs_context_destroy(c);
+}
+
+/* Logic ops (4.1.10, table 4.4): opcode - GL_CLEAR is the truth table, bit
+ * (1-s)*2 + (1-d) giving the result for source bit s and destination bit d. */
+TEST(logic_op_truth_table)
+{
+    fs_context *c = fs_context_create(NULL, 2, 2);
+    REQUIRE(c);
+    c->frag.logic_op_enabled = true;
+    long bad = 0;
+    for (GLenum op = GL_CLEAR; op <= GL_SET; op++) {
+        unsigned table = op - GL_CLEAR;
+        fs_exec_LogicOp(c, op);
+        for (unsigned sv = 0; sv < 256; sv += 5) {
+            for (unsigned dv = 0; dv < 256; dv += 3) {
+                float col[4] = {(float)sv / 255.0f, (float)sv / 255.0f, 0.0f, 1.0f};
+                memset(c->fb.color, (int)dv, 4);
+                frag_pixel(c, 0, 0, col, 0);
+                unsigned want = 0;
+                for (int bit = 0; bit < 8; bit++) {
+                    unsigned s1 = sv >> bit & 1u, d1 = dv >> bit & 1u;
+                    want |= (table >> ((1u - s1) * 2u + (1u - d1)) & 1u) << bit;
+                }
+                bad += c->fb.color[0] != want;
+            }
+        }
+    }
+    CHECK_EQ_INT(bad, 0);
+    fs_context_destroy(c);
+}
+
+/* Scissor (4.1.2), pixel ownership (4.1.1), colour mask (4.2.2) and the kill
+ * counters, on whole quads. */
+TEST(scissor_ownership_masks)
+{
+    fs_context *c = fs_context_create(NULL, 5, 5);
+    REQUIRE(c);
+    fs_quad q;
+    memset(&q, 0, sizeof q);
+    for (int i = 0; i < 4; i++) {
+        q.color[i][0] = 1.0f;
+        q.color[i][1] = 0.5f;
+        q.color[i][3] = 1.0f;
+    }
+    /* Quad at (4,4): only pixel 0 is inside the 5x5 window. */
+    q.x = 4;
+    q.y = 4;
+    q.mask = 0xf;
+    fs_fragment_quad(c, &q);
+    CHECK_EQ_INT(c->stats.killed_ownership, 3);
+    CHECK_EQ_INT(c->stats.fragments_written, 1);
+    CHECK_EQ_INT(c->fb.color[(4 * 5 + 4) * 4], 255);
+    /* Negative quad position. */
+    q.x = -2;
+    q.y = 0;
+    fs_fragment_quad(c, &q);
+    CHECK_EQ_INT(c->stats.killed_ownership, 7);
+    /* Scissor box (1,1) 1x2: of the quad at (0,0) only pixel 3 survives;
+     * of the quad at (0,2) only pixel 1. */
+    c->frag.scissor_enabled = true;
+    fs_exec_Scissor(c, 1, 1, 1, 2);
+    q.x = 0;
+    q.y = 0;
+    fs_fragment_quad(c, &q);
+    q.y = 2;
+    fs_fragment_quad(c, &q);
+    CHECK_EQ_INT(c->stats.killed_scissor, 6);
+    CHECK_EQ_INT(c->fb.color[(1 * 5 + 1) * 4], 255);
+    CHECK_EQ_INT(c->fb.color[(2 * 5 + 1) * 4], 255);
+    CHECK_EQ_INT(c->fb.color[(1 * 5 + 0) * 4], 0);
+    CHECK_EQ_INT(c->fb.color[(2 * 5 + 0) * 4], 0);
+    /* Colour mask: only green written. */
+    c->frag.scissor_enabled = false;
+    fs_exec_ColorMask(c, 0, 1, 0, 0);
+    q.x = 2;
+    q.y = 0;
+    q.mask = 0x1;
+    fs_fragment_quad(c, &q);
+    CHECK_EQ_INT(c->fb.color[2 * 4 + 0], 0);
+    CHECK_EQ_INT(c->fb.color[2 * 4 + 1], 128);
+    CHECK_EQ_INT(c->fb.color[2 * 4 + 3], 0);
+    /* Alpha test kills count too. */
+    fs_exec_ColorMask(c, 1, 1, 1, 1);
+    c->frag.alpha_enabled = true;
+    fs_exec_AlphaFunc(c, GL_LESS, 0.5f);
+    q.mask = 0xf;
+    fs_fragment_quad(c, &q);
+    CHECK_EQ_INT(c->stats.killed_alpha, 4);
+    fs_context_destroy(c);
+}
+
+/* GL state defaults (GL 1.5 spec tables 6.19-6.21). */
+TEST(fragment_state_defaults)
+{
+    fs_fragment_state f;
+    memset(&f, 0x5a, sizeof f);
+    fs_fragment_state_init(&f);
+    CHECK(!f.scissor_enabled && !f.alpha_enabled && !f.stencil_enabled && !f.depth_enabled);
+    CHECK(!f.blend_enabled && !f.logic_op_enabled && f.dither_enabled);
+    CHECK_EQ_INT(f.alpha_func, GL_ALWAYS);
+    CHECK_EQ_INT(f.stencil_func, GL_ALWAYS);
+    CHECK_EQ_UINT(f.stencil_value_mask, 0xffffffffu);
+    CHECK_EQ_UINT(f.stencil_write_mask, 0xffffffffu);
+    CHECK_EQ_INT(f.stencil_fail, GL_KEEP);
+    CHECK_EQ_INT(f.depth_func, GL_LESS);
+    CHECK(f.depth_write);
+    CHECK_EQ_INT(f.blend_src, GL_ONE);
+    CHECK_EQ_INT(f.blend_dst, GL_ZERO);
+    CHECK_EQ_INT(f.logic_op, GL_COPY);
+    CHECK(f.color_mask[0] && f.color_mask[3]);
+    CHECK(f.clear_depth == 1.0);
+    CHECK_EQ_INT(f.clear_stencil, 0);
+}
+
+/* Occlusion Unit attachment point: called once per quad that reaches it,
+ * with the masks that reached and passed the depth test. */
+typedef struct hook_log { int calls; unsigned tested, passed; } hook_log;
+static void log_hook(fs_context *c, void *user, const fs_quad *q, unsigned tested, unsigned passed)
+{
+    (void)c;
+    (void)q;
+    hook_log *l = user;
+    l->calls++;
+    l->tested = tested;
+    l->passed = passed;
+}
+
+TEST(occlusion_hook)
+{
+    for (int general = 0; general < 2; general++) {
+        fs_context *c = fs_context_create(NULL, 4, 4);
+        REQUIRE(c);
+        hook_log log = {0, 0, 0};
+        c->occlusion_hook = log_hook;
+        c->occlusion_user = &log;
+        c->frag.depth_enabled = true;
+        c->frag.stencil_enabled = general; /* forces the general path */
+        for (int i = 0; i < 16; i++) c->fb.depth[i] = 100;
+        fs_quad q;
+        memset(&q, 0, sizeof q);
+        q.mask = 0xb;
+        q.z[0] = 50;
+        q.z[1] = 150;
+        q.z[3] = 99;
+        fs_fragment_quad(c, &q);
+        CHECK_EQ_INT(log.calls, 1);
+        CHECK_EQ_UINT(log.tested, 0xb);
+        CHECK_EQ_UINT(log.passed, 0x9);
+        CHECK_EQ_INT(c->stats.fragments_passed_depth, 2);
+        CHECK_EQ_INT(c->stats.killed_depth, 1);
+        fs_context_destroy(c);
+    }
+}
+
+/* ------------------------------------------------ fast paths == general path */
+
+static void random_quad(fs_quad *q, uint32_t *seed, int w, int h)
+{
+    memset(q, 0, sizeof *q);
+    q->x = (int)(rng_next(seed) % (unsigned)(w + 2)) - 2;
+    q->y = (int)(rng_next(seed) % (unsigned)(h + 2)) - 2;
+    q->x &= ~1;
+    q->y &= ~1;
+    q->mask = rng_next(seed) & 0xf;
+    for (int i = 0; i < 4; i++) {
+        q->z[i] = rng_next(seed) & 0xffffff;
+        if (rng_next(seed) % 4 == 0) q->z[i] = 0x800000;
+        for (int k = 0; k < 4; k++) q->color[i][k] = rng_unit(seed);
+    }
+}
+
+TEST(fast_paths_equal_general)
+{
+    enum { FW = 20, FH = 14 };
+    fs_context *a = fs_context_create(NULL, FW, FH), *b = fs_context_create(NULL, FW, FH);
+    REQUIRE(a && b);
+    uint32_t seed = 4242;
+    long bad = 0;
+    for (int round = 0; round < 200; round++) {
+        scene_state s;
+        random_state(&s, &seed, FW, FH);
+        /* Mostly the states the fast paths take. */
+        if (round % 3 != 2) {
+            s.stencil = s.alpha = s.blend = s.logic = s.scissor = false;
+            s.cmask[0] = s.cmask[1] = s.cmask[2] = s.cmask[3] = 1;
+            s.depth_mask = round % 5 != 0;
+            s.depth_func = (round & 1) ? GL_LESS : GL_LEQUAL;
+        }
+        apply_fragsim(a, &s);
+        apply_fragsim(b, &s);
+        for (int i = 0; i < 300; i++) {
+            fs_quad q, q2;
+            random_quad(&q, &seed, FW, FH);
+            q2 = q;
+            fs_fragment_quad(a, &q);
+            fs_fragment_quad_general(b, &q2);
+        }
+        bad += memcmp(a->fb.color, b->fb.color, FW * FH * 4) != 0;
+        bad += memcmp(a->fb.depth, b->fb.depth, FW * FH * 4) != 0;
+        bad += memcmp(a->fb.stencil, b->fb.stencil, FW * FH) != 0;
+        bad += memcmp(&a->stats, &b->stats, sizeof a->stats) != 0;
+    }
+    CHECK_EQ_INT(bad, 0);
+    CHECK(a->stats.fragments_written > 10000);
+    fs_context_destroy(a);
+    fs_context_destroy(b);
+}
+
+/* Throughput of the per-fragment stage on the common opaque state (depth
+ * LESS with writes), half the fragments passing.  The whole pipeline target
+ * is 55 Mfragments/s, so this stage alone must be well above it. */
+TEST(throughput)
+{
+#if defined(__SANITIZE_ADDRESS__)
+    SKIP("sanitizer build");
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+    SKIP("sanitizer build");
+#endif
+#endif
+    enum { TW = 256, TH = 256 };
+    fs_context *c = fs_context_create(NULL, TW, TH);
+    REQUIRE(c);
+    c->frag.depth_enabled = true;
+    enum { NQ = 4096 };
+    fs_quad *qs = malloc(sizeof(fs_quad) * NQ);
+    REQUIRE(qs);
+    uint32_t seed = 77;
+    for (int i = 0; i < NQ; i++) {
+        random_quad(&qs[i], &seed, TW - 2, TH - 2);
+        if (qs[i].x < 0) qs[i].x = 0;
+        if (qs[i].y < 0) qs[i].y = 0;
+        qs[i].mask = 0xf;
+    }
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    long frags = 0;
+    for (int rep = 0; rep < 600; rep++) {
+        for (int i = 0; i < NQ; i++) {
+            qs[i].z[0] ^= 0x400000; /* keep the outcomes mixed */
+            fs_fragment_quad(c, &qs[i]);
+        }
+        frags += NQ * 4;
+    }
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    double sec = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    double rate = (double)frags / sec;
+    /* The same with blending (general path) for information. */
+    c->frag.blend_enabled = true;
+    fs_exec_BlendFunc(c, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    for (int rep = 0; rep < 100; rep++)
+        for (int i = 0; i < NQ; i++)
+            fs_fragment_quad(c, &qs[i]);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    double sec2 = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    printf("  fragment ops: %.1f Mfragments/s (depth LESS+write), %.1f Mfragments/s (blend, general path)\n",
+           rate / 1e6, (double)NQ * 4 * 100 / sec2 / 1e6);
+    CHECK(rate > 55e6);
+    free(qs);
+    fs_context_destroy(c);
+}
+
 TEST_LIST = {
     TEST_ENTRY(color_conversion_vs_osmesa),
     TEST_ENTRY(blend_all_factor_pairs_vs_osmesa),
@@ -1055,6 +1462,14 @@ TEST_LIST = {
     TEST_ENTRY(read_pixels_depth_vs_osmesa),
     TEST_ENTRY(read_pixels_layout),
     TEST_ENTRY(gl_errors_match_osmesa),
+    TEST_ENTRY(stencil_ops_closed_form),
+    TEST_ENTRY(depth_funcs_closed_form),
+    TEST_ENTRY(logic_op_truth_table),
+    TEST_ENTRY(scissor_ownership_masks),
+    TEST_ENTRY(fragment_state_defaults),
+    TEST_ENTRY(occlusion_hook),
+    TEST_ENTRY(fast_paths_equal_general),
+    TEST_ENTRY(throughput),
     TEST_END,
 };
 
