@@ -369,6 +369,112 @@ TEST(writer_rejects_bad_values)
     CHECK(strstr(err, "/nonexistent-dir/x.trace") != NULL);
 }
 
+/* apitrace reads every value type our writer writes. */
+TEST(apitrace_dump_reads_every_value_type)
+{
+    if (!have_cmd("apitrace"))
+        SKIP("apitrace is not installed");
+    char path[512], err[600], cmd[700], line[4096];
+    tmp_path(path, sizeof path, "values.trace");
+    fs_trace_writer *w = fs_trace_create(path, err, sizeof err);
+    REQUIRE(w != NULL);
+    static const char *const mn[] = {"first", "second"};
+    static const fs_tsig ss = {"pair", 2, mn, NULL};
+    static const char *const bn[] = {"BIT_0", "BIT_3"};
+    static const int64_t bv[] = {1, 8};
+    static const fs_tsig bs = {NULL, 2, bn, bv};
+    fs_tval m[2] = {{.type = FS_TV_UINT, .u = 11}, {.type = FS_TV_DOUBLE, .d = -2.5}};
+    fs_tval rp[2] = {{.type = FS_TV_STRING, .str = {"human", 5}}, {.type = FS_TV_UINT, .u = 42}};
+    fs_tval wc[2] = {{.type = FS_TV_UINT, .u = 0x41}, {.type = FS_TV_UINT, .u = 0x3b1}};
+    fs_tval ar[2] = {{.type = FS_TV_FLOAT, .d = 0.5}, {.type = FS_TV_NULL}};
+    fs_tval v[11] = {
+        {.type = FS_TV_STRUCT, .arr = {m, 2}, .sig = &ss},
+        {.type = FS_TV_REPR, .arr = {rp, 2}},
+        {.type = FS_TV_WSTRING, .arr = {wc, 2}},
+        {.type = FS_TV_BITMASK, .u = 9, .sig = &bs},
+        {.type = FS_TV_ENUM, .i = 0x12345},
+        {.type = FS_TV_SINT, .i = -7},
+        {.type = FS_TV_TRUE},
+        {.type = FS_TV_OPAQUE, .u = 0x1234},
+        {.type = FS_TV_BLOB, .str = {"abc", 3}},
+        {.type = FS_TV_ARRAY, .arr = {ar, 2}},
+        {.type = FS_TV_ENUM, .i = GL_FLOAT, .enum_name = "GL_FLOAT"},
+    };
+    static const char *const an[11] = {"s", "r", "w", "b", "e", "i", "t", "o", "bl", "a", "n"};
+    fs_tcall c;
+    memset(&c, 0, sizeof c);
+    c.name = "glTest";
+    c.nargs = 11;
+    c.arg_names = an;
+    c.args = v;
+    c.has_ret = 1;
+    c.ret.type = FS_TV_FLOAT;
+    c.ret.d = 0.1;
+    CHECK_EQ_INT(fs_trace_write(w, &c), 0);
+    c.flags = FS_TCALL_FAKE;
+    CHECK_EQ_INT(fs_trace_write(w, &c), 0);
+    CHECK_EQ_INT(fs_trace_finish(w), 0);
+    snprintf(cmd, sizeof cmd, "apitrace dump --color=never --verbose '%s' 2>&1", path);
+    FILE *p = popen(cmd, "r");
+    REQUIRE(p != NULL);
+    const char *body = "glTest(s = {first = 11, second = -2.5}, r = \"human\", w = L\"A\\661\", "
+                       "b = BIT_0 | BIT_3, e = 74565, i = -7, t = true, o = 0x1234, bl = blob(3), "
+                       "a = {0.5, NULL}, n = GL_FLOAT) = 0.1";
+    char want[2][512];
+    snprintf(want[0], sizeof want[0], "0 %s", body);
+    snprintf(want[1], sizeof want[1], "1 %s // fake", body);
+    int n = 0;
+    while (fgets(line, sizeof line, p)) {
+        line[strcspn(line, "\n")] = '\0';
+        if (line[0] == '\0' || strncmp(line, "//", 2) == 0)
+            continue;
+        if (n < 2)
+            CHECK_STR(line, want[n]);
+        n++;
+    }
+    CHECK_EQ_INT(pclose(p), 0);
+    CHECK_EQ_INT(n, 2);
+}
+
+/* Older format versions: no semantic version/properties (< 6), no thread in
+ * the enter event (< 4, thread as call detail 0x03), one-pair enum
+ * signatures (< 3). */
+TEST(old_versions)
+{
+    char path[512], err[600];
+    bytes b = {0};
+    /* version 5 with a backtrace */
+    b_uint(&b, 5);
+    b_enter_sig(&b, 0, "glFoo");
+    b_byte(&b, 4); b_uint(&b, 1); b_uint(&b, 7);
+    b_byte(&b, 1); b_str(&b, "libfoo.so"); b_byte(&b, 4); b_uint(&b, 42); b_byte(&b, 0);
+    b_byte(&b, 1); b_uint(&b, 0); b_byte(&b, FS_TV_UINT); b_uint(&b, 3);
+    b_byte(&b, 0);
+    b_byte(&b, 1); b_uint(&b, 0); b_byte(&b, 0);
+    write_container(tmp_path(path, sizeof path, "v5.trace"), b.p, b.n);
+    CHECK_EQ_INT(read_all(path, err, sizeof err), 1);
+    /* version 2: no thread in enter, thread detail, old enum signature */
+    b.n = 0;
+    b_uint(&b, 2);
+    b_byte(&b, 0); b_uint(&b, 0); b_str(&b, "glFoo"); b_uint(&b, 1); b_str(&b, "x");
+    b_byte(&b, 3); b_uint(&b, 2);
+    b_byte(&b, 1); b_uint(&b, 0); b_byte(&b, FS_TV_ENUM); b_uint(&b, 0); b_str(&b, "GL_FOO");
+    b_byte(&b, 4); b_uint(&b, 0x1234);
+    b_byte(&b, 0);
+    b_byte(&b, 1); b_uint(&b, 0); b_byte(&b, 0);
+    write_container(tmp_path(path, sizeof path, "v2.trace"), b.p, b.n);
+    fs_trace_reader *r = fs_trace_open(path, err, sizeof err);
+    REQUIRE(r != NULL);
+    fs_tcall c;
+    CHECK_EQ_INT(fs_trace_next(r, &c), 1);
+    CHECK_EQ_UINT(c.thread, 2);
+    CHECK_EQ_INT(c.args[0].i, 0x1234);
+    CHECK_STR(c.args[0].enum_name, "GL_FOO");
+    CHECK_EQ_INT(fs_trace_next(r, &c), 0);
+    fs_trace_close(r);
+    free(b.p);
+}
+
 /* Captures a small scene through the public API. */
 static int capture_scene(const char *path)
 {
@@ -988,6 +1094,8 @@ TEST_LIST = {
     TEST_ENTRY(round_trip),
     TEST_ENTRY(writer_rejects_bad_values),
     TEST_ENTRY(apitrace_dump_reads_our_trace),
+    TEST_ENTRY(apitrace_dump_reads_every_value_type),
+    TEST_ENTRY(old_versions),
     TEST_ENTRY(capture_reads_back),
     TEST_ENTRY(read_glxgears_capture),
     TEST_ENTRY(bad_magic_and_gzip),
