@@ -451,7 +451,7 @@ static int next_call(fs_replayer *r, fs_call *call, bool pass1)
         arena_reset(r);
         int got = fs_trace_next(r->tr, &tc);
         if (got < 0) {
-            snprintf(r->err, sizeof r->err, "%s: %s", r->path, fs_trace_error(r->tr));
+            snprintf(r->err, sizeof r->err, "%s", fs_trace_error(r->tr));
             return -1;
         }
         if (got == 0)
