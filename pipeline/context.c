@@ -25,6 +25,11 @@ fs_context *fs_context_create(const fs_config *cfg, int width, int height)
         fs_context_destroy(c);
         return NULL;
     }
+    /* GL 1.5 spec 4.1.2 and 2.11.1: the scissor box and the viewport start
+     * as the window's rectangle. */
+    c->frag.scissor[0] = c->frag.scissor[1] = 0;
+    c->frag.scissor[2] = width;
+    c->frag.scissor[3] = height;
     return c;
 }
 
