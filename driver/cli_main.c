@@ -492,9 +492,9 @@ static int run_replay(int argc, char **argv, bool check)
         rc = 1;
     print_unsupported(stderr, c, r);
     if (rc == 0 || rc == 3)
-        fprintf(stderr, "%s: %zu frame%s (%dx%d) in %.2f s; %s %s; statistics in %s\n", prog, nframes,
+        fprintf(stderr, "%s: %zu frame%s (%dx%d) in %.2f s; %s%s; statistics in %s\n", prog, nframes,
                 nframes == 1 ? "" : "s", info->width, info->height, now_seconds() - t0,
-                check ? "compared with OSMesa" : "images in", check ? "" : o.out_dir, stats_path);
+                check ? "compared with OSMesa" : "images in ", check ? "" : o.out_dir, stats_path);
     if (nframes == 0 && rc == 0)
         fprintf(stderr, "%s: warning: no frame in the selected range\n", prog);
     free(frames);
