@@ -20,6 +20,19 @@
 #include <string.h>
 #include "rasterizer_priv.h"
 
+/* x86 builds carry an FMA variant of the attribute evaluation, chosen at run
+ * time (no -march flags in reference builds). */
+#if (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__))
+#define FS_RASTER_HAVE_FMA 1
+#else
+#define FS_RASTER_HAVE_FMA 0
+#endif
+
+
+#ifndef FS_RASTER_PREFETCH
+#define FS_RASTER_PREFETCH 1
+#endif
+
 #ifdef __clang__
 /* Every float operation below must round separately, as llvmpipe's do. */
 #pragma STDC FP_CONTRACT OFF
@@ -42,7 +55,22 @@ void fs_raster_state_init(fs_raster_state *r, int subpixel_bits)
     r->interpolate_tex = false;
     r->reference_path = false;
     r->use_y_raster = false;
+#if FS_RASTER_HAVE_FMA
+    r->has_fma = __builtin_cpu_supports("fma");
+#else
+    r->has_fma = false;
+#endif
 }
+
+/* Round to nearest even like cvtss2si/cvtps2dq under the default MXCSR.
+ * lrintf is a libm call here (errno semantics keep GCC from inlining it),
+ * and this runs per vertex and per fragment. */
+#if defined(__SSE__) || defined(__x86_64__)
+#include <xmmintrin.h>
+static inline int32_t round_even(float v) { return _mm_cvtss_si32(_mm_set_ss(v)); }
+#else
+static inline int32_t round_even(float v) { return (int32_t)lrintf(v); }
+#endif
 
 /* ---- attribute planes and quad emission (shared with lines and points) ---- */
 
@@ -70,7 +98,7 @@ void fs_plane_constant(fs_plane *p, float v)
     p->constant = true;
 }
 
-uint32_t fs_raster_quantize_depth(float z, int depth_bits)
+static inline uint32_t quantize_depth(float z, int depth_bits)
 {
     /* llvmpipe clamps the fragment depth to [0,1] (unorm buffer, depth clamp
      * off) and converts it with lp_build_clamped_float_to_unsigned_norm. */
@@ -82,42 +110,79 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
      * random_*: every written depth equal): the depth is scaled by
      * 2^bits - 1 in float and rounded to nearest even. */
     float scale = (float)((1u << depth_bits) - 1);
-    return (uint32_t)lrintf(z * scale);
+    return (uint32_t)round_even(z * scale);
 }
+
+uint32_t fs_raster_quantize_depth(float z, int depth_bits)
+{
+    return quantize_depth(z, depth_bits);
+}
+
+/* The per-pixel attribute evaluation, instantiated once with the portable
+ * plane_at and once with hardware FMA (same results; the FMA one is faster
+ * and needs no emulation). */
+#define FS_EMIT_PIXELS(PLANE_AT)                                                  \
+    for (int i = 0; i < 4; i++) {                                                 \
+        if (!(m & (1u << i)))                                                     \
+            continue;                                                             \
+        float px = (float)(q->x + (i & 1));                                       \
+        float py = (float)fs_raster_row_to_gl(s->height, q->y + (i >> 1));        \
+        /* llvmpipe adds the polygon offset after interpolation (it travels in \
+         * a0.x of the position), even when it is zero. */                       \
+        float z = PLANE_AT(&s->z, px, py) + s->zoffset;                           \
+        q->z[i] = quantize_depth(z, depth_bits);                                  \
+        if (s->perspective) {                                                     \
+            /* Perspective-correct (GL 1.5 spec 3.5.1 eq. 3.7): a/w and 1/w are \
+             * linear in window space; llvmpipe divides per pixel. */             \
+            float oow = 1.0f / PLANE_AT(&s->w, px, py);                           \
+            for (int k = 0; k < 4; k++)                                           \
+                q->color[i][k] = PLANE_AT(&s->color[k], px, py) * oow;            \
+            if (s->use_tex)                                                       \
+                for (int k = 0; k < 4; k++)                                       \
+                    q->tex[i][k] = PLANE_AT(&s->tex[k], px, py) * oow;            \
+        } else {                                                                  \
+            for (int k = 0; k < 4; k++)                                           \
+                q->color[i][k] = PLANE_AT(&s->color[k], px, py);                  \
+            if (s->use_tex)                                                       \
+                for (int k = 0; k < 4; k++)                                       \
+                    q->tex[i][k] = PLANE_AT(&s->tex[k], px, py);                  \
+        }                                                                         \
+    }
+
+static void emit_pixels(const fs_prim_setup *s, fs_quad *q, unsigned m, int depth_bits)
+{
+    FS_EMIT_PIXELS(plane_at)
+}
+
+#if FS_RASTER_HAVE_FMA
+__attribute__((target("fma"))) static inline float plane_at_fma(const fs_plane *p, float x, float y)
+{
+    if (p->constant)
+        return p->a0;
+    return __builtin_fmaf(p->dady, y, __builtin_fmaf(p->dadx, x, p->a0));
+}
+
+__attribute__((target("fma"))) static void emit_pixels_fma(const fs_prim_setup *s, fs_quad *q, unsigned m,
+                                                            int depth_bits)
+{
+    FS_EMIT_PIXELS(plane_at_fma)
+}
+#endif
 
 void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
 {
-    const int depth_bits = c->fb.depth_bits;
-    q->front_facing = s->front;
     unsigned m = q->mask;
+    q->front_facing = s->front;
     c->stats.quads_generated++;
-    for (int i = 0; i < 4; i++) {
-        if (!(m & (1u << i)))
-            continue;
-        c->stats.fragments_generated++;
-        float px = (float)(q->x + (i & 1));
-        float py = (float)fs_raster_row_to_gl(s->height, q->y + (i >> 1));
-        /* llvmpipe adds the polygon offset after interpolation (stored in
-         * a0.x of the position), even when it is zero. */
-        float z = plane_at(&s->z, px, py) + s->zoffset;
-        q->z[i] = fs_raster_quantize_depth(z, depth_bits);
-        if (s->perspective) {
-            /* Perspective-correct (GL 1.5 spec 3.5.1 eq. 3.7): a/w and 1/w are
-             * linear in window space; llvmpipe divides per pixel. */
-            float oow = 1.0f / plane_at(&s->w, px, py);
-            for (int k = 0; k < 4; k++)
-                q->color[i][k] = plane_at(&s->color[k], px, py) * oow;
-            if (s->use_tex)
-                for (int k = 0; k < 4; k++)
-                    q->tex[i][k] = plane_at(&s->tex[k], px, py) * oow;
-        } else {
-            for (int k = 0; k < 4; k++)
-                q->color[i][k] = plane_at(&s->color[k], px, py);
-            if (s->use_tex)
-                for (int k = 0; k < 4; k++)
-                    q->tex[i][k] = plane_at(&s->tex[k], px, py);
-        }
+    c->stats.fragments_generated += (unsigned)((0x4332322132212110ull >> (4 * (m & 0xfu))) & 0xfu);
+#if FS_RASTER_HAVE_FMA
+    if (c->raster.has_fma) {
+        emit_pixels_fma(s, q, m, c->fb.depth_bits);
+        fs_fragment_quad(c, q);
+        return;
     }
+#endif
+    emit_pixels(s, q, m, c->fb.depth_bits);
     fs_fragment_quad(c, q);
 }
 
@@ -208,8 +273,8 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
             c->stats.triangles_culled++;
             return;
         }
-        X[i] = (int64_t)lrintf(fx);
-        Y[i] = (int64_t)lrintf(fy);
+        X[i] = round_even(fx);
+        Y[i] = round_even(fy);
     }
 
     /* Signed area in fixed point; positive is counter-clockwise in GL's
@@ -277,6 +342,20 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
         e.x1 = (int)bx1;
         e.y0 = (int)by0;
         e.y1 = (int)by1;
+    }
+    /* Small triangles land on cold framebuffer lines: start fetching the
+     * depth and colour rows now so the misses overlap the plane setup
+     * below instead of stalling the per-fragment operations. */
+    if (FS_RASTER_PREFETCH && e.y1 - e.y0 < 8 && e.x1 - e.x0 < 16) {
+        for (int ry = e.y0; ry <= e.y1; ry++) {
+            size_t o = (size_t)fs_raster_row_to_gl(H, ry) * (size_t)W + (size_t)e.x0;
+            __builtin_prefetch(&c->fb.depth[o], 1);
+            __builtin_prefetch(&c->fb.color[o * 4], 1);
+            if (((o + (size_t)(e.x1 - e.x0)) ^ o) >= 16) {
+                __builtin_prefetch(&c->fb.depth[o + (size_t)(e.x1 - e.x0)], 1);
+                __builtin_prefetch(&c->fb.color[(o + (size_t)(e.x1 - e.x0)) * 4], 1);
+            }
+        }
     }
     for (int i = 0; i < 3; i++) {
         int j = (i + 1) % 3;

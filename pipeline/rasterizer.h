@@ -65,6 +65,10 @@ typedef struct fs_raster_state {
     bool reference_path;
     /* The vertex stage fills fs_rvertex.y_raster (see there). */
     bool use_y_raster;
+    /* The CPU has FMA instructions: attribute evaluation uses them (llvmpipe
+     * does), otherwise an exact-in-practice double emulation.  Set by
+     * fs_raster_state_init; tests clear it to compare the two. */
+    bool has_fma;
 } fs_raster_state;
 
 void fs_raster_state_init(fs_raster_state *r, int subpixel_bits);
