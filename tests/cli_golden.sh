@@ -2,7 +2,7 @@
 # Golden images: every small scene must replay bit-exactly to the images in
 # tests/golden, which `make golden` stores only after they passed
 # `fragsim check` against OSMesa.
-. "$(dirname "$0")/cli_lib.sh"
+. "$(dirname "$0")/lib_cli.sh"
 : "${FRAGSIM:?}" "${SCENEGEN:?}"
 GOLDEN="$(cd "$(dirname "$0")" && pwd)/golden"
 

@@ -2,7 +2,7 @@
 # Command-line tests of fragsim replay/check/diff/config: the whole chain
 # from a trace file to images, statistics and the OSMesa cross-check, and
 # bad input at the CLI level (clear error, non-zero exit, no image written).
-. "$(dirname "$0")/cli_lib.sh"
+. "$(dirname "$0")/lib_cli.sh"
 : "${FRAGSIM:?}" "${SCENEGEN:?}"
 SCENES="city cathedrals forest garbage terrain demo"
 
