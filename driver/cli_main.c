@@ -424,7 +424,7 @@ static int run_replay(int argc, char **argv, bool check)
         if (ev == FS_REPLAY_EOF)
             break;
         if (ev == FS_REPLAY_CALL) {
-            if (fs_dispatch(c, &call) != 0) {
+            if (fs_submit(c, &call) != 0) {
                 fprintf(stderr, "%s: %s: malformed arguments to %s\n", prog, o.trace,
                         fs_cmd_table[call.cmd].name);
                 status = "error";
@@ -622,7 +622,7 @@ static int run_bench(int argc, char **argv)
                 continue;
             }
             if (model)
-                fs_dispatch(c, &call);
+                fs_submit(c, &call);
             else
                 fs_osmesa_dispatch(ref, &call);
         }

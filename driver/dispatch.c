@@ -259,16 +259,18 @@ int fs_call_validate(const fs_call *call)
 }
 #undef fs_readpixels_bytes
 
-void fs_submit(fs_context *c, fs_call *call)
+int fs_submit(fs_context *c, fs_call *call)
 {
     uint32_t flags = fs_cmd_table[call->cmd].flags;
+    int rc = 0;
     if (fs_dlist_compiling(c) && (flags & FS_F_LIST)) {
         fs_dlist_compile(c, call);
-        if (!fs_dlist_execute_too(c))
-            goto captured;
+        if (fs_dlist_execute_too(c))
+            rc = fs_dispatch(c, call);
+    } else {
+        rc = fs_dispatch(c, call);
     }
-    fs_dispatch(c, call);
-captured:
     if (c->capture)
         fs_capture_call(c, call);
+    return rc;
 }

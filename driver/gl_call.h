@@ -157,8 +157,10 @@ int fs_cmd_lookup(const char *name);
 #include "gl_commands.def"
 #undef FS_CMD
 
-/* Routes a call: capture, display-list compilation, execution (driver/dispatch.c). */
-void fs_submit(fs_context *c, fs_call *call);
+/* Routes a call as a GL implementation receives it: compiles it while a
+ * display list is being defined, executes it, records it when capturing
+ * (driver/dispatch.c).  Returns fs_dispatch's result. */
+int fs_submit(fs_context *c, fs_call *call);
 /* Executes a call now (no capture, no compilation).  Returns 0, or -1 when
  * an array argument is shorter than the command reads (malformed input). */
 int fs_dispatch(fs_context *c, fs_call *call);
