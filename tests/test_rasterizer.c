@@ -522,6 +522,355 @@ TEST(speed)
     fs_context_destroy(c);
 }
 
+/* GL state on both sides for the state tests. */
+typedef struct gl_setup {
+    bool cull;
+    GLenum cull_mode, front_face;
+    bool offset;
+    float factor, units;
+} gl_setup;
+
+static void apply_setup(fs_context *c, const gl_setup *g)
+{
+    if (g->cull) glEnable(GL_CULL_FACE); else glDisable(GL_CULL_FACE);
+    glCullFace(g->cull_mode);
+    glFrontFace(g->front_face);
+    if (g->offset) glEnable(GL_POLYGON_OFFSET_FILL); else glDisable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(g->factor, g->units);
+    c->raster.cull_enabled = g->cull;
+    fs_exec_CullFace(c, g->cull_mode);
+    fs_exec_FrontFace(c, g->front_face);
+    c->raster.offset_fill = g->offset;
+    fs_exec_PolygonOffset(c, g->factor, g->units);
+}
+
+/* Face culling and glFrontFace (GL 1.5 spec 3.5.1) with both windings. */
+TEST(culling)
+{
+    osm o;
+    REQUIRE(osm_open(&o, W, H));
+    fs_context *c = make_ctx(W, H);
+    REQUIRE(c);
+    const GLenum modes[3] = {GL_FRONT, GL_BACK, GL_FRONT_AND_BACK};
+    const GLenum faces[2] = {GL_CCW, GL_CW};
+    rng r = {5};
+    long diffs = 0, pixels = 0;
+    for (int m = 0; m < 3; m++)
+        for (int f = 0; f < 2; f++) {
+            gl_setup g = {true, modes[m], faces[f], false, 0, 0};
+            apply_setup(c, &g);
+            run_totals t = {0};
+            tv v[60];
+            for (int i = 0; i < 20; i++)
+                random_tri(&r, &v[3 * i], W, H, 12.0f, i, false);
+            uint64_t culled0 = c->stats.triangles_culled;
+            run_batch(&o, c, v, 20, 0, &t, true);
+            diffs += t.color_diff;
+            pixels += t.pixels;
+            if (modes[m] == GL_FRONT_AND_BACK)
+                CHECK_EQ_INT(c->stats.triangles_culled - culled0, 20);
+        }
+    gl_setup off = {false, GL_BACK, GL_CCW, false, 0, 0};
+    apply_setup(c, &off);
+    printf("    culling: %ld pixels, %ld differ\n", pixels, diffs);
+    CHECK_EQ_INT(diffs, 0);
+    CHECK(pixels > 0);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+/* Polygon offset (GL 1.5 spec 3.5.5): depth equality with llvmpipe's max
+ * slope and r = 2/(2^24-1). */
+TEST(polygon_offset)
+{
+    osm o;
+    REQUIRE(osm_open(&o, W, H));
+    fs_context *c = make_ctx(W, H);
+    REQUIRE(c);
+    const float params[4][2] = {{1.0f, 1.0f}, {2.5f, 0.0f}, {0.0f, 4.0f}, {-1.0f, -2.0f}};
+    rng r = {11};
+    run_totals t = {0};
+    for (int p = 0; p < 4; p++) {
+        gl_setup g = {false, GL_BACK, GL_CCW, true, params[p][0], params[p][1]};
+        apply_setup(c, &g);
+        tv v[60];
+        for (int f = 0; f < 10; f++) {
+            for (int i = 0; i < 20; i++)
+                random_tri(&r, &v[3 * i], W, H, 15.0f, i, false);
+            run_batch(&o, c, v, 20, 1, &t, true);
+        }
+    }
+    gl_setup off = {false, GL_BACK, GL_CCW, false, 0, 0};
+    apply_setup(c, &off);
+    glPolygonOffset(0, 0);
+    printf("    polygon_offset: %ld px written, %.4f%% depth equal, %ld off by one, %ld winner differences\n",
+           t.depth_written, 100.0 * (double)t.depth_equal / (double)t.depth_written, t.depth_off1, t.color_diff);
+    CHECK(t.depth_written > 0);
+    CHECK_EQ_INT(t.depth_written - t.depth_equal, 0);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+/* Perspective: 1/w varies across the triangle; colours must be
+ * perspective-correct like llvmpipe's (within one 8-bit step). */
+TEST(perspective)
+{
+    osm o;
+    REQUIRE(osm_open(&o, W, H));
+    fs_context *c = make_ctx(W, H);
+    REQUIRE(c);
+    c->raster.use_y_raster = true;
+    rng r = {77};
+    run_totals cov = {0}, dep = {0}, col = {0};
+    tv v[30];
+    for (int f = 0; f < 100; f++) {
+        for (int i = 0; i < 10; i++) {
+            random_tri(&r, &v[3 * i], W, H, 25.0f, i, false);
+            for (int k = 0; k < 3; k++)
+                v[3 * i + k].w = 0.25f + 4.0f * rndf(&r);
+        }
+        run_batch(&o, c, v, 10, 0, &cov, true);
+        run_batch(&o, c, v, 10, 1, &dep, true);
+        for (int i = 0; i < 30; i++)
+            for (int j = 0; j < 4; j++)
+                v[i].col[j] = rndf(&r);
+        run_batch(&o, c, v, 10, 2, &col, true);
+    }
+    printf("    perspective: coverage %ld of %ld px differ; depth %.4f%% equal (%ld off by one); colour: %ld px "
+           "differ, %ld by more than 1\n",
+           cov.color_diff, cov.pixels, 100.0 * (double)dep.depth_equal / (double)dep.depth_written, dep.depth_off1,
+           col.color_diff, col.color_far);
+    CHECK_EQ_INT(cov.color_diff, 0);
+    CHECK_EQ_INT(col.color_far, 0);
+    CHECK_EQ_INT(dep.depth_written - dep.depth_equal - dep.depth_off1, 0);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+/* Non-finite and enormous coordinates: no crash, no hang, counted. */
+TEST(nan_inf_huge)
+{
+    fs_context *c = make_ctx(W, H);
+    REQUIRE(c);
+    const float bad[] = {NAN, INFINITY, -INFINITY, 1e30f, -1e30f, 3e9f};
+    fs_rvertex v[3];
+    memset(v, 0, sizeof v);
+    for (int k = 0; k < 3; k++) {
+        v[k].inv_w = 1.0f;
+        v[k].x = 10.0f + 20.0f * (float)(k == 1);
+        v[k].y = 10.0f + 20.0f * (float)(k == 2);
+    }
+    for (unsigned b = 0; b < sizeof bad / sizeof bad[0]; b++)
+        for (int k = 0; k < 3; k++)
+            for (int coord = 0; coord < 2; coord++) {
+                fs_rvertex t[3];
+                memcpy(t, v, sizeof t);
+                if (coord)
+                    t[k].y = bad[b];
+                else
+                    t[k].x = bad[b];
+                uint64_t culled = c->stats.triangles_culled, frags = c->stats.fragments_generated;
+                fs_raster_triangle(c, &t[0], &t[1], &t[2]);
+                CHECK_EQ_INT(c->stats.triangles_culled - culled, 1);
+                CHECK_EQ_INT(c->stats.fragments_generated - frags, 0);
+            }
+    /* Large but representable: a triangle covering the whole window from
+     * a million pixels away, in both windings; every pixel is covered once. */
+    fs_rvertex h[3];
+    memset(h, 0, sizeof h);
+    const float P[3][2] = {{-1e6f, -1e6f}, {2e6f, -1e6f}, {-1e6f, 2e6f}};
+    for (int wind = 0; wind < 2; wind++) {
+        for (int k = 0; k < 3; k++) {
+            int q = wind ? 2 - k : k;
+            h[k].x = P[q][0];
+            h[k].y = P[q][1];
+            h[k].inv_w = 1.0f;
+            h[k].z = 0.5f;
+        }
+        uint64_t frags = c->stats.fragments_generated;
+        fs_raster_triangle(c, &h[0], &h[1], &h[2]);
+        CHECK_EQ_INT(c->stats.fragments_generated - frags, W * H);
+    }
+    fs_context_destroy(c);
+}
+
+/* Triangles crossing the window edge: llvmpipe clips them (no guard band)
+ * before snapping, which moves the clipped vertices by rounding; fragsim's
+ * vertex stage does the same.  Given the unclipped triangle the rasterizer
+ * may differ only in pixels whose centre is within a rounding error of an
+ * edge: measured and bounded here. */
+TEST(window_edge_unclipped)
+{
+    osm o;
+    REQUIRE(osm_open(&o, W, H));
+    fs_context *c = make_ctx(W, H);
+    REQUIRE(c);
+    rng r = {31337};
+    run_totals t = {0};
+    tv v[30];
+    for (int f = 0; f < 100; f++) {
+        for (int i = 0; i < 10; i++) {
+            for (int k = 0; k < 3; k++) {
+                v[3 * i + k].x = rnd_coord(&r, -200.0f, W + 200.0f);
+                v[3 * i + k].y = rnd_coord(&r, -200.0f, H + 200.0f);
+                v[3 * i + k].zn = 0.0f;
+                v[3 * i + k].w = 1.0f;
+                id_color(v[3 * i + k].col, i);
+            }
+        }
+        run_batch(&o, c, v, 10, 0, &t, false);
+    }
+    printf("    window_edge_unclipped: %ld of %ld px differ (clipping done by OSMesa only)\n", t.color_diff, t.pixels);
+    CHECK(t.color_diff * 1000 < t.pixels);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+/* The incremental rasterizer and the plain per-pixel one, and the FMA and
+ * emulated attribute paths, must produce identical framebuffers. */
+TEST(fast_equals_reference)
+{
+    const int w = 61, h = 47;
+    fs_context *a = make_ctx(w, h), *b = make_ctx(w, h);
+    REQUIRE(a && b);
+    b->raster.reference_path = true;
+    bool fma = a->raster.has_fma;
+    rng r = {2024};
+    long differ = 0, frags = 0;
+    for (int pass = 0; pass < 2; pass++) {
+        /* pass 1: the emulated FMA against the hardware one (if any) */
+        if (pass == 1)
+            b->raster.has_fma = false;
+        fs_clear(a);
+        fs_clear(b);
+        a->frag.depth_enabled = b->frag.depth_enabled = true;
+        for (int i = 0; i < 3000; i++) {
+            tv v[3];
+            random_tri(&r, v, (float)w, (float)h, i % 3 ? 6.0f : 40.0f, i, true);
+            for (int k = 0; k < 3; k++) {
+                v[k].w = 0.5f + rndf(&r);
+                /* some vertices outside the window: clamping of the box */
+                if (i % 7 == 0)
+                    v[k].x += 30.0f * (rndf(&r) - 0.5f);
+            }
+            fs_rvertex ra = to_rvertex(a, &v[0]), rb = to_rvertex(a, &v[1]), rc = to_rvertex(a, &v[2]);
+            fs_raster_triangle(a, &ra, &rb, &rc);
+            fs_raster_triangle(b, &ra, &rb, &rc);
+        }
+        differ += memcmp(a->fb.color, b->fb.color, (size_t)w * h * 4) != 0;
+        differ += memcmp(a->fb.depth, b->fb.depth, (size_t)w * h * 4) != 0;
+        frags += (long)a->stats.fragments_generated;
+        CHECK_EQ_UINT(a->stats.fragments_generated, b->stats.fragments_generated);
+        CHECK_EQ_UINT(a->stats.quads_generated, b->stats.quads_generated);
+    }
+    printf("    fast_equals_reference: %ld fragments, hardware FMA %s\n", frags, fma ? "yes" : "no");
+    CHECK_EQ_INT(differ, 0);
+    CHECK(frags > 0);
+    fs_context_destroy(a);
+    fs_context_destroy(b);
+}
+
+/* The fast path really is the one under test: a deliberately wrong edge
+ * would show.  Here: a triangle's coverage equals the count of pixel
+ * centres strictly inside (no centre on an edge). */
+TEST(counts)
+{
+    fs_context *c = make_ctx(W, H);
+    REQUIRE(c);
+    fs_rvertex v[3];
+    memset(v, 0, sizeof v);
+    /* Right triangle with legs 10 along x and y, corner at (5.25, 5.25):
+     * centres (i+0.5, j+0.5) with i+0.5 > 5.25, j+0.5 > 5.25, and
+     * (i+0.5 - 5.25) + (j+0.5 - 5.25) < 10: i, j >= 5, i + j < 19.5 - 1 ...
+     * counted by brute force below. */
+    const float P[3][2] = {{5.25f, 5.25f}, {15.25f, 5.25f}, {5.25f, 15.25f}};
+    for (int k = 0; k < 3; k++) {
+        v[k].x = P[k][0];
+        v[k].y = P[k][1];
+        v[k].inv_w = 1.0f;
+    }
+    int expect = 0;
+    for (int j = 0; j < H; j++)
+        for (int i = 0; i < W; i++) {
+            float x = i + 0.5f - 5.25f, y = j + 0.5f - 5.25f;
+            if (x > 0 && y > 0 && x + y < 10.0f)
+                expect++;
+        }
+    fs_raster_triangle(c, &v[0], &v[1], &v[2]);
+    CHECK_EQ_INT(c->stats.fragments_generated, expect);
+    CHECK_EQ_INT(c->stats.triangles_rasterized, 1);
+    /* Zero area: culled and counted. */
+    v[2].x = 25.25f;
+    v[2].y = 5.25f;
+    fs_raster_triangle(c, &v[0], &v[1], &v[2]);
+    CHECK_EQ_INT(c->stats.triangles_culled, 1);
+    CHECK_EQ_INT(c->stats.fragments_generated, expect);
+    fs_context_destroy(c);
+}
+
+/* Executors: values, and the GL error rules (GL 1.5 spec 2.5). */
+TEST(executors)
+{
+    fs_context *c = make_ctx(8, 8);
+    REQUIRE(c);
+    CHECK_EQ_INT(c->raster.cull_mode, GL_BACK);
+    CHECK_EQ_INT(c->raster.front_face, GL_CCW);
+    fs_exec_CullFace(c, GL_FRONT);
+    CHECK_EQ_INT(c->raster.cull_mode, GL_FRONT);
+    fs_exec_CullFace(c, GL_CCW);
+    CHECK_EQ_INT(c->error, GL_INVALID_ENUM);
+    CHECK_EQ_INT(c->raster.cull_mode, GL_FRONT);
+    c->error = GL_NO_ERROR;
+    fs_exec_FrontFace(c, GL_CW);
+    CHECK_EQ_INT(c->raster.front_face, GL_CW);
+    fs_exec_FrontFace(c, GL_FRONT);
+    CHECK_EQ_INT(c->error, GL_INVALID_ENUM);
+    CHECK_EQ_INT(c->raster.front_face, GL_CW);
+    c->error = GL_NO_ERROR;
+    fs_exec_PolygonMode(c, GL_BACK, GL_LINE);
+    CHECK_EQ_INT(c->raster.polygon_mode[0], GL_FILL);
+    CHECK_EQ_INT(c->raster.polygon_mode[1], GL_LINE);
+    fs_exec_PolygonMode(c, GL_FRONT_AND_BACK, GL_POINT);
+    CHECK_EQ_INT(c->raster.polygon_mode[0], GL_POINT);
+    CHECK_EQ_INT(c->raster.polygon_mode[1], GL_POINT);
+    fs_exec_PolygonMode(c, GL_FRONT, GL_CW);
+    CHECK_EQ_INT(c->error, GL_INVALID_ENUM);
+    c->error = GL_NO_ERROR;
+    fs_exec_PolygonMode(c, GL_LEFT, GL_FILL);
+    CHECK_EQ_INT(c->error, GL_INVALID_ENUM);
+    CHECK_EQ_INT(c->raster.polygon_mode[0], GL_POINT);
+    c->error = GL_NO_ERROR;
+    fs_exec_PolygonOffset(c, 2.0f, -1.0f);
+    CHECK(c->raster.offset_factor == 2.0f && c->raster.offset_units == -1.0f);
+    fs_exec_PointSize(c, 3.0f);
+    CHECK(c->raster.point_size == 3.0f);
+    fs_exec_PointSize(c, 0.0f);
+    CHECK_EQ_INT(c->error, GL_INVALID_VALUE);
+    CHECK(c->raster.point_size == 3.0f);
+    c->error = GL_NO_ERROR;
+    fs_exec_PointSize(c, NAN);
+    CHECK_EQ_INT(c->error, GL_INVALID_VALUE);
+    c->error = GL_NO_ERROR;
+    fs_exec_LineWidth(c, 2.0f);
+    CHECK(c->raster.line_width == 2.0f);
+    fs_exec_LineWidth(c, -1.0f);
+    CHECK_EQ_INT(c->error, GL_INVALID_VALUE);
+    CHECK(c->raster.line_width == 2.0f);
+    /* Polygon modes other than fill: counted, drawn filled. */
+    c->error = GL_NO_ERROR;
+    fs_rvertex v[3];
+    memset(v, 0, sizeof v);
+    v[1].x = 6.0f;
+    v[2].y = 6.0f;
+    for (int k = 0; k < 3; k++)
+        v[k].inv_w = 1.0f;
+    fs_raster_triangle(c, &v[0], &v[1], &v[2]);
+    CHECK_EQ_INT(c->unsupported_feature_count, 1);
+    CHECK_STR(c->unsupported_feature[0].name, "glPolygonMode(GL_POINT)");
+    CHECK(c->stats.fragments_generated > 0);
+    fs_context_destroy(c);
+}
+
 TEST_LIST = {
     TEST_ENTRY(fill_convention),
     TEST_ENTRY(random_small),
@@ -529,6 +878,14 @@ TEST_LIST = {
     TEST_ENTRY(random_odd_size),
     TEST_ENTRY(random_odd_size_gl_y),
     TEST_ENTRY(slivers),
+    TEST_ENTRY(culling),
+    TEST_ENTRY(polygon_offset),
+    TEST_ENTRY(perspective),
+    TEST_ENTRY(nan_inf_huge),
+    TEST_ENTRY(window_edge_unclipped),
+    TEST_ENTRY(fast_equals_reference),
+    TEST_ENTRY(counts),
+    TEST_ENTRY(executors),
     TEST_ENTRY(speed),
     TEST_END
 };
