@@ -15,7 +15,7 @@
 #include "rasterizer.h"
 
 #define FS_MODELVIEW_STACK_DEPTH 32
-#define FS_PROJECTION_STACK_DEPTH 4   /* GL minimum is 2; Mesa allows 32 */
+#define FS_PROJECTION_STACK_DEPTH 32  /* GL minimum is 2; Mesa (the reference) allows 32 */
 #define FS_TEXTURE_STACK_DEPTH 10
 #define FS_MAX_LIGHTS 8
 
@@ -27,7 +27,10 @@ typedef struct fs_transform_state {
     fs_matrix projection[FS_PROJECTION_STACK_DEPTH];
     fs_matrix texture[FS_TEXTURE_STACK_DEPTH];
     int modelview_top, projection_top, texture_top; /* index of the current matrix */
-    GLint viewport[4];
+    GLint viewport[4];       /* the framebuffer size until glViewport (see viewport_set) */
+    bool viewport_set;       /* glViewport called; before that the first draw
+                              * takes the framebuffer size, as OSMesa's first
+                              * MakeCurrent does */
     double depth_range[2];
     bool normalize, rescale_normal;
 } fs_transform_state;
@@ -78,9 +81,23 @@ typedef struct fs_prim_state {
     bool inside_begin;
     GLenum mode;
     int count;               /* vertices since glBegin */
-    void *impl;              /* private buffers of primitive.c */
+    /* Nonzero while a display list executes.  Mesa compiles list contents
+     * into indexed draws, which split GL_QUADS along the other diagonal
+     * than immediate mode does; driver/display_list.c increments it around
+     * glCallList so that fragsim splits the same way. */
+    int list_depth;
+    void *impl;              /* private buffers (vertex_internal.h) */
 } fs_prim_state;
 
 void fs_vertex_stage_init(fs_context *c);
 void fs_vertex_stage_free(fs_context *c);
+
+/* Derived vertex state (products of matrices, normalised light vectors) is
+ * recomputed at each draw, so enables need no hook. */
+
+/* Helpers shared with the driver (glGet, glEnable(GL_COLOR_MATERIAL)). */
+const fs_matrix *fs_current_matrix(const fs_context *c, GLenum mode);
+/* Copies the current colour into the material properties that track it
+ * (GL 1.5 spec 2.14.3); called on glColor and on enabling GL_COLOR_MATERIAL. */
+void fs_color_material_update(fs_context *c);
 #endif

@@ -666,6 +666,7 @@ static void scene_arrays(fs_context *c, int w, int h)
     G(ColorPointer, 4, GL_FLOAT, 0, col);
     G(EnableClientState, GL_VERTEX_ARRAY);
     G(EnableClientState, GL_COLOR_ARRAY);
+    /* FS_VS_PART=1 or 2 renders one draw alone, to locate differences. */
     if (!getenv("FS_VS_PART") || atoi(getenv("FS_VS_PART")) & 1)
         G(DrawArrays, GL_QUADS, 0, k);
     G(Translatef, 0.2f, 0.1f, 1.5f);

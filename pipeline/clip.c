@@ -1,0 +1,312 @@
+/*
+ * Clipping (GL 1.5 spec 2.12) and the hand-over to the rasterizer.
+ *
+ * llvmpipe clips in homogeneous clip space against all six view-volume
+ * planes when a depth buffer is attached (its x/y guard band is only used
+ * without one), so fragsim does the same.  The plane order, the
+ * Sutherland-Hodgman walk that keeps the first vertex first, the
+ * choice of interpolation direction (always from the vertex inside) and the
+ * float arithmetic of new vertices (x_w = x_c * (1/w_c) * scale + translate,
+ * unfused, while unclipped vertices keep the transform's fused result)
+ * follow Mesa's draw module so that clipped edges land on the same
+ * sub-pixel positions.  Lines are clipped by z only and points dropped by
+ * z only; their x/y extent is bounded by the window (guard band for
+ * points and lines, as llvmpipe does).  Non-finite distances drop the
+ * primitive.
+ */
+#include <math.h>
+#include <string.h>
+#include "vertex_internal.h"
+
+/* Planes as (a,b,c,d) with inside a*x + b*y + c*z + d*w >= 0:
+ * x <= w, x >= -w, y <= w, y >= -w, z >= -w, z <= w. */
+static const float planes[6][4] = {
+    {-1, 0, 0, 1}, {1, 0, 0, 1}, {0, -1, 0, 1}, {0, 1, 0, 1}, {0, 0, 1, 1}, {0, 0, -1, 1},
+};
+
+unsigned fs_clip_mask(const float v[4])
+{
+    const float x = v[0], y = v[1], z = v[2], w = v[3];
+    unsigned m = 0;
+    if (x > w) m |= 1;
+    if (0.0f > x + w) m |= 2;
+    if (y > w) m |= 4;
+    if (0.0f > y + w) m |= 8;
+    if (0.0f > z + w) m |= 16;
+    if (z > w) m |= 32;
+    /* NaN compares false everywhere: mark it outside so it is dropped, and
+     * a zero w (possible only at the origin) cannot be divided by. */
+    if (m == 0 && !(w > 0.0f))
+        m = 0x3f;
+    return m;
+}
+
+static inline float dot4(const float *a, const float *b)
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2] + a[3] * b[3];
+}
+
+/* A clipped vertex with its attributes; window position and colours are
+ * filled when it is created. */
+typedef struct cvert {
+    float clip[4];
+    float win[4];
+    float col[2][4];
+    float tc[4];
+} cvert;
+
+static void from_pvert(cvert *d, const fs_pvert *v)
+{
+    memcpy(d->clip, v->clip, sizeof d->clip);
+    memcpy(d->win, v->win, sizeof d->win);
+    memcpy(d->col, v->col, sizeof d->col);
+    memcpy(d->tc, v->tc, sizeof d->tc);
+}
+
+#define LERP(t, out, in) ((out) + (t) * ((in) - (out)))
+
+/* New vertex between out and in at parameter t from out (Mesa's interp()). */
+static void interp(const fs_vs_setup *s, cvert *d, float t, const cvert *out, const cvert *in, bool two)
+{
+    for (int k = 0; k < 4; k++)
+        d->clip[k] = LERP(t, out->clip[k], in->clip[k]);
+    const float oow = 1.0f / d->clip[3];
+    d->win[0] = d->clip[0] * oow * s->vp_scale[0] + s->vp_trans[0];
+    d->win[1] = d->clip[1] * oow * s->vp_scale[1] + s->vp_trans[1];
+    d->win[2] = d->clip[2] * oow * s->vp_scale[2] + s->vp_trans[2];
+    d->win[3] = oow;
+    for (int k = 0; k < 4; k++) {
+        d->col[0][k] = LERP(t, out->col[0][k], in->col[0][k]);
+        d->tc[k] = LERP(t, out->tc[k], in->tc[k]);
+    }
+    if (two)
+        for (int k = 0; k < 4; k++)
+            d->col[1][k] = LERP(t, out->col[1][k], in->col[1][k]);
+}
+
+static void to_rvertex(fs_rvertex *r, const cvert *v, const float *col)
+{
+    r->x = v->win[0];
+    r->y = v->win[1];
+    r->z = v->win[2];
+    r->inv_w = v->win[3];
+    memcpy(r->color, col, sizeof r->color);
+    memcpy(r->tex, v->tc, sizeof r->tex);
+}
+
+/* Facing decides which colour two-sided lighting uses (2.14.1); the
+ * rasterizer repeats the test on snapped positions for culling. */
+static int back_side(const fs_context *c, const cvert *a, const cvert *b, const cvert *d)
+{
+    float det = (a->win[0] - d->win[0]) * (b->win[1] - d->win[1]) - (b->win[0] - d->win[0]) * (a->win[1] - d->win[1]);
+    bool ccw = det > 0.0f;
+    bool front = c->raster.front_face == GL_CCW ? ccw : !ccw;
+    return front ? 0 : 1;
+}
+
+static void emit3(fs_context *c, const fs_vs_setup *s, const cvert *a, const cvert *b, const cvert *d,
+                  const float *flat_col2)
+{
+    int side = s->two_side ? back_side(c, a, b, d) : 0;
+    fs_rvertex r[3];
+    const cvert *v[3] = {a, b, d};
+    for (int i = 0; i < 3; i++)
+        to_rvertex(&r[i], v[i], flat_col2 ? flat_col2 + 4 * side : v[i]->col[side]);
+    fs_vs_impl *vi = fs_vs(c);
+    if (vi->tri_hook)
+        vi->tri_hook(vi->hook_user, &r[0], &r[1], &r[2]);
+    fs_raster_triangle(c, &r[0], &r[1], &r[2]);
+}
+
+void fs_emit_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
+                      const fs_pvert *v1, const fs_pvert *v2, int provoking)
+{
+    cvert a, b, d;
+    from_pvert(&a, v0);
+    from_pvert(&b, v1);
+    from_pvert(&d, v2);
+    const fs_pvert *pv[3] = {v0, v1, v2};
+    emit3(c, s, &a, &b, &d, provoking >= 0 ? &pv[provoking]->col[0][0] : NULL);
+}
+
+#define MAX_CLIPPED 16
+
+void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
+                      const fs_pvert *v1, const fs_pvert *v2, int provoking)
+{
+    cvert store[3 + MAX_CLIPPED];
+    cvert *la[MAX_CLIPPED + 1], *lb[MAX_CLIPPED + 1];
+    cvert **in = la, **out = lb;
+    int nstore = 3;
+    from_pvert(&store[0], v0);
+    from_pvert(&store[1], v1);
+    from_pvert(&store[2], v2);
+    in[0] = &store[0];
+    in[1] = &store[1];
+    in[2] = &store[2];
+    unsigned n = 3;
+    unsigned mask = v0->mask | v1->mask | v2->mask;
+    const bool two = s->two_side;
+    float flat[2][4];
+    if (provoking >= 0) {
+        const fs_pvert *pv[3] = {v0, v1, v2};
+        memcpy(flat, pv[provoking]->col, sizeof flat);
+    }
+    while (mask && n >= 3) {
+        int plane = __builtin_ctz(mask);
+        mask &= mask - 1;
+        const float *pl = planes[plane];
+        cvert *prev = in[0];
+        float dp_prev = dot4(prev->clip, pl);
+        if (!isfinite(dp_prev)) {
+            c->stats.triangles_rejected++;
+            return;
+        }
+        unsigned outn = 0;
+        in[n] = in[0];
+        for (unsigned i = 1; i <= n; i++) {
+            cvert *cur = in[i];
+            float dp = dot4(cur->clip, pl);
+            if (!isfinite(dp)) {
+                c->stats.triangles_rejected++;
+                return;
+            }
+            bool different;
+            if (dp_prev >= 0.0f) {
+                if (outn >= MAX_CLIPPED) return;
+                out[outn++] = prev;
+                different = dp < 0.0f;
+            } else {
+                different = !(dp < 0.0f);
+            }
+            if (different) {
+                if (outn >= MAX_CLIPPED || nstore >= 3 + MAX_CLIPPED) return;
+                cvert *nv = &store[nstore++];
+                out[outn++] = nv;
+                float denom = dp - dp_prev;
+                if (dp < 0.0f) {
+                    /* Going out: interpolate from the inside vertex. */
+                    if (-dp < dp_prev)
+                        interp(s, nv, dp / denom, cur, prev, two);
+                    else
+                        interp(s, nv, -dp_prev / denom, prev, cur, two);
+                } else {
+                    if (-dp_prev < dp)
+                        interp(s, nv, -dp_prev / denom, prev, cur, two);
+                    else
+                        interp(s, nv, dp / denom, cur, prev, two);
+                }
+            }
+            prev = cur;
+            dp_prev = dp;
+        }
+        cvert **t = in;
+        in = out;
+        out = t;
+        n = outn;
+    }
+    if (n < 3) {
+        c->stats.triangles_rejected++;
+        return;
+    }
+    /* Emitted as a fan with the first vertex last, as Mesa's clipper does
+     * for the last-vertex convention. */
+    for (unsigned i = 2; i < n; i++)
+        emit3(c, s, in[i - 1], in[i], in[0], provoking >= 0 ? &flat[0][0] : NULL);
+}
+
+static void emit_line2(fs_context *c, const cvert *a, const cvert *b, const float *flat)
+{
+    fs_rvertex r[2];
+    to_rvertex(&r[0], a, flat ? flat : a->col[0]);
+    to_rvertex(&r[1], b, flat ? flat : b->col[0]);
+    fs_raster_line(c, &r[0], &r[1]);
+}
+
+void fs_emit_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1)
+{
+    cvert a, b;
+    from_pvert(&a, v0);
+    from_pvert(&b, v1);
+    emit_line2(c, &a, &b, s->flat ? v1->col[0] : NULL);
+}
+
+void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1)
+{
+    unsigned m = v0->mask | v1->mask;
+    if (m == 0) {
+        fs_emit_line(c, s, v0, v1);
+        return;
+    }
+    if ((m & ~0xfu) == 0) {
+        /* Only x/y planes: the guard band passes the line unclipped unless
+         * it cannot be projected. */
+        if ((v0->clip[3] <= 0.0f && v1->clip[3] <= 0.0f) || isnan(v0->clip[0]) || isnan(v0->clip[1]) ||
+            isnan(v1->clip[0]) || isnan(v1->clip[1]))
+            return;
+        if (!(v0->clip[3] > 0.0f) || !(v1->clip[3] > 0.0f))
+            return; /* fragsim cannot project a w <= 0 end point */
+        cvert a, b;
+        from_pvert(&a, v0);
+        from_pvert(&b, v1);
+        for (int k = 0; k < 2; k++) {
+            cvert *d = k ? &b : &a;
+            float oow = 1.0f / d->clip[3];
+            d->win[0] = fmaf(d->clip[0] * oow, s->vp_scale[0], s->vp_trans[0]);
+            d->win[1] = fmaf(d->clip[1] * oow, s->vp_scale[1], s->vp_trans[1]);
+            d->win[2] = fmaf(d->clip[2] * oow, s->vp_scale[2], s->vp_trans[2]);
+            d->win[3] = oow;
+        }
+        emit_line2(c, &a, &b, s->flat ? v1->col[0] : NULL);
+        return;
+    }
+    if (v0->mask & v1->mask)
+        return;
+    unsigned zm = m & 0x30u;
+    float t0 = 0.0f, t1 = 0.0f;
+    while (zm) {
+        int plane = __builtin_ctz(zm);
+        zm &= zm - 1;
+        float dp0 = dot4(v0->clip, planes[plane]), dp1 = dot4(v1->clip, planes[plane]);
+        if (!isfinite(dp0) || !isfinite(dp1))
+            return;
+        if (dp1 < 0.0f) {
+            float t = dp1 / (dp1 - dp0);
+            t1 = t > t1 ? t : t1;
+        }
+        if (dp0 < 0.0f) {
+            float t = dp0 / (dp0 - dp1);
+            t0 = t > t0 ? t : t0;
+        }
+        if (t0 + t1 >= 1.0f)
+            return;
+    }
+    cvert a, b, ca, cb;
+    from_pvert(&a, v0);
+    from_pvert(&b, v1);
+    cvert *pa = &a, *pb = &b;
+    if (v0->mask) {
+        interp(s, &ca, t0, &a, &b, false);
+        pa = &ca;
+    }
+    if (v1->mask) {
+        interp(s, &cb, t1, &b, &a, false);
+        pb = &cb;
+    }
+    if (!(pa->clip[3] > 0.0f) || !(pb->clip[3] > 0.0f))
+        return;
+    emit_line2(c, pa, pb, s->flat ? v1->col[0] : NULL);
+}
+
+void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)
+{
+    (void)s;
+    fs_rvertex r;
+    r.x = v->win[0];
+    r.y = v->win[1];
+    r.z = v->win[2];
+    r.inv_w = v->win[3];
+    memcpy(r.color, v->col[0], sizeof r.color);
+    memcpy(r.tex, v->tc, sizeof r.tex);
+    fs_raster_point(c, &r);
+}

@@ -1,0 +1,139 @@
+/*
+ * Primitive assembly (GL 1.5 spec 2.6.1) and flat shading (2.14.7): the
+ * ten primitive types become points, lines and triangles in the vertex
+ * order and with the splits Mesa's llvmpipe uses, because the split
+ * decides which triangle owns a quad's diagonal and how colours
+ * interpolate across it.
+ *
+ * llvmpipe takes one of two routes per draw (per Mesa's draw module and
+ * measured against OSMesa):
+ *  - no vertex outside the view volume: the vertices go to the setup code
+ *    as the primitive type.  Non-indexed smooth-shaded quads split along
+ *    v0-v2 as (0,1,2),(0,2,3); indexed draws (glDrawElements, display
+ *    lists) and flat-shaded quads split along v1-v3 as (0,1,3),(1,2,3);
+ *    quad strips (0,1,3),(2,0,3); polygons fan as (i-1,i,0).
+ *  - some vertex outside: the whole draw goes through the draw pipeline's
+ *    decomposition, quads (0,1,3),(1,2,3), quad strips (2,0,3),(0,1,3),
+ *    polygons (i+1,i+2,0), and triangles needing it are clipped (clip.c).
+ * Provoking vertex (2.14.7): the last vertex of each primitive, the first
+ * of a polygon; in every split above it lands last in the triangle.
+ */
+#include <math.h>
+#include "vertex_internal.h"
+
+bool fs_prim_mode_valid(GLenum mode)
+{
+    return mode <= GL_POLYGON; /* GL_POINTS (0) .. GL_POLYGON (9) */
+}
+
+typedef struct prim_ctx {
+    fs_context *c;
+    const fs_vs_setup *s;
+    const fs_pvert *pv;
+    const uint32_t *idx;
+    int prov;            /* provoking position in each triangle, -1 smooth */
+} prim_ctx;
+
+static inline const fs_pvert *V(const prim_ctx *p, size_t i)
+{
+    return p->idx ? &p->pv[p->idx[i]] : &p->pv[i];
+}
+
+static void tri(const prim_ctx *p, size_t a, size_t b, size_t cc)
+{
+    fs_context *c = p->c;
+    const fs_pvert *v0 = V(p, a), *v1 = V(p, b), *v2 = V(p, cc);
+    c->stats.triangles_in++;
+    if ((v0->mask | v1->mask | v2->mask) == 0) {
+        fs_emit_triangle(c, p->s, v0, v1, v2, p->prov);
+    } else if (v0->mask & v1->mask & v2->mask) {
+        c->stats.triangles_rejected++;
+    } else {
+        c->stats.triangles_clipped++;
+        fs_clip_triangle(c, p->s, v0, v1, v2, p->prov);
+    }
+}
+
+static void line(const prim_ctx *p, size_t a, size_t b)
+{
+    fs_clip_line(p->c, p->s, V(p, a), V(p, b));
+}
+
+void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, const fs_pvert *pv,
+                  const uint32_t *idx, size_t count, bool elements)
+{
+    prim_ctx p = {c, s, pv, idx, s->flat ? 2 : -1};
+    bool pipeline = false;
+    for (size_t i = 0; i < count && !pipeline; i++)
+        pipeline = V(&p, i)->mask != 0;
+    size_t i;
+    switch (mode) {
+    case GL_POINTS:
+        for (i = 0; i < count; i++) {
+            const fs_pvert *v = V(&p, i);
+            /* Points are clipped by z only; x/y are left to the rasterizer's
+             * window bounds, as llvmpipe does (guard band for points). */
+            if ((v->mask & 0x30) || !(v->clip[3] > 0.0f) || !isfinite(v->win[0]) || !isfinite(v->win[1]))
+                continue;
+            fs_emit_point(c, s, v);
+        }
+        break;
+    case GL_LINES:
+        for (i = 0; i + 1 < count; i += 2)
+            line(&p, i, i + 1);
+        break;
+    case GL_LINE_STRIP:
+    case GL_LINE_LOOP:
+        if (count < 2)
+            break;
+        for (i = 1; i < count; i++)
+            line(&p, i - 1, i);
+        if (mode == GL_LINE_LOOP)
+            line(&p, count - 1, 0);
+        break;
+    case GL_TRIANGLES:
+        for (i = 0; i + 2 < count; i += 3)
+            tri(&p, i, i + 1, i + 2);
+        break;
+    case GL_TRIANGLE_STRIP:
+        for (i = 2; i < count; i++) {
+            if (i & 1)
+                tri(&p, i - 1, i - 2, i);
+            else
+                tri(&p, i - 2, i - 1, i);
+        }
+        break;
+    case GL_TRIANGLE_FAN:
+        for (i = 2; i < count; i++)
+            tri(&p, 0, i - 1, i);
+        break;
+    case GL_QUADS:
+        for (i = 3; i < count; i += 4) {
+            if (!pipeline && !elements && !s->flat) {
+                tri(&p, i - 3, i - 2, i - 1);
+                tri(&p, i - 3, i - 1, i);
+            } else {
+                tri(&p, i - 3, i - 2, i);
+                tri(&p, i - 2, i - 1, i);
+            }
+        }
+        break;
+    case GL_QUAD_STRIP:
+        for (i = 3; i < count; i += 2) {
+            if (!pipeline) {
+                tri(&p, i - 3, i - 2, i);
+                tri(&p, i - 1, i - 3, i);
+            } else {
+                tri(&p, i - 1, i - 3, i);
+                tri(&p, i - 3, i - 2, i);
+            }
+        }
+        break;
+    case GL_POLYGON:
+        for (i = 2; i < count; i++)
+            tri(&p, i - 1, i, 0);
+        break;
+    default:
+        break;
+    }
+}

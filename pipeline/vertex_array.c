@@ -1,0 +1,371 @@
+/*
+ * Client vertex arrays (GL 1.5 spec 2.8): the array pointers and
+ * ArrayElement, DrawArrays, DrawElements, DrawRangeElements; and the
+ * per-vertex transformation shared with immediate mode (2.10-2.11):
+ * clip = (P * M) * obj in float, the order Mesa's fixed-function vertex
+ * program uses (measured against OSMesa feedback: a plain multiply-add
+ * chain, no fused multiply-add), then x_w = fma(x_c * (1/w_c), scale,
+ * translate) as llvmpipe's draw module computes it.
+ *
+ * A draw is fetched into one batch, transformed in one loop and assembled
+ * in primitive.c; buffers grow once and are reused (no per-vertex malloc).
+ */
+#include <math.h>
+#include <string.h>
+#include "vertex_internal.h"
+
+int fs_type_size(GLenum type)
+{
+    switch (type) {
+    case GL_BYTE: case GL_UNSIGNED_BYTE: return 1;
+    case GL_SHORT: case GL_UNSIGNED_SHORT: case GL_2_BYTES: return 2;
+    case GL_3_BYTES: return 3;
+    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT: case GL_4_BYTES: return 4;
+    case GL_DOUBLE: return 8;
+    default: return 0;
+    }
+}
+
+int64_t fs_index_bytes(GLsizei count, GLenum type)
+{
+    if (count <= 0)
+        return 0;
+    if (type != GL_UNSIGNED_BYTE && type != GL_UNSIGNED_SHORT && type != GL_UNSIGNED_INT)
+        return 0;
+    return (int64_t)count * fs_type_size(type);
+}
+
+int64_t fs_calllists_bytes(GLsizei n, GLenum type)
+{
+    if (n <= 0)
+        return 0;
+    switch (type) {
+    case GL_BYTE: case GL_UNSIGNED_BYTE: case GL_SHORT: case GL_UNSIGNED_SHORT:
+    case GL_INT: case GL_UNSIGNED_INT: case GL_FLOAT:
+    case GL_2_BYTES: case GL_3_BYTES: case GL_4_BYTES:
+        return (int64_t)n * fs_type_size(type);
+    default:
+        return 0;
+    }
+}
+
+/* ---- array specification ---- */
+static void set_array(fs_client_array *a, GLint size, GLenum type, GLsizei stride, const void *p)
+{
+    a->size = size;
+    a->type = type;
+    a->stride = stride;
+    a->pointer = p;
+}
+
+void fs_exec_VertexPointer(fs_context *c, GLint size, GLenum type, GLsizei stride, const GLvoid *pointer)
+{
+    if (size < 2 || size > 4 || stride < 0) { fs_error(c, GL_INVALID_VALUE); return; }
+    if (type != GL_SHORT && type != GL_INT && type != GL_FLOAT && type != GL_DOUBLE) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    set_array(&c->arrays.vertex, size, type, stride, pointer);
+}
+
+void fs_exec_NormalPointer(fs_context *c, GLenum type, GLsizei stride, const GLvoid *pointer)
+{
+    if (stride < 0) { fs_error(c, GL_INVALID_VALUE); return; }
+    if (type != GL_BYTE && type != GL_SHORT && type != GL_INT && type != GL_FLOAT && type != GL_DOUBLE) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    set_array(&c->arrays.normal, 3, type, stride, pointer);
+}
+
+void fs_exec_ColorPointer(fs_context *c, GLint size, GLenum type, GLsizei stride, const GLvoid *pointer)
+{
+    if (size < 3 || size > 4 || stride < 0) { fs_error(c, GL_INVALID_VALUE); return; }
+    if (fs_type_size(type) == 0 || type == GL_2_BYTES || type == GL_3_BYTES || type == GL_4_BYTES) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    set_array(&c->arrays.color, size, type, stride, pointer);
+}
+
+void fs_exec_TexCoordPointer(fs_context *c, GLint size, GLenum type, GLsizei stride, const GLvoid *pointer)
+{
+    if (size < 1 || size > 4 || stride < 0) { fs_error(c, GL_INVALID_VALUE); return; }
+    if (type != GL_SHORT && type != GL_INT && type != GL_FLOAT && type != GL_DOUBLE) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    set_array(&c->arrays.texcoord, size, type, stride, pointer);
+}
+
+static fs_client_array *array_of(fs_context *c, GLenum array)
+{
+    switch (array) {
+    case GL_VERTEX_ARRAY: return &c->arrays.vertex;
+    case GL_NORMAL_ARRAY: return &c->arrays.normal;
+    case GL_COLOR_ARRAY: return &c->arrays.color;
+    case GL_TEXTURE_COORD_ARRAY: return &c->arrays.texcoord;
+    default: return NULL;
+    }
+}
+
+void fs_exec_EnableClientState(fs_context *c, GLenum array)
+{
+    fs_client_array *a = array_of(c, array);
+    if (!a) {
+        /* Arrays fragsim does not model (index, edge flag, ...) are valid
+         * enums: count them instead of raising an error GL would not raise. */
+        if (array == GL_INDEX_ARRAY || array == GL_EDGE_FLAG_ARRAY)
+            fs_unsupported(c, "glEnableClientState(index/edge flag array)");
+        else
+            fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    a->enabled = true;
+}
+
+void fs_exec_DisableClientState(fs_context *c, GLenum array)
+{
+    fs_client_array *a = array_of(c, array);
+    if (!a) {
+        if (array != GL_INDEX_ARRAY && array != GL_EDGE_FLAG_ARRAY)
+            fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    a->enabled = false;
+}
+
+/* ---- fetch ---- */
+/* Reads up to `size` components of element i; `norm` applies the colour
+ * conversions of table 2.9 to integer types. */
+static void fetch(const fs_client_array *a, size_t i, float out[4], bool norm)
+{
+    int esz = fs_type_size(a->type);
+    size_t stride = a->stride ? (size_t)a->stride : (size_t)esz * (size_t)a->size;
+    const unsigned char *p = (const unsigned char *)a->pointer + i * stride;
+    for (int k = 0; k < a->size; k++) {
+        float v;
+        switch (a->type) {
+        case GL_FLOAT: { float f; memcpy(&f, p + 4 * k, 4); v = f; break; }
+        case GL_DOUBLE: { double d; memcpy(&d, p + 8 * k, 8); v = (float)d; break; }
+        case GL_UNSIGNED_BYTE: { uint8_t u = p[k]; v = norm ? (float)u / 255.0f : (float)u; break; }
+        case GL_BYTE: { int8_t s = (int8_t)p[k]; v = norm ? (2.0f * s + 1.0f) / 255.0f : (float)s; break; }
+        case GL_UNSIGNED_SHORT: { uint16_t u; memcpy(&u, p + 2 * k, 2); v = norm ? (float)u / 65535.0f : (float)u; break; }
+        case GL_SHORT: { int16_t s; memcpy(&s, p + 2 * k, 2); v = norm ? (2.0f * s + 1.0f) / 65535.0f : (float)s; break; }
+        case GL_UNSIGNED_INT: { uint32_t u; memcpy(&u, p + 4 * k, 4); v = norm ? (float)(u / 4294967295.0) : (float)u; break; }
+        case GL_INT: { int32_t s; memcpy(&s, p + 4 * k, 4); v = norm ? (float)((2.0 * s + 1.0) / 4294967295.0) : (float)s; break; }
+        default: v = 0.0f; break;
+        }
+        out[k] = v;
+    }
+}
+
+/* Fills one input vertex from the enabled arrays, the current values
+ * elsewhere. */
+static void fetch_vertex(fs_context *c, size_t i, fs_ivert *o)
+{
+    const fs_array_state *A = &c->arrays;
+    o->obj[0] = o->obj[1] = o->obj[2] = 0.0f;
+    o->obj[3] = 1.0f;
+    fetch(&A->vertex, i, o->obj, false);
+    if (A->color.enabled) {
+        o->col[3] = 1.0f;
+        fetch(&A->color, i, o->col, true);
+    } else {
+        memcpy(o->col, c->current.color, sizeof o->col);
+    }
+    if (A->normal.enabled) {
+        float n[4];
+        fetch(&A->normal, i, n, true);
+        memcpy(o->nrm, n, sizeof o->nrm);
+    } else {
+        memcpy(o->nrm, c->current.normal, sizeof o->nrm);
+    }
+    if (A->texcoord.enabled) {
+        o->tc[0] = o->tc[1] = o->tc[2] = 0.0f;
+        o->tc[3] = 1.0f;
+        fetch(&A->texcoord, i, o->tc, false);
+    } else {
+        memcpy(o->tc, c->current.texcoord, sizeof o->tc);
+    }
+}
+
+/* ---- transformation ---- */
+void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
+{
+    const fs_transform_state *x = &c->xf;
+    const float *mv = x->modelview[x->modelview_top].m;
+    memcpy(s->mv, mv, sizeof s->mv);
+    fs_mat_mul(s->mvp, x->projection[x->projection_top].m, mv);
+    memcpy(s->tex, x->texture[x->texture_top].m, sizeof s->tex);
+    float id[16];
+    fs_mat_identity(id);
+    s->tex_identity = memcmp(s->tex, id, sizeof id) == 0;
+    fs_viewport_xform(c, s->vp_scale, s->vp_trans);
+    s->flat = c->lighting.shade_model == GL_FLAT;
+    fs_lighting_setup(c, s);
+    if (s->lighting) {
+        float inv[16];
+        fs_mat_invert(inv, mv);
+        for (int r = 0; r < 3; r++)
+            for (int k = 0; k < 3; k++)
+                s->nmat[r * 3 + k] = inv[r * 4 + k];
+        float d = inv[2] * inv[2] + inv[6] * inv[6] + inv[10] * inv[10];
+        s->nscale = d > 0.0f ? 1.0f / sqrtf(d) : 1.0f;
+    }
+}
+
+static float clamp01(float v)
+{
+    return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+}
+
+void fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n)
+{
+    const float sx = s->vp_scale[0], sy = s->vp_scale[1], sz = s->vp_scale[2];
+    const float tx = s->vp_trans[0], ty = s->vp_trans[1], tz = s->vp_trans[2];
+    for (size_t i = 0; i < n; i++) {
+        const fs_ivert *v = &in[i];
+        fs_pvert *o = &out[i];
+        fs_mat_xform4(o->clip, s->mvp, v->obj);
+        o->mask = fs_clip_mask(o->clip);
+        /* Computed for every vertex: points and lines outside only the x/y
+         * planes are drawn unclipped.  w = 0 gives infinities, not a trap. */
+        const float iw = 1.0f / o->clip[3];
+        o->win[0] = fmaf(o->clip[0] * iw, sx, tx);
+        o->win[1] = fmaf(o->clip[1] * iw, sy, ty);
+        o->win[2] = fmaf(o->clip[2] * iw, sz, tz);
+        o->win[3] = iw;
+        if (s->lighting) {
+            float eye[4] = {0, 0, 0, 1}, nrm[3];
+            if (s->need_eye)
+                fs_mat_xform4(eye, s->mv, v->obj);
+            for (int r = 0; r < 3; r++)
+                nrm[r] = s->nmat[r * 3] * v->nrm[0] + s->nmat[r * 3 + 1] * v->nrm[1] + s->nmat[r * 3 + 2] * v->nrm[2];
+            if (s->rescale && !s->normalize) {
+                nrm[0] *= s->nscale; nrm[1] *= s->nscale; nrm[2] *= s->nscale;
+            }
+            if (s->normalize) {
+                float l2 = nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2];
+                if (l2 > 0.0f) {
+                    float inv = 1.0f / sqrtf(l2);
+                    nrm[0] *= inv; nrm[1] *= inv; nrm[2] *= inv;
+                }
+            }
+            fs_light_vertex(s, eye, nrm, v->col, o->col);
+        } else {
+            for (int k = 0; k < 4; k++)
+                o->col[0][k] = clamp01(v->col[k]);
+        }
+        if (s->tex_identity)
+            memcpy(o->tc, v->tc, sizeof o->tc);
+        else
+            fs_mat_xform4(o->tc, s->tex, v->tc);
+    }
+}
+
+/* ---- drawing ---- */
+void fs_exec_ArrayElement(fs_context *c, GLint i)
+{
+    if (i < 0) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    fs_ivert v;
+    fetch_vertex(c, (size_t)i, &v);
+    /* GL 1.5 spec 2.8: the array values become current, as if the
+     * corresponding commands had been called. */
+    if (c->arrays.color.enabled) fs_exec_Color4fv(c, v.col);
+    if (c->arrays.normal.enabled) fs_exec_Normal3fv(c, v.nrm);
+    if (c->arrays.texcoord.enabled) memcpy(c->current.texcoord, v.tc, sizeof v.tc);
+    if (c->arrays.vertex.enabled) fs_exec_Vertex4fv(c, v.obj);
+}
+
+static void draw_batch(fs_context *c, GLenum mode, size_t n, const uint32_t *idx, size_t count, bool elements)
+{
+    fs_vs_impl *v = fs_vs(c);
+    if (!fs_vs_reserve_pv(c, n)) {
+        fs_error(c, GL_OUT_OF_MEMORY);
+        return;
+    }
+    fs_vs_prepare(c, &v->setup);
+    fs_vs_process(&v->setup, v->iv, v->pv, n);
+    fs_prim_draw(c, &v->setup, mode, v->pv, idx, count, elements);
+}
+
+void fs_exec_DrawArrays(fs_context *c, GLenum mode, GLint first, GLsizei count)
+{
+    if (!fs_prim_mode_valid(mode)) { fs_error(c, GL_INVALID_ENUM); return; }
+    if (count < 0 || first < 0) { fs_error(c, GL_INVALID_VALUE); return; }
+    if (!c->arrays.vertex.enabled || count == 0 || !fs_vs(c))
+        return;
+    if (!fs_vs_reserve_iv(c, (size_t)count)) { fs_error(c, GL_OUT_OF_MEMORY); return; }
+    fs_vs_impl *v = fs_vs(c);
+    for (GLsizei i = 0; i < count; i++)
+        fetch_vertex(c, (size_t)first + (size_t)i, &v->iv[i]);
+    c->stats.vertices += (uint64_t)count;
+    draw_batch(c, mode, (size_t)count, NULL, (size_t)count, c->prim.list_depth > 0);
+}
+
+static uint32_t index_at(const void *indices, GLenum type, size_t i)
+{
+    switch (type) {
+    case GL_UNSIGNED_BYTE: return ((const uint8_t *)indices)[i];
+    case GL_UNSIGNED_SHORT: { uint16_t u; memcpy(&u, (const char *)indices + 2 * i, 2); return u; }
+    default: { uint32_t u; memcpy(&u, (const char *)indices + 4 * i, 4); return u; }
+    }
+}
+
+static void draw_elements(fs_context *c, GLenum mode, GLsizei count, GLenum type, const GLvoid *indices)
+{
+    if (!c->arrays.vertex.enabled || count == 0 || !indices || !fs_vs(c))
+        return;
+    size_t n = (size_t)count;
+    uint32_t lo = UINT32_MAX, hi = 0;
+    for (size_t i = 0; i < n; i++) {
+        uint32_t k = index_at(indices, type, i);
+        lo = k < lo ? k : lo;
+        hi = k > hi ? k : hi;
+    }
+    size_t range = (size_t)(hi - lo) + 1;
+    fs_vs_impl *v;
+    c->stats.vertices += n;
+    if (range <= 2 * n + 64) {
+        /* Dense indices: transform each referenced vertex once. */
+        if (!fs_vs_reserve_iv(c, range) || !fs_vs_reserve_idx(c, n)) { fs_error(c, GL_OUT_OF_MEMORY); return; }
+        v = fs_vs(c);
+        for (size_t i = 0; i < range; i++)
+            fetch_vertex(c, lo + i, &v->iv[i]);
+        for (size_t i = 0; i < n; i++)
+            v->idx[i] = index_at(indices, type, i) - lo;
+        draw_batch(c, mode, range, v->idx, n, true);
+    } else {
+        /* Sparse indices: fetch in index order, so memory follows count. */
+        if (!fs_vs_reserve_iv(c, n)) { fs_error(c, GL_OUT_OF_MEMORY); return; }
+        v = fs_vs(c);
+        for (size_t i = 0; i < n; i++)
+            fetch_vertex(c, index_at(indices, type, i), &v->iv[i]);
+        draw_batch(c, mode, n, NULL, n, true);
+    }
+}
+
+static bool index_type_valid(GLenum type)
+{
+    return type == GL_UNSIGNED_BYTE || type == GL_UNSIGNED_SHORT || type == GL_UNSIGNED_INT;
+}
+
+void fs_exec_DrawElements(fs_context *c, GLenum mode, GLsizei count, GLenum type, const GLvoid *indices)
+{
+    if (!fs_prim_mode_valid(mode) || !index_type_valid(type)) { fs_error(c, GL_INVALID_ENUM); return; }
+    if (count < 0) { fs_error(c, GL_INVALID_VALUE); return; }
+    draw_elements(c, mode, count, type, indices);
+}
+
+void fs_exec_DrawRangeElements(fs_context *c, GLenum mode, GLuint start, GLuint end, GLsizei count,
+                               GLenum type, const GLvoid *indices)
+{
+    if (!fs_prim_mode_valid(mode) || !index_type_valid(type)) { fs_error(c, GL_INVALID_ENUM); return; }
+    if (count < 0 || end < start) { fs_error(c, GL_INVALID_VALUE); return; }
+    /* Indices outside [start, end] are allowed to be used as they are. */
+    draw_elements(c, mode, count, type, indices);
+}

@@ -1,0 +1,133 @@
+/*
+ * Private interface between the files of the vertex stage (GL 1.5 spec
+ * chapter 2): the per-vertex records that flow from attribute fetch
+ * (immediate.c, vertex_array.c) through transformation and lighting
+ * (transform in vertex_array.c's fs_vs_process, lighting.c) to primitive
+ * assembly (primitive.c) and clipping (clip.c).
+ */
+#ifndef FS_VERTEX_INTERNAL_H
+#define FS_VERTEX_INTERNAL_H
+#include <stddef.h>
+#include <stdint.h>
+#include "context.h"
+
+#define FS_PI 3.14159265358979323846
+
+/* A vertex as submitted: object position and the attributes current when
+ * it was specified. */
+typedef struct fs_ivert {
+    float obj[4];
+    float col[4];
+    float nrm[3];
+    float tc[4];
+} fs_ivert;
+
+/* A vertex after transformation and lighting. */
+typedef struct fs_pvert {
+    float clip[4];
+    float win[4];     /* x, y, z in window space, 1/w; valid when mask == 0 */
+    float col[2][4];  /* front and back colour, clamped */
+    float tc[4];
+    unsigned mask;    /* bit i: outside clip plane i (clip.c's order) */
+} fs_pvert;
+
+typedef struct fs_light_setup {
+    float amb[4], dif[4], spe[4];   /* light colours (material applied per vertex) */
+    float pos[4];                   /* eye position */
+    float vp_inf[3], h_inf[3];      /* normalised direction and half vector, directional lights */
+    float spot_dir[3];              /* normalised */
+    float cos_cutoff, spot_exp;
+    float att[3];
+    bool positional, spot;
+} fs_light_setup;
+
+/* State derived once per draw from the GL state. */
+typedef struct fs_vs_setup {
+    float mvp[16];      /* projection * modelview, float, as Mesa */
+    float mv[16];
+    float nmat[9];      /* rows of the inverse transpose (upper 3x3) */
+    float nscale;       /* GL_RESCALE_NORMAL factor */
+    float tex[16];
+    bool tex_identity;
+    float vp_scale[3], vp_trans[3];
+    /* lighting */
+    bool lighting, two_side, local_viewer, need_eye, normalize, rescale;
+    int nlights;
+    fs_light_setup light[FS_MAX_LIGHTS];
+    float model_ambient[4];
+    fs_material mat[2];
+    int cm_face_mask;   /* bit 0 front, bit 1 back: faces tracking the colour */
+    GLenum cm_mode;
+    bool flat;
+} fs_vs_setup;
+
+/* Growable buffers kept across draws (no per-vertex allocation). */
+typedef struct fs_vs_impl {
+    fs_ivert *iv;
+    size_t iv_n, iv_cap;
+    fs_pvert *pv;
+    size_t pv_cap;
+    uint32_t *idx;
+    size_t idx_cap;
+    fs_vs_setup setup;
+    /* Tests observe what reaches the rasterizer through this (NULL in use). */
+    void (*tri_hook)(void *user, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2);
+    void *hook_user;
+} fs_vs_impl;
+
+static inline fs_vs_impl *fs_vs(fs_context *c) { return (fs_vs_impl *)c->prim.impl; }
+
+/* Buffer growth; returns false when out of memory. */
+bool fs_vs_reserve_iv(fs_context *c, size_t n);
+bool fs_vs_reserve_pv(fs_context *c, size_t n);
+bool fs_vs_reserve_idx(fs_context *c, size_t n);
+
+/* matrix.c */
+void fs_mat_identity(float m[16]);
+void fs_mat_mul(float r[16], const float a[16], const float b[16]); /* r = a * b */
+bool fs_mat_invert(float r[16], const float m[16]);
+/* Transforms with the accumulation order Mesa's vertex program uses. */
+static inline void fs_mat_xform4(float o[4], const float m[16], const float v[4])
+{
+    for (int r = 0; r < 4; r++) {
+        float a = m[r] * v[0];
+        a = a + m[4 + r] * v[1];
+        a = a + m[8 + r] * v[2];
+        a = a + m[12 + r] * v[3];
+        o[r] = a;
+    }
+}
+
+/* viewport.c */
+void fs_viewport_xform(fs_context *c, float scale[3], float trans[3]);
+
+/* lighting.c */
+void fs_lighting_setup(fs_context *c, fs_vs_setup *s);
+/* Lights one vertex: eye position (when s->need_eye), eye normal, vertex
+ * colour; writes clamped front and (if two-sided) back colours. */
+void fs_light_vertex(const fs_vs_setup *s, const float eye[4], const float n[3],
+                     const float col[4], float out[2][4]);
+
+/* vertex_array.c: transformation of a batch of vertices */
+void fs_vs_prepare(fs_context *c, fs_vs_setup *s);
+void fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n);
+
+/* primitive.c: assembles a primitive from processed vertices.  idx may be
+ * NULL (vertices in order).  elements: the draw came as indices (glDrawElements
+ * or a display list), which Mesa splits quads differently for. */
+void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, const fs_pvert *pv,
+                  const uint32_t *idx, size_t count, bool elements);
+bool fs_prim_mode_valid(GLenum mode);
+
+/* clip.c */
+unsigned fs_clip_mask(const float clip[4]);
+void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
+                      const fs_pvert *v1, const fs_pvert *v2, int provoking);
+void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1);
+/* Emits an unclipped triangle (all masks zero). provoking: index 0..2 of the
+ * vertex whose colour flat shading uses, or -1 for smooth shading. */
+void fs_emit_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
+                      const fs_pvert *v1, const fs_pvert *v2, int provoking);
+void fs_emit_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1);
+void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v);
+#endif
