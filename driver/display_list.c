@@ -310,6 +310,9 @@ static void execute_list(fs_context *c, GLuint name)
     if (s->depth >= FS_MAX_LIST_NESTING)
         return; /* the spec bounds nesting; deeper calls are ignored */
     s->depth++;
+    /* Mesa splits quads from display lists along another diagonal than
+     * immediate mode; the vertex stage needs to know (vertex_stage.h). */
+    c->prim.list_depth++;
     for (size_t i = 0; i < l->n; i++) {
         dl_entry *e = &l->entries[i];
         if (e->arrays) {
@@ -321,6 +324,7 @@ static void execute_list(fs_context *c, GLuint name)
             fs_dispatch(c, &e->call);
         }
     }
+    c->prim.list_depth--;
     s->depth--;
 }
 

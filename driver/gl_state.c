@@ -76,6 +76,8 @@ static void set_cap(fs_context *c, GLenum cap, bool on)
         return;
     }
     *flag = on;
+    if (cap == GL_COLOR_MATERIAL && on)
+        fs_color_material_update(c); /* GL 1.5 spec 2.14.3: tracks the current colour at once */
     if (!on)
         return;
     for (size_t i = 0; i < N_UNMODELLED; i++) {
@@ -191,7 +193,9 @@ static bool get_state(fs_context *c, GLenum pname, get_result *r)
     double v[4];
     switch (pname) {
     case GL_VIEWPORT:
-        for (int i = 0; i < 4; i++) v[i] = c->xf.viewport[i];
+        /* Until glViewport is called the viewport is the window (2.11.1). */
+        for (int i = 0; i < 4; i++)
+            v[i] = c->xf.viewport_set ? c->xf.viewport[i] : i < 2 ? 0 : i == 2 ? c->fb.width : c->fb.height;
         put(r, GET_NUM, 4, v);
         return true;
     case GL_MAX_VIEWPORT_DIMS:
