@@ -1,0 +1,179 @@
+/*
+ * Scene generators: shared emitter.
+ *
+ * Every scene draws through an sg emitter rather than calling fsgl* directly,
+ * so that the triangles a scene submits are counted by code that does not
+ * depend on fragsim's pipeline statistics, and so that a scene can be run
+ * in "count only" mode (no context at all) to report its size at paper
+ * scale in milliseconds instead of rendering millions of triangles.
+ *
+ * Counting rule (GL 1.5 spec 2.6.1): triangles a primitive decomposes into;
+ * display lists count when called (nested calls expanded), not when compiled.
+ */
+#ifndef FS_SG_H
+#define FS_SG_H
+#include <stddef.h>
+#include <stdint.h>
+#include <GL/gl.h>
+#include "../driver/gl_call.h"
+
+typedef struct sg_rng { uint64_t s; } sg_rng;
+
+void sg_rng_seed(sg_rng *r, uint64_t seed);
+uint64_t sg_rng_u64(sg_rng *r);
+double sg_rng_unit(sg_rng *r);                 /* [0, 1) */
+double sg_rng_range(sg_rng *r, double lo, double hi);
+int sg_rng_int(sg_rng *r, int n);              /* [0, n) */
+
+typedef struct sg {
+    fs_context *c;        /* NULL in count-only mode: nothing is sent */
+    uint64_t calls;       /* fsgl calls issued (what a trace reader sees, minus frame ends) */
+    uint64_t pointer_calls; /* of which gl*Pointer */
+    uint64_t tris;        /* triangles executed, all frames */
+    uint64_t frame_tris;  /* triangles executed in the current frame */
+    uint64_t max_frame_tris, min_frame_tris;
+    int frames;
+
+    GLenum prim_mode;     /* current glBegin mode */
+    int in_prim;
+    uint64_t prim_verts;
+
+    uint64_t *list_tris;  /* triangles per display-list name */
+    uint32_t list_cap;
+    GLuint next_list;     /* names handed out in count-only mode */
+    GLuint compiling;     /* 0 when not compiling */
+    uint64_t compile_tris;
+
+    int misuse;           /* a scene broke a GL rule the counter relies on */
+    int oom;
+
+    void *scratch[4];     /* reusable client-array buffers (see sg_buf) */
+    size_t scratch_size[4];
+} sg;
+
+/* Client-array pointer calls: a capture records their data as apitrace's
+ * "fake" calls before each draw, so a trace reader sees them differently. */
+#define SG_IS_POINTER(id) \
+    ((id) == FS_CMD_VertexPointer || (id) == FS_CMD_NormalPointer || \
+     (id) == FS_CMD_ColorPointer || (id) == FS_CMD_TexCoordPointer)
+/* Sends fsgl<Name> when there is a context; counts it either way. */
+#define G(s, Name, ...) \
+    do { \
+        (s)->calls++; \
+        if (SG_IS_POINTER(FS_CMD_##Name)) (s)->pointer_calls++; \
+        if ((s)->c) fsgl##Name((s)->c, __VA_ARGS__); \
+    } while (0)
+#define G0(s, Name) \
+    do { (s)->calls++; if ((s)->c) fsgl##Name((s)->c); } while (0)
+
+void sg_init(sg *s, fs_context *c);
+void sg_free(sg *s);
+/* Triangles a primitive of n vertices makes (GL 1.5 spec 2.6.1). */
+uint64_t sg_prim_tris(GLenum mode, uint64_t n);
+
+void sg_begin(sg *s, GLenum mode);
+void sg_end(sg *s);
+void sg_vtx(sg *s, float x, float y, float z);
+void sg_vtxv(sg *s, const float *v);
+void sg_nrm(sg *s, float x, float y, float z);
+void sg_col(sg *s, float r, float g, float b);
+
+void sg_draw_arrays(sg *s, GLenum mode, GLint first, GLsizei count);
+void sg_draw_elements(sg *s, GLenum mode, GLsizei count, GLenum type, const void *idx);
+
+GLuint sg_gen_lists(sg *s, GLsizei n);
+void sg_new_list(sg *s, GLuint list);
+void sg_end_list(sg *s);
+void sg_call_list(sg *s, GLuint list);
+/* Triangles a compiled list makes when called. */
+uint64_t sg_list_tris(const sg *s, GLuint list);
+
+/* Clears colour and depth. */
+void sg_frame_begin(sg *s, float r, float g, float b);
+/* glFlush, then the frame boundary in the trace. */
+void sg_frame_end(sg *s);
+
+/* A growable client-array buffer; slot 0..3.  NULL on out of memory. */
+void *sg_buf(sg *s, int slot, size_t bytes);
+
+/* ---- camera helpers (no GLU in the command table) ---- */
+void sg_perspective(sg *s, double fovy_deg, double aspect, double znear, double zfar);
+void sg_look_at(sg *s, const float eye[3], const float at[3], const float up[3]);
+void sg_light(sg *s, GLenum light, const float pos[4], const float diffuse[4],
+              const float ambient[4], const float specular[4]);
+
+/* ---- geometry: each opens and closes its own primitives ---- */
+/* A quad grid of nu x nv cells over origin o and edges u, v, facing u x v. */
+void sg_grid(sg *s, const float o[3], const float u[3], const float v[3], int nu, int nv);
+/* An axis-aligned box, flat faces, one GL_QUADS; 'bottom' adds the -y face:
+ * 10 or 12 triangles. */
+void sg_box(sg *s, float x0, float y0, float z0, float x1, float y1, float z1, int bottom);
+/* A cylinder on the y axis from y=0 to y=h, smooth sides as one
+ * GL_QUAD_STRIP per stack, caps as GL_TRIANGLE_FANs: 2*sl*st (+sl per cap). */
+void sg_cylinder(sg *s, float r, float h, int slices, int stacks, int caps);
+/* A sphere: GL_TRIANGLE_FAN poles, GL_TRIANGLE_STRIP bands: 2*sl*(st-1). */
+void sg_sphere(sg *s, float r, int slices, int stacks);
+/* A torus around y: one GL_TRIANGLE_STRIP per minor band: 2*nu*nv. */
+void sg_torus(sg *s, float R, float r, int nu, int nv);
+/* A flat disc of exactly n triangles (n >= 1) in the plane through c with
+ * normal +y, as a GL_TRIANGLE_FAN (or GL_POLYGON when polygon is set): lets a
+ * scene hit an exact triangle budget with a rug, a rose window or a label. */
+void sg_disc(sg *s, float cx, float cy, float cz, float radius, uint64_t n, int polygon);
+
+/* Deterministic 2D value-noise fractal in [-1, 1] (octaves of lattice noise). */
+double sg_fractal(uint64_t seed, double x, double y, int octaves);
+
+/* ---- scenes ---- */
+typedef struct sg_params {
+    uint64_t target;   /* triangles per frame to aim for */
+    int paper;         /* 1 at paper scale (selects the paper's object counts) */
+    int frames;
+    int width, height;
+    uint64_t seed;
+} sg_params;
+
+typedef struct sg_scene {
+    const char *name;
+    const char *summary;
+    const char *paper;       /* source and the workload size it reports */
+    uint64_t paper_tris;     /* the paper's triangle count (0: none) */
+    uint64_t small_tris;
+    int small_frames, paper_frames;
+    int small_size, paper_size;
+    /* Draws every frame; returns 0, or -1 (with err) on failure. */
+    int (*run)(sg *s, const sg_params *p, char *err, size_t errlen);
+} sg_scene;
+
+extern const sg_scene sg_scenes[];
+extern const int sg_scene_count;
+const sg_scene *sg_find_scene(const char *name);
+
+typedef struct sg_report {
+    uint64_t tris_total;
+    uint64_t tris_per_frame;   /* of the first frame (all frames equal unless noted) */
+    uint64_t min_frame_tris, max_frame_tris;
+    uint64_t calls;            /* fsgl calls, excluding frame ends */
+    uint64_t pointer_calls;    /* of which gl*Pointer */
+    int frames;
+} sg_report;
+
+/* Fills p with the scene's defaults for scale "small", "paper" or a number
+ * (triangles per frame).  Returns -1 on a bad scale. */
+int sg_default_params(const sg_scene *sc, const char *scale, sg_params *p);
+/* Writes the trace: a width x height context in capture mode. */
+int sg_generate(const sg_scene *sc, const sg_params *p, const char *path,
+                sg_report *rep, char *err, size_t errlen);
+/* Runs the scene without a context and reports what it would submit. */
+int sg_count(const sg_scene *sc, const sg_params *p, sg_report *rep, char *err, size_t errlen);
+
+/* Scene entry points (traces/scene_*.c). */
+int sg_scene_city(sg *s, const sg_params *p, char *err, size_t errlen);
+int sg_scene_norwich(sg *s, const sg_params *p, char *err, size_t errlen);
+int sg_scene_cathedrals(sg *s, const sg_params *p, char *err, size_t errlen);
+int sg_scene_forest(sg *s, const sg_params *p, char *err, size_t errlen);
+int sg_scene_garbage(sg *s, const sg_params *p, char *err, size_t errlen);
+int sg_scene_terrain(sg *s, const sg_params *p, char *err, size_t errlen);
+int sg_scene_demo(sg *s, const sg_params *p, char *err, size_t errlen);
+int sg_scene_bench8(sg *s, const sg_params *p, char *err, size_t errlen);
+int sg_scene_bench32(sg *s, const sg_params *p, char *err, size_t errlen);
+#endif
