@@ -1,9 +1,264 @@
-/* Line segments (GL 1.5 spec 3.4): placeholder until the llvmpipe line rules are modelled. */
+/*
+ * Line segments (GL 1.5 spec 3.4), modelled on llvmpipe's lp_setup_line.c
+ * (Mesa 22.3, read for the rules): a non-antialiased line is a
+ * parallelogram of width w (rounded to an integer) along the minor axis,
+ * whose end edges are moved by half a pixel so that the diamond-exit rule
+ * (3.4.1) decides whether the first and last pixels are drawn; it is then
+ * rasterized with the triangle fill convention.  Attributes are planes along
+ * the major axis ("preferred wide-lines formula").
+ */
+#include <math.h>
 #include "rasterizer_priv.h"
 
-void fs_raster_line(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1)
+#ifdef __clang__
+#pragma STDC FP_CONTRACT OFF
+#endif
+
+/* llvmpipe's util_iround on x86-64: round half away from zero. */
+static inline int64_t iround(float f)
 {
-    (void)v0;
-    (void)v1;
+    return f >= 0.0f ? (int64_t)(f + 0.5f) : (int64_t)(f - 0.5f);
+}
+
+static inline bool sgn(float x) { return x >= 0.0f; }
+static inline float fracf(float f) { return f - floorf(f); }
+
+typedef struct line_info {
+    float dx, dy, ooa;
+    float x1, y1;   /* first vertex position (before any swap) */
+} line_info;
+
+/* lp_setup_line.c linear_coef: planes relative to the first vertex. */
+static void line_coef(fs_plane *p, const line_info *li, float a1, float a2)
+{
+    float da21 = a1 - a2;
+    float t1 = da21 * li->dx;
+    float dadx = t1 * li->ooa;
+    float t2 = da21 * li->dy;
+    float dady = t2 * li->ooa;
+    float ax = dadx * (li->x1 - 0.5f);
+    float ay = dady * (li->y1 - 0.5f);
+    float sum = ax + ay;
+    p->a0 = a1 - sum;
+    p->dadx = dadx;
+    p->dady = dady;
+    p->constant = dadx == 0.0f && dady == 0.0f && p->a0 == a1;
+}
+
+void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
+{
+    const fs_raster_state *r = &c->raster;
+    const int W = c->fb.width, H = c->fb.height;
+    const int order = r->subpixel_bits;
+    const float one = (float)(1 << order);
+    float width = r->line_width;
+    if (width != 1.0f) {
+        fs_unsupported(c, "wide lines");
+        width = 1.0f;
+    }
+    float p1x = va->x, p1y = r->use_y_raster ? va->y_raster : fs_raster_y(H, va->y);
+    float p2x = vb->x, p2y = r->use_y_raster ? vb->y_raster : fs_raster_y(H, vb->y);
+    if (!(fabsf(p1x) < 1e6f) || !(fabsf(p1y) < 1e6f) || !(fabsf(p2x) < 1e6f) || !(fabsf(p2y) < 1e6f)) {
+        c->stats.triangles_culled++;
+        return;
+    }
     c->stats.lines_rasterized++;
+    float dx = p1x - p2x, dy = p1y - p2y;
+    float area = dx * dx + dy * dy;
+    if (area == 0.0f)
+        return;
+    line_info li;
+    li.ooa = 1.0f / area;
+    li.dx = dx;
+    li.dy = dy;
+    li.x1 = p1x;
+    li.y1 = p1y;
+
+    /* Diamond-exit tests in llvmpipe's frame (y down), with x1diff etc. the
+     * offsets of the end points from their pixel centres. */
+    float x1diff = p1x - floorf(p1x) - 0.5f, y1diff = p1y - floorf(p1y) - 0.5f;
+    float x2diff = p2x - floorf(p2x) - 0.5f, y2diff = p2y - floorf(p2y) - 0.5f;
+    int64_t fw = iround(width) * (1 << order);
+    float x_off = 0, y_off = 0, x_off_end = 0, y_off_end = 0;
+    float v1x = p1x, v1y = p1y, v2x = p2x, v2y = p2y;
+    int64_t x[4], y[4];
+    bool draw_start, draw_end, will_start, will_end;
+    if (fabsf(dx) >= fabsf(dy)) {
+        /* x-major */
+        float dydx = dy / dx;
+        if (y2diff == -0.5f && dy < 0.0f)
+            y2diff = 0.5f;
+        if (fabsf(x1diff) + fabsf(y1diff) < 0.5f)
+            draw_start = true;
+        else if (sgn(x1diff) == sgn(-dx))
+            draw_start = false;
+        else if (sgn(-y1diff) != sgn(dy))
+            draw_start = true;
+        else {
+            float yi = fracf(p1y) + x1diff * dydx;
+            draw_start = yi < 1.0f && yi > 0.0f;
+        }
+        if (fabsf(x2diff) + fabsf(y2diff) < 0.5f)
+            draw_end = false;
+        else if (sgn(x2diff) != sgn(-dx))
+            draw_end = false;
+        else if (sgn(-y2diff) == sgn(dy))
+            draw_end = true;
+        else {
+            float yi = fracf(p2y) + x2diff * dydx;
+            draw_end = yi < 1.0f && yi > 0.0f;
+        }
+        float t = dydx * dydx;
+        float t1 = 1.0f + t;
+        li.dx = li.dx * t1;
+        li.dy = 0.0f;
+        if (dx < 0.0f) {
+            v1x = p2x; v1y = p2y; v2x = p1x; v2y = p1y;
+            will_start = x1diff <= 0.0f;
+            if (will_start != draw_start) {
+                x_off_end = -x1diff - 0.5f;
+                y_off_end = x_off_end * dydx;
+            }
+            will_end = x2diff > 0.0f;
+            if (will_end != draw_end) {
+                x_off = -x2diff - 0.5f;
+                y_off = x_off * dydx;
+            }
+        } else {
+            will_start = x1diff > 0.0f;
+            if (will_start != draw_start) {
+                x_off = -x1diff + 0.5f;
+                y_off = x_off * dydx;
+            }
+            will_end = x2diff <= 0.0f;
+            if (will_end != draw_end) {
+                x_off_end = -x2diff + 0.5f;
+                y_off_end = x_off_end * dydx;
+            }
+        }
+        x[0] = iround((v1x + x_off - 0.5f) * one);
+        x[1] = iround((v2x + x_off_end - 0.5f) * one);
+        x[2] = x[1];
+        x[3] = x[0];
+        y[0] = iround((v1y + y_off - 0.5f) * one) - fw / 2;
+        y[1] = iround((v2y + y_off_end - 0.5f) * one) - fw / 2;
+        y[2] = y[1] + fw;
+        y[3] = y[0] + fw;
+    } else {
+        /* y-major */
+        float dxdy = dx / dy;
+        if (x2diff == -0.5f && dx < 0.0f)
+            x2diff = 0.5f;
+        if (fabsf(x1diff) + fabsf(y1diff) < 0.5f)
+            draw_start = true;
+        else if (sgn(-y1diff) == sgn(dy))
+            draw_start = false;
+        else if (sgn(x1diff) != sgn(-dx))
+            draw_start = true;
+        else {
+            float xi = fracf(p1x) + y1diff * dxdy;
+            draw_start = xi < 1.0f && xi > 0.0f;
+        }
+        if (fabsf(x2diff) + fabsf(y2diff) < 0.5f)
+            draw_end = false;
+        else if (sgn(-y2diff) != sgn(dy))
+            draw_end = false;
+        else if (sgn(x2diff) == sgn(-dx))
+            draw_end = true;
+        else {
+            float xi = fracf(p2x) + y2diff * dxdy;
+            draw_end = xi < 1.0f && xi >= 0.0f;
+        }
+        float t = dxdy * dxdy;
+        float t1 = 1.0f + t;
+        li.dx = 0.0f;
+        li.dy = li.dy * t1;
+        /* GL's bottom-left convention is llvmpipe's bottom_edge_rule. */
+        if (dy > 0.0f) {
+            v1x = p2x; v1y = p2y; v2x = p1x; v2y = p1y;
+            will_start = y1diff >= 0.0f;
+            will_end = y2diff < 0.0f;
+            if (will_start != draw_start) {
+                y_off_end = -y1diff + 0.5f;
+                x_off_end = y_off_end * dxdy;
+            }
+            if (will_end != draw_end) {
+                y_off = -y2diff + 0.5f;
+                x_off = y_off * dxdy;
+            }
+        } else {
+            will_start = y1diff < 0.0f;
+            will_end = y2diff >= 0.0f;
+            if (will_start != draw_start) {
+                y_off = -y1diff - 0.5f;
+                x_off = y_off * dxdy;
+            }
+            if (will_end != draw_end) {
+                y_off_end = -y2diff - 0.5f;
+                x_off_end = y_off_end * dxdy;
+            }
+        }
+        x[0] = iround((v1x + x_off - 0.5f) * one) - fw / 2;
+        x[1] = iround((v2x + x_off_end - 0.5f) * one) - fw / 2;
+        x[2] = x[1] + fw;
+        x[3] = x[0] + fw;
+        y[0] = iround((v1y + y_off - 0.5f) * one);
+        y[1] = iround((v2y + y_off_end - 0.5f) * one);
+        y[2] = y[1];
+        y[3] = y[0];
+    }
+
+    /* Bounding box (llvmpipe rounds both ends up for lines). */
+    const int adj = 1;
+    int64_t minx = x[0], maxx = x[0], miny = y[0], maxy = y[0];
+    for (int i = 1; i < 4; i++) {
+        if (x[i] < minx) minx = x[i];
+        if (x[i] > maxx) maxx = x[i];
+        if (y[i] < miny) miny = y[i];
+        if (y[i] > maxy) maxy = y[i];
+    }
+    const int64_t round_up = (1 << order) - 1;
+    int64_t bx0 = fs_floor_shift(minx + round_up, order);
+    int64_t bx1 = fs_floor_shift(maxx + round_up, order) - 1;
+    int64_t by0 = fs_floor_shift(miny + round_up + adj, order);
+    int64_t by1 = fs_floor_shift(maxy + round_up + adj, order) - 1;
+    if (bx0 < 0) bx0 = 0;
+    if (by0 < 0) by0 = 0;
+    if (bx1 > W - 1) bx1 = W - 1;
+    if (by1 > H - 1) by1 = H - 1;
+    if (bx0 > bx1 || by0 > by1)
+        return;
+
+    fs_edge_planes e;
+    e.n = 4;
+    for (int i = 0; i < 4; i++)
+        fs_edge_plane(&e, i, x[i], y[i], x[(i + 1) & 3], y[(i + 1) & 3], order);
+    e.x0 = (int)bx0;
+    e.x1 = (int)bx1;
+    e.y0 = (int)by0;
+    e.y1 = (int)by1;
+
+    /* Attribute planes from the vertices in their original order. */
+    fs_prim_setup s;
+    s.front = true;
+    s.height = H;
+    s.use_tex = r->interpolate_tex;
+    s.zoffset = 0.0f;
+    line_coef(&s.z, &li, va->z, vb->z);
+    s.perspective = !(va->inv_w == 1.0f && vb->inv_w == 1.0f);
+    if (s.perspective)
+        line_coef(&s.w, &li, va->inv_w, vb->inv_w);
+    for (int k = 0; k < 4; k++) {
+        if (s.perspective)
+            line_coef(&s.color[k], &li, va->color[k] * va->inv_w, vb->color[k] * vb->inv_w);
+        else
+            line_coef(&s.color[k], &li, va->color[k], vb->color[k]);
+        if (s.use_tex) {
+            if (s.perspective)
+                line_coef(&s.tex[k], &li, va->tex[k] * va->inv_w, vb->tex[k] * vb->inv_w);
+            else
+                line_coef(&s.tex[k], &li, va->tex[k], vb->tex[k]);
+        }
+    }
+    fs_raster_planes(c, &s, &e);
 }

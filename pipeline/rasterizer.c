@@ -186,6 +186,49 @@ void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
     fs_fragment_quad(c, q);
 }
 
+/* ---- generic plane regions (lines, points) ---- */
+
+void fs_edge_plane(fs_edge_planes *e, int i, int64_t xa, int64_t ya, int64_t xb, int64_t yb, int order)
+{
+    int64_t dcdx = ya - yb, dcdy = xa - xb;
+    int64_t cc = dcdx * xa - dcdy * ya;
+    /* Same fill convention as triangles: left edges and GL-bottom edges. */
+    if (dcdx < 0 || (dcdx == 0 && dcdy < 0))
+        cc++;
+    e->c[i] = cc;
+    e->dcdx[i] = dcdx * ((int64_t)1 << order);
+    e->dcdy[i] = dcdy * ((int64_t)1 << order);
+}
+
+void fs_raster_planes(fs_context *c, const fs_prim_setup *s, const fs_edge_planes *e)
+{
+    const int H = s->height;
+    int gy0 = fs_raster_row_to_gl(H, e->y1), gy1 = fs_raster_row_to_gl(H, e->y0);
+    for (int qy = gy0 & ~1; qy <= gy1; qy += 2) {
+        for (int qx = e->x0 & ~1; qx <= e->x1; qx += 2) {
+            unsigned mask = 0;
+            for (int i = 0; i < 4; i++) {
+                int px = qx + (i & 1), gy = qy + (i >> 1);
+                int ry = fs_raster_row_to_gl(H, gy);
+                if (px < e->x0 || px > e->x1 || ry < e->y0 || ry > e->y1)
+                    continue;
+                bool in = true;
+                for (int k = 0; k < e->n; k++)
+                    in = in && e->c[k] - e->dcdx[k] * px + e->dcdy[k] * ry > 0;
+                if (in)
+                    mask |= 1u << i;
+            }
+            if (mask) {
+                fs_quad q;
+                q.x = qx;
+                q.y = qy;
+                q.mask = mask;
+                fs_raster_emit_quad(c, s, &q);
+            }
+        }
+    }
+}
+
 /* ---- triangle setup ---- */
 
 typedef struct tri_edges {

@@ -43,6 +43,30 @@ void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q);
  * sets up per primitive. */
 void fs_plane_constant(fs_plane *p, float v);
 
+/* A convex region given by edge planes in the raster frame, as llvmpipe
+ * bins lines (4 planes) and points (4 planes): pixel (x, y) is inside when
+ * c - dcdx*x + dcdy*y > 0 for every plane (fill-rule bias in c, dcdx and
+ * dcdy already scaled to whole pixels). */
+typedef struct fs_edge_planes {
+    int n;
+    int64_t c[4], dcdx[4], dcdy[4];
+    int x0, x1, y0, y1; /* raster-frame bounding box, inclusive, on screen */
+} fs_edge_planes;
+
+/* Adds the fill-rule bias and scales one plane through fixed-point corners
+ * (xa, ya) -> (xb, yb) (llvmpipe's plane setup shared by all primitives). */
+void fs_edge_plane(fs_edge_planes *e, int i, int64_t xa, int64_t ya, int64_t xb, int64_t yb, int order);
+
+/* Emits the quads of the region (per-pixel evaluation; lines and points are
+ * thin, so their bounding boxes are small or sparse). */
+void fs_raster_planes(fs_context *c, const fs_prim_setup *s, const fs_edge_planes *e);
+
+/* Floor division by 2^s that is defined for negative values. */
+static inline int64_t fs_floor_shift(int64_t v, int s)
+{
+    return v >= 0 ? v >> s : -(((-v) - 1) >> s) - 1;
+}
+
 /* The vertical frame flip between GL window coordinates and llvmpipe's raster
  * frame: OSMesa renders to a window-system buffer, which Mesa's state tracker
  * draws upside down and OSMesa flips back on read (measured: see
