@@ -70,7 +70,8 @@ static void usage_replay(FILE *f, bool check)
             check ? "Replays TRACE on the model and on OSMesa (llvmpipe, in this process) and\n"
                     "reports per frame: pixels whose colour differs, the largest channel\n"
                     "difference, PSNR and pixels whose depth differs.  Exit status 0 only when\n"
-                    "every frame's largest colour difference is within the tolerance.\n\n"
+                    "every frame's largest colour difference is within the tolerance (3 when\n"
+                    "not); for such frames DIR gets model_N.png, osmesa_N.png and diff_N.png.\n\n"
                   : "Replays TRACE on the model; writes DIR/frame_NNNN.png per frame and a JSON\n"
                     "statistics file (per frame counters, unsupported calls by name).\n\n",
             check ? "check" : "stats",
@@ -345,6 +346,38 @@ static void print_unsupported(FILE *f, const fs_context *c, const fs_replayer *r
     fs_replay_print_skipped(r, f);
 }
 
+/* For a frame beyond tolerance, writes the model's image, OSMesa's and a
+ * difference image (differing pixels white on black, scaled by 8) so the
+ * user can see where they disagree. */
+static int save_mismatch(const char *dir, long frame, const uint8_t *model, const uint8_t *ref, int w, int h)
+{
+    char path[4200], err[512];
+    size_t n = (size_t)w * (size_t)h;
+    uint8_t *d = malloc(n * 4);
+    if (!d)
+        return -1;
+    for (size_t i = 0; i < n; i++) {
+        int m = 0;
+        for (int ch = 0; ch < 4; ch++) {
+            int x = abs((int)model[4 * i + ch] - (int)ref[4 * i + ch]);
+            if (x > m)
+                m = x;
+        }
+        int v = m * 8 > 255 ? 255 : m * 8;
+        d[4 * i] = d[4 * i + 1] = d[4 * i + 2] = (uint8_t)v;
+        d[4 * i + 3] = 255;
+    }
+    int rc = 0;
+    snprintf(path, sizeof path, "%s/model_%04ld.png", dir, frame);
+    rc |= fs_image_write_png(path, model, w, h, err, sizeof err);
+    snprintf(path, sizeof path, "%s/osmesa_%04ld.png", dir, frame);
+    rc |= fs_image_write_png(path, ref, w, h, err, sizeof err);
+    snprintf(path, sizeof path, "%s/diff_%04ld.png", dir, frame);
+    rc |= fs_image_write_png(path, d, w, h, err, sizeof err);
+    free(d);
+    return rc ? -1 : 0;
+}
+
 static int run_replay(int argc, char **argv, bool check)
 {
     cli_opts o;
@@ -459,6 +492,9 @@ static int run_replay(int argc, char **argv, bool check)
                 fr->has_diff = true;
                 fr->within = fr->diff.max_diff <= o.tolerance;
                 all_within &= fr->within;
+                if (!fr->within && save_mismatch(o.out_dir, frame, c->fb.color, fs_osmesa_color(ref),
+                                                 info->width, info->height) != 0)
+                    fprintf(stderr, "%s: could not write the mismatch images to %s\n", prog, o.out_dir);
                 printf("frame %4ld: %8llu pixels differ, max diff %3d, PSNR %s, %llu depth values differ%s\n",
                        frame, (unsigned long long)fr->diff.pixels_differ, fr->diff.max_diff,
                        isinf(fr->diff.psnr) ? "identical" : (snprintf(err, sizeof err, "%.2f dB", fr->diff.psnr), err),
@@ -555,8 +591,8 @@ static int run_bench(int argc, char **argv)
     for (int i = 0; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             printf("usage: fragsim bench [--engine model|osmesa] [--repeat N] [--size WxH] TRACE\n\n"
-                   "Replays TRACE N times on one engine and prints one JSON line: seconds of\n"
-                   "rendering (trace decoding included, the same for every engine), frames,\n"
+                   "Replays TRACE once untimed, then N times on one engine, and prints one JSON\nline: seconds of"
+                   " rendering (trace decoding included, the same for every engine), frames,\n"
                    "and the model's fragment count.  `make bench` compares the engines.\n");
             return 0;
         } else if (!strcmp(argv[i], "--engine") && i + 1 < argc) {
@@ -587,7 +623,9 @@ static int run_bench(int argc, char **argv)
     const char *renderer = "fragsim";
     fs_context *c = NULL;
     fs_osmesa *ref = NULL;
-    for (long rep = 0; rep < repeat; rep++) {
+    /* Repetition -1 is an untimed warm-up: llvmpipe compiles its shader
+     * variants with LLVM on first use, which is not rendering throughput. */
+    for (long rep = -1; rep < repeat; rep++) {
         fs_replayer *r = fs_replay_open(trace, &ro, err, sizeof err);
         if (!r) {
             fprintf(stderr, "%s: %s\n", prog, err);
@@ -626,7 +664,13 @@ static int run_bench(int argc, char **argv)
             else
                 fs_osmesa_dispatch(ref, &call);
         }
-        seconds += now_seconds() - t0;
+        if (rep >= 0) {
+            seconds += now_seconds() - t0;
+        } else {
+            frames = 0;
+            if (c)
+                memset(&c->stats, 0, sizeof c->stats);
+        }
         fs_replay_close(r);
     }
     if (model)

@@ -10,12 +10,12 @@ REPEAT=${REPEAT:-5}
 OUT=${BENCH_OUT:-$BUILD/bench}
 DOC=${BENCH_DOC:-docs/performance.md}
 mkdir -p "$OUT"
-json() { sed -nE "s/.*\"$2\": \"?([^,\"}]*)\"?.*/\1/p" <<<"$1"; }
+json() { sed -nE -e "s/.*\"$2\": \"([^\"]*)\".*/\1/p" -e t -e "s/.*\"$2\": ([^,}]*).*/\1/p" <<<"$1"; }
 
 rows=()
 for scene in bench8 bench32; do
     trace="$OUT/$scene.trace"
-    "$BUILD/scenegen" "$scene" --size 1024x1024 -o "$trace" >/dev/null
+    "$BUILD/scenegen" "$scene" --scale paper -o "$trace" >/dev/null
     model=$("$BUILD/fragsim" bench --engine model --repeat "$REPEAT" "$trace")
     llvm=$(LP_NUM_THREADS=1 "$BUILD/fragsim" bench --engine osmesa --repeat "$REPEAT" "$trace")
     soft=$(GALLIUM_DRIVER=softpipe "$BUILD/fragsim" bench --engine osmesa --repeat "$REPEAT" "$trace")
