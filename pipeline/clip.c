@@ -50,7 +50,7 @@ static inline float dot4(const float *a, const float *b)
  * filled when it is created. */
 typedef struct cvert {
     float clip[4];
-    float win[4];
+    float win[5];
     float col[2][4];
     float tc[4];
 } cvert;
@@ -75,6 +75,7 @@ static void interp(const fs_vs_setup *s, cvert *d, float t, const cvert *out, co
     d->win[1] = d->clip[1] * oow * s->vp_scale[1] + s->vp_trans[1];
     d->win[2] = d->clip[2] * oow * s->vp_scale[2] + s->vp_trans[2];
     d->win[3] = oow;
+    d->win[4] = d->clip[1] * oow * s->yr_scale + s->yr_trans;
     for (int k = 0; k < 4; k++) {
         d->col[0][k] = LERP(t, out->col[0][k], in->col[0][k]);
         d->tc[k] = LERP(t, out->tc[k], in->tc[k]);
@@ -90,6 +91,7 @@ static void to_rvertex(fs_rvertex *r, const cvert *v, const float *col)
     r->y = v->win[1];
     r->z = v->win[2];
     r->inv_w = v->win[3];
+    r->y_raster = v->win[4];
     memcpy(r->color, col, sizeof r->color);
     memcpy(r->tex, v->tc, sizeof r->tex);
 }
@@ -256,6 +258,7 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
             d->win[1] = fmaf(d->clip[1] * oow, s->vp_scale[1], s->vp_trans[1]);
             d->win[2] = fmaf(d->clip[2] * oow, s->vp_scale[2], s->vp_trans[2]);
             d->win[3] = oow;
+            d->win[4] = fmaf(d->clip[1] * oow, s->yr_scale, s->yr_trans);
         }
         emit_line2(c, &a, &b, s->flat ? v1->col[0] : NULL);
         return;
@@ -306,6 +309,7 @@ void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)
     r.y = v->win[1];
     r.z = v->win[2];
     r.inv_w = v->win[3];
+    r.y_raster = v->win[4];
     memcpy(r.color, v->col[0], sizeof r.color);
     memcpy(r.tex, v->tc, sizeof r.tex);
     fs_raster_point(c, &r);

@@ -202,6 +202,11 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     fs_mat_identity(id);
     s->tex_identity = memcmp(s->tex, id, sizeof id) == 0;
     fs_viewport_xform(c, s->vp_scale, s->vp_trans);
+    /* llvmpipe draws OSMesa's buffer y-down: Mesa's state tracker negates the
+     * y scale and takes the translation from the framebuffer height. */
+    s->yr_scale = -s->vp_scale[1];
+    s->yr_trans = (float)c->fb.height - s->vp_trans[1];
+    c->raster.use_y_raster = true; /* every fs_rvertex from here carries it */
     s->flat = c->lighting.shade_model == GL_FLAT;
     fs_lighting_setup(c, s);
     if (s->lighting) {
@@ -236,6 +241,7 @@ void fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size
         o->win[1] = fmaf(o->clip[1] * iw, sy, ty);
         o->win[2] = fmaf(o->clip[2] * iw, sz, tz);
         o->win[3] = iw;
+        o->win[4] = fmaf(o->clip[1] * iw, s->yr_scale, s->yr_trans);
         if (s->lighting) {
             float eye[4] = {0, 0, 0, 1}, nrm[3];
             if (s->need_eye)

@@ -25,7 +25,8 @@ typedef struct fs_ivert {
 /* A vertex after transformation and lighting. */
 typedef struct fs_pvert {
     float clip[4];
-    float win[4];     /* x, y, z in window space, 1/w; valid when mask == 0 */
+    float win[5];     /* x, y, z in window space, 1/w, and y in llvmpipe's y-down frame
+                         (fs_rvertex.y_raster); valid when mask == 0 */
     float col[2][4];  /* front and back colour, clamped */
     float tc[4];
     unsigned mask;    /* bit i: outside clip plane i (clip.c's order) */
@@ -50,6 +51,7 @@ typedef struct fs_vs_setup {
     float tex[16];
     bool tex_identity;
     float vp_scale[3], vp_trans[3];
+    float yr_scale, yr_trans; /* viewport y in llvmpipe's y-down frame */
     /* lighting */
     bool lighting, two_side, local_viewer, need_eye, normalize, rescale;
     int nlights;
