@@ -70,7 +70,7 @@ run: deps all
 
 sanitize:
 	$(MAKE) BUILD=build-san OPT=-O1 SAN="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" all
-	ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 tests/run_all.sh build-san
+	FRAGSIM_SKIP_COMPILER_TEST=1 ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 tests/run_all.sh build-san
 
 bench: deps all
 	@scripts/bench.sh $(BUILD)

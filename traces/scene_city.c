@@ -203,8 +203,12 @@ static int city_house(sg *s, uint64_t seed, uint64_t budget, int max_floors)
         float x0 = ix * rw + 0.2f + (float)sg_rng_unit(&r) * (rw - bw - 0.4f);
         float z0 = iz * rd + 0.2f + (float)sg_rng_unit(&r) * (rd - bd - 0.4f);
         float y0 = f * CITY_FLOOR_H + 0.03f;
-        G(s, Color3f, (float)sg_rng_range(&r, 0.2, 0.9), (float)sg_rng_range(&r, 0.2, 0.7),
-          (float)sg_rng_range(&r, 0.1, 0.5));
+        /* One draw per statement: the order in which C evaluates function
+         * arguments is unspecified (gcc and clang differ). */
+        float cr = (float)sg_rng_range(&r, 0.2, 0.9);
+        float cg = (float)sg_rng_range(&r, 0.2, 0.7);
+        float cb = (float)sg_rng_range(&r, 0.1, 0.5);
+        G(s, Color3f, cr, cg, cb);
         sg_box(s, x0, y0, z0, x0 + bw, y0 + bh, z0 + bd, 0);
     }
     if (rug) {
