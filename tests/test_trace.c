@@ -278,7 +278,7 @@ TEST(round_trip)
     v[17].type = FS_TV_SINT; v[17].i = 12; /* non-negative: reads back as UINT */
     v[18].type = FS_TV_BLOB; v[18].str.ptr = ""; v[18].str.len = 0;
     const char *names[NV];
-    char namebuf[NV][8];
+    char namebuf[NV][16]; /* room for any int: -O1 warns otherwise */
     for (int i = 0; i < NV; i++) {
         snprintf(namebuf[i], sizeof namebuf[i], "a%d", i);
         names[i] = namebuf[i];
