@@ -514,6 +514,17 @@ static void reset_arrays(fs_replayer *r)
     }
 }
 
+/* Opens the trace for one pass; on failure frees the replayer. */
+static fs_replayer *start_pass(fs_replayer *r, char *err, size_t errlen)
+{
+    r->tr = fs_trace_open(r->path, err, errlen);
+    if (!r->tr) {
+        fs_replay_close(r);
+        return NULL;
+    }
+    return r;
+}
+
 fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *err, size_t errlen)
 {
     fs_replayer *r = calloc(1, sizeof *r);
@@ -522,11 +533,8 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
         fs_replay_close(r);
         return NULL;
     }
-    r->tr = fs_trace_open(path, err, errlen);
-    if (!r->tr) {
-        fs_replay_close(r);
+    if (!start_pass(r, err, errlen))
         return NULL;
-    }
     /* Pass 1: validate everything, count frame ends, find the window size. */
     r->user_frame_end = opts ? opts->frame_end : NULL;
     fs_call call;
@@ -567,12 +575,7 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
         fs_replay_close(r);
         return NULL;
     }
-    r->tr = fs_trace_open(path, err, errlen);
-    if (!r->tr) {
-        fs_replay_close(r);
-        return NULL;
-    }
-    return r;
+    return start_pass(r, err, errlen);
 }
 
 const fs_replay_info *fs_replay_info_get(const fs_replayer *r) { return &r->info; }
