@@ -1,0 +1,240 @@
+/*
+ * Replay (driver/replay.c): frame boundaries, window size, calls fragsim
+ * cannot execute counted by name, draws whose client arrays a trace did not
+ * record refused rather than read, and arguments shorter than a command
+ * reads reported as malformed before anything executes.  Traces are written
+ * with the trace writer, so each case is exactly what the test says.
+ */
+#include <stdlib.h>
+#include <unistd.h>
+#include "check.h"
+#include "../driver/replay.h"
+#include "../driver/trace.h"
+
+#define MAXV 8
+
+typedef struct tb {
+    fs_trace_writer *w;
+    char path[256];
+} tb;
+
+static int tb_open(tb *t, const char *name)
+{
+    char err[256];
+    snprintf(t->path, sizeof t->path, "/tmp/fragsim_test_replay_%d_%s.trace", (int)getpid(), name);
+    t->w = fs_trace_create(t->path, err, sizeof err);
+    return t->w ? 0 : -1;
+}
+
+static fs_tval ival(int64_t v) { fs_tval x; memset(&x, 0, sizeof x); x.type = FS_TV_SINT; x.i = v; return x; }
+static fs_tval fval(double v) { fs_tval x; memset(&x, 0, sizeof x); x.type = FS_TV_FLOAT; x.d = v; return x; }
+static fs_tval eval(int64_t v, const char *name) { fs_tval x = ival(v); x.type = FS_TV_ENUM; x.enum_name = name; return x; }
+
+static void call(tb *t, const char *name, int n, const fs_tval *args, uint32_t flags)
+{
+    static const char *const argnames[MAXV] = {"a", "b", "c", "d", "e", "f", "g", "h"};
+    fs_tcall c;
+    memset(&c, 0, sizeof c);
+    c.name = name;
+    c.nargs = (unsigned)n;
+    c.arg_names = argnames;
+    c.args = args;
+    c.flags = flags;
+    fs_trace_write(t->w, &c);
+}
+
+static void viewport(tb *t, int w, int h)
+{
+    fs_tval a[4] = {ival(0), ival(0), ival(w), ival(h)};
+    call(t, "glViewport", 4, a, 0);
+}
+
+static void triangle(tb *t)
+{
+    fs_tval m = eval(GL_TRIANGLES, "GL_TRIANGLES");
+    call(t, "glBegin", 1, &m, 0);
+    static const float v[3][2] = {{-1, -1}, {1, -1}, {0, 1}};
+    for (int i = 0; i < 3; i++) {
+        fs_tval a[2] = {fval(v[i][0]), fval(v[i][1])};
+        call(t, "glVertex2f", 2, a, 0);
+    }
+    call(t, "glEnd", 0, NULL, 0);
+}
+
+typedef struct run_result {
+    int calls, frames, error;
+    char err[512];
+    char skipped[4096];
+    uint64_t skipped_total;
+    int width, height;
+} run_result;
+
+static void run(const char *path, const char *frame_end, run_result *res)
+{
+    memset(res, 0, sizeof *res);
+    fs_replay_opts o = {frame_end, 0, 0};
+    fs_replayer *r = fs_replay_open(path, &o, res->err, sizeof res->err);
+    if (!r) {
+        res->error = 1;
+        return;
+    }
+    res->width = fs_replay_info_get(r)->width;
+    res->height = fs_replay_info_get(r)->height;
+    fs_call c;
+    fs_replay_event ev;
+    while ((ev = fs_replay_next(r, &c)) != FS_REPLAY_EOF) {
+        if (ev == FS_REPLAY_ERROR) {
+            res->error = 2;
+            snprintf(res->err, sizeof res->err, "%s", fs_replay_error(r));
+            break;
+        }
+        if (ev == FS_REPLAY_CALL) res->calls++;
+        if (ev == FS_REPLAY_FRAME_END) res->frames++;
+    }
+    FILE *m = fmemopen(res->skipped, sizeof res->skipped - 1, "w");
+    if (m) {
+        fs_replay_write_skipped_json(r, m, "");
+        fclose(m);
+    }
+    res->skipped_total = fs_replay_skipped_total(r);
+    fs_replay_close(r);
+}
+
+TEST(frames_from_swaps_and_size_from_viewport)
+{
+    tb t;
+    REQUIRE(tb_open(&t, "swaps") == 0);
+    viewport(&t, 64, 48);
+    for (int f = 0; f < 3; f++) {
+        triangle(&t);
+        fs_tval a[2] = {ival(0), ival(0)};
+        call(&t, "glXSwapBuffers", 2, a, 0);
+        call(&t, "glFinish", 0, NULL, 0); /* swaps win over glFinish */
+    }
+    REQUIRE(fs_trace_finish(t.w) == 0);
+    run_result r;
+    run(t.path, NULL, &r);
+    CHECK_EQ_INT(r.error, 0);
+    CHECK_EQ_INT(r.frames, 3);
+    CHECK_EQ_INT(r.width, 64);
+    CHECK_EQ_INT(r.height, 48);
+    CHECK(strstr(r.skipped, "glXSwapBuffers") != NULL);
+    CHECK_EQ_UINT(r.skipped_total, 0); /* window-system calls are not "unsupported" */
+    run(t.path, "glFinish", &r);
+    CHECK_EQ_INT(r.frames, 3);
+    unlink(t.path);
+}
+
+TEST(frames_from_glfinish_without_swaps)
+{
+    tb t;
+    REQUIRE(tb_open(&t, "finish") == 0);
+    viewport(&t, 32, 32);
+    for (int f = 0; f < 4; f++) {
+        triangle(&t);
+        call(&t, "glFinish", 0, NULL, 0);
+    }
+    REQUIRE(fs_trace_finish(t.w) == 0);
+    run_result r;
+    run(t.path, NULL, &r);
+    CHECK_EQ_INT(r.error, 0);
+    CHECK_EQ_INT(r.frames, 4);
+    unlink(t.path);
+}
+
+TEST(unknown_calls_are_counted_by_name)
+{
+    tb t;
+    REQUIRE(tb_open(&t, "unknown") == 0);
+    viewport(&t, 16, 16);
+    fs_tval a[2] = {eval(GL_FOG_DENSITY, "GL_FOG_DENSITY"), fval(0.5)};
+    call(&t, "glFogf", 2, a, 0);
+    call(&t, "glFogf", 2, a, 0);
+    call(&t, "glNoSuchCall", 0, NULL, 0);
+    triangle(&t);
+    REQUIRE(fs_trace_finish(t.w) == 0);
+    run_result r;
+    run(t.path, NULL, &r);
+    CHECK_EQ_INT(r.error, 0);
+    CHECK(strstr(r.skipped, "\"glFogf\": {\"count\": 2") != NULL);
+    CHECK(strstr(r.skipped, "glNoSuchCall") != NULL);
+    CHECK_EQ_UINT(r.skipped_total, 3);
+    CHECK_EQ_INT(r.frames, 1); /* no boundary at all: the whole trace is one frame */
+    unlink(t.path);
+}
+
+TEST(draw_without_recorded_arrays_is_refused)
+{
+    tb t;
+    REQUIRE(tb_open(&t, "arrays") == 0);
+    viewport(&t, 16, 16);
+    fs_tval p[4] = {ival(3), eval(GL_FLOAT, "GL_FLOAT"), ival(0), ival(0)};
+    p[3].type = FS_TV_OPAQUE;
+    p[3].u = 0x1234; /* an address in the traced program: must never be read */
+    call(&t, "glVertexPointer", 4, p, 0);
+    fs_tval e = eval(GL_VERTEX_ARRAY, "GL_VERTEX_ARRAY");
+    call(&t, "glEnableClientState", 1, &e, 0);
+    fs_tval d[3] = {eval(GL_TRIANGLES, "GL_TRIANGLES"), ival(0), ival(3)};
+    call(&t, "glDrawArrays", 3, d, 0);
+    /* Recorded data too short for the draw: refused as well. */
+    static const float short_data[3] = {0, 0, 0};
+    fs_tval q[4] = {ival(3), eval(GL_FLOAT, "GL_FLOAT"), ival(0), ival(0)};
+    q[3].type = FS_TV_BLOB;
+    q[3].str.ptr = (const char *)short_data;
+    q[3].str.len = sizeof short_data;
+    call(&t, "glVertexPointer", 4, q, 1 /* fake */);
+    call(&t, "glDrawArrays", 3, d, 0);
+    REQUIRE(fs_trace_finish(t.w) == 0);
+    run_result r;
+    run(t.path, NULL, &r);
+    CHECK_EQ_INT(r.error, 0);
+    CHECK(strstr(r.skipped, "glDrawArrays (client arrays not recorded in the trace)\": {\"count\": 2") != NULL);
+    unlink(t.path);
+}
+
+TEST(short_array_argument_is_malformed)
+{
+    tb t;
+    REQUIRE(tb_open(&t, "short") == 0);
+    viewport(&t, 16, 16);
+    fs_tval elems[3] = {fval(1), fval(2), fval(3)};
+    fs_tval m;
+    memset(&m, 0, sizeof m);
+    m.type = FS_TV_ARRAY;
+    m.arr.elems = elems;
+    m.arr.n = 3; /* glLoadMatrixf reads 16 */
+    call(&t, "glLoadMatrixf", 1, &m, 0);
+    triangle(&t);
+    REQUIRE(fs_trace_finish(t.w) == 0);
+    run_result r;
+    run(t.path, NULL, &r);
+    CHECK_EQ_INT(r.error, 1); /* found by the first pass: nothing executed */
+    CHECK(strstr(r.err, "glLoadMatrixf") != NULL);
+    CHECK(strstr(r.err, "offset") != NULL);
+    unlink(t.path);
+}
+
+TEST(no_viewport_and_no_size_is_an_error)
+{
+    tb t;
+    REQUIRE(tb_open(&t, "nosize") == 0);
+    triangle(&t);
+    REQUIRE(fs_trace_finish(t.w) == 0);
+    run_result r;
+    run(t.path, NULL, &r);
+    CHECK_EQ_INT(r.error, 1);
+    CHECK(strstr(r.err, "--size") != NULL);
+    unlink(t.path);
+}
+
+TEST_LIST = {
+    TEST_ENTRY(frames_from_swaps_and_size_from_viewport),
+    TEST_ENTRY(frames_from_glfinish_without_swaps),
+    TEST_ENTRY(unknown_calls_are_counted_by_name),
+    TEST_ENTRY(draw_without_recorded_arrays_is_refused),
+    TEST_ENTRY(short_array_argument_is_malformed),
+    TEST_ENTRY(no_viewport_and_no_size_is_an_error),
+    TEST_END,
+};
+
+int main(int argc, char **argv) { return check_main(argc, argv, test_list); }
