@@ -1394,61 +1394,6 @@ TEST(fast_paths_equal_general)
     fs_context_destroy(b);
 }
 
-/* Throughput of the per-fragment stage on the common opaque state (depth
- * LESS with writes), half the fragments passing.  The whole pipeline target
- * is 55 Mfragments/s, so this stage alone must be well above it. */
-TEST(throughput)
-{
-#if defined(__SANITIZE_ADDRESS__)
-    SKIP("sanitizer build");
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-    SKIP("sanitizer build");
-#endif
-#endif
-    enum { TW = 256, TH = 256 };
-    fs_context *c = fs_context_create(NULL, TW, TH);
-    REQUIRE(c);
-    c->frag.depth_enabled = true;
-    enum { NQ = 4096 };
-    fs_quad *qs = malloc(sizeof(fs_quad) * NQ);
-    REQUIRE(qs);
-    uint32_t seed = 77;
-    for (int i = 0; i < NQ; i++) {
-        random_quad(&qs[i], &seed, TW - 2, TH - 2);
-        if (qs[i].x < 0) qs[i].x = 0;
-        if (qs[i].y < 0) qs[i].y = 0;
-        qs[i].mask = 0xf;
-    }
-    struct timespec t0, t1;
-    clock_gettime(CLOCK_MONOTONIC, &t0);
-    long frags = 0;
-    for (int rep = 0; rep < 600; rep++) {
-        for (int i = 0; i < NQ; i++) {
-            qs[i].z[0] ^= 0x400000; /* keep the outcomes mixed */
-            fs_fragment_quad(c, &qs[i]);
-        }
-        frags += NQ * 4;
-    }
-    clock_gettime(CLOCK_MONOTONIC, &t1);
-    double sec = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
-    double rate = (double)frags / sec;
-    /* The same with blending (general path) for information. */
-    c->frag.blend_enabled = true;
-    fs_exec_BlendFunc(c, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    clock_gettime(CLOCK_MONOTONIC, &t0);
-    for (int rep = 0; rep < 100; rep++)
-        for (int i = 0; i < NQ; i++)
-            fs_fragment_quad(c, &qs[i]);
-    clock_gettime(CLOCK_MONOTONIC, &t1);
-    double sec2 = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
-    printf("  fragment ops: %.1f Mfragments/s (depth LESS+write), %.1f Mfragments/s (blend, general path)\n",
-           rate / 1e6, (double)NQ * 4 * 100 / sec2 / 1e6);
-    CHECK(rate > 55e6);
-    free(qs);
-    fs_context_destroy(c);
-}
-
 TEST_LIST = {
     TEST_ENTRY(color_conversion_vs_osmesa),
     TEST_ENTRY(blend_all_factor_pairs_vs_osmesa),
@@ -1469,7 +1414,6 @@ TEST_LIST = {
     TEST_ENTRY(fragment_state_defaults),
     TEST_ENTRY(occlusion_hook),
     TEST_ENTRY(fast_paths_equal_general),
-    TEST_ENTRY(throughput),
     TEST_END,
 };
 

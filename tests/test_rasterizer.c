@@ -447,81 +447,6 @@ TEST(slivers)
     osm_close(&o);
 }
 
-/* Throughput: 100,000 triangles of about 8 pixels at 1024x1024 with smooth
- * colours and the depth test, as in the llvmpipe measurement of
- * shared/reference-notes.md (about 1.1e8 fragments/s on one thread). */
-static double bench(fs_context *c, const fs_rvertex *rv, int ntri, long *frags)
-{
-    fs_clear(c);
-    c->frag.depth_enabled = true;
-    c->frag.depth_func = GL_LESS;
-    uint64_t f0 = c->stats.fragments_generated;
-    struct timespec t0, t1;
-    clock_gettime(CLOCK_MONOTONIC, &t0);
-    for (int i = 0; i < ntri; i++)
-        fs_raster_triangle(c, &rv[3 * i], &rv[3 * i + 1], &rv[3 * i + 2]);
-    clock_gettime(CLOCK_MONOTONIC, &t1);
-    *frags = (long)(c->stats.fragments_generated - f0);
-    return (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
-}
-
-TEST(speed)
-{
-    const int n = 100000, size = 1024;
-    fs_context *c = make_ctx(size, size);
-    REQUIRE(c);
-    fs_rvertex *rv = calloc((size_t)n * 3, sizeof *rv);
-    REQUIRE(rv);
-    rng r = {42};
-    for (int i = 0; i < n; i++) {
-        float x = rndf(&r) * (size - 8), y = rndf(&r) * (size - 8);
-        float dx[3] = {0.0f, 4.0f, 0.0f}, dy[3] = {0.0f, 0.0f, 4.0f};
-        for (int k = 0; k < 3; k++) {
-            fs_rvertex *v = &rv[3 * i + k];
-            v->x = x + dx[k] + rndf(&r) * 0.5f;
-            v->y = y + dy[k] + rndf(&r) * 0.5f;
-            v->z = rndf(&r);
-            v->inv_w = 1.0f;
-            for (int j = 0; j < 4; j++)
-                v->color[j] = rndf(&r);
-        }
-    }
-    long frags = 0;
-    double best = 1e9;
-    for (int rep = 0; rep < 3; rep++) {
-        double t = bench(c, rv, n, &frags);
-        if (t < best)
-            best = t;
-    }
-    double rate = (double)frags / best;
-    printf("    speed, random placement: %d triangles, %.1f fragments each, %.1f M fragments/s (%.0f ns per triangle)\n",
-           n, (double)frags / n, rate * 1e-6, best * 1e9 / n);
-    /* The same triangles in scan order, as a mesh submits neighbours: the
-     * framebuffer lines are then mostly in cache. */
-    for (int i = 0; i < n; i++) {
-        float x = (float)((i * 5) % (size - 8)), y = (float)(((i * 5) / (size - 8)) * 5 % (size - 8));
-        float ox = rv[3 * i].x, oy = rv[3 * i].y;
-        for (int k = 0; k < 3; k++) {
-            rv[3 * i + k].x += x - ox;
-            rv[3 * i + k].y += y - oy;
-        }
-    }
-    double best2 = 1e9;
-    long frags2 = 0;
-    for (int rep = 0; rep < 3; rep++) {
-        double t = bench(c, rv, n, &frags2);
-        if (t < best2)
-            best2 = t;
-    }
-    printf("    speed, scan order: %.1f fragments each, %.1f M fragments/s (%.0f ns per triangle)\n",
-           (double)frags2 / n, (double)frags2 / best2 * 1e-6, best2 * 1e9 / n);
-    /* A loose floor so that a pathological slowdown fails; the target
-     * (55 M/s) is checked by hand on the reference machine. */
-    CHECK(rate > 10e6);
-    free(rv);
-    fs_context_destroy(c);
-}
-
 /* GL state on both sides for the state tests. */
 typedef struct gl_setup {
     bool cull;
@@ -1047,7 +972,6 @@ TEST_LIST = {
     TEST_ENTRY(executors),
     TEST_ENTRY(lines),
     TEST_ENTRY(points),
-    TEST_ENTRY(speed),
     TEST_END
 };
 
