@@ -73,6 +73,7 @@ static uint32_t count_u32(int64_t n)
 #define FS_PK_OF FS_PK_OUT
 #define FS_PK_OD FS_PK_OUT
 #define FS_PK_OI FS_PK_OUT
+#define FS_PK_OU FS_PK_OUT
 #define FS_PK_OB FS_PK_OUT
 #define FS_PACK(k, kind, name, cnt) FS_PK_##kind(call.a[k], name, cnt);
 
@@ -157,6 +158,7 @@ static uint32_t count_u32(int64_t n)
 #define FS_CK_OF FS_CK_OUT
 #define FS_CK_OD FS_CK_OUT
 #define FS_CK_OI FS_CK_OUT
+#define FS_CK_OU FS_CK_OUT
 #define FS_CK_OB FS_CK_OUT
 #define FS_CHECK(k, kind, name, cnt) FS_CK_##kind(k, name, cnt, FS_ESIZE_##kind)
 
@@ -227,6 +229,7 @@ int fs_dispatch(fs_context *c, fs_call *call)
 #define FS_VCK_OF FS_VCK_E
 #define FS_VCK_OD FS_VCK_E
 #define FS_VCK_OI FS_VCK_E
+#define FS_VCK_OU FS_VCK_E
 #define FS_VCK_OB FS_VCK_E
 #define FS_VCK_AF FS_VCK_ARR
 #define FS_VCK_AD FS_VCK_ARR
@@ -240,6 +243,7 @@ int fs_dispatch(fs_context *c, fs_call *call)
 #define FS_VCHECK(k, kind, name, cnt) FS_VCK_##kind(k, name, cnt)
 /* Output counts may need a context; validation never evaluates them. */
 #define fs_readpixels_bytes(c, w, h, f, t) 0
+#define fs_occlusion_tile_count(c) 0
 
 int fs_call_validate(const fs_call *call)
 {
@@ -258,6 +262,7 @@ int fs_call_validate(const fs_call *call)
     return -1 - FS_MAX_ARGS;
 }
 #undef fs_readpixels_bytes
+#undef fs_occlusion_tile_count
 
 int fs_submit(fs_context *c, fs_call *call)
 {

@@ -21,7 +21,7 @@ typedef struct fs_context fs_context;
     X(V)   X(E)   X(BM)  X(B)   X(I)   X(U)   X(SZ)  X(UB)  X(BY)  X(S)  X(US) \
     X(F)   X(D)   X(CF)  X(CD)  \
     X(AF)  X(AD)  X(AI)  X(AU)  X(AUB) X(ABY) X(AS)  X(AUS) \
-    X(BLOB) X(CPTR) X(OV) X(OF) X(OD) X(OI) X(OB) X(STR)
+    X(BLOB) X(CPTR) X(OV) X(OF) X(OD) X(OI) X(OU) X(OB) X(STR)
 
 enum fs_kind {
 #define FS_KIND_ENUM(k) FS_K_##k,
@@ -60,6 +60,7 @@ enum fs_kind {
 #define FS_CT_OF GLfloat *
 #define FS_CT_OD GLdouble *
 #define FS_CT_OI GLint *
+#define FS_CT_OU GLuint *
 #define FS_CT_OB GLboolean *
 #define FS_CT_STR const GLubyte *
 
@@ -69,6 +70,10 @@ enum fs_kind {
 #define FS_F_DRAW 0x4u   /* reads client vertex arrays */
 #define FS_F_FRAME 0x8u  /* may mark the end of a frame (glFinish/glFlush) */
 #define FS_F_PRIM 0x10u  /* allowed between glBegin and glEnd (GL 1.5 spec 2.6.3) */
+/* A command of one of fragsim's own extensions (glext/): OSMesa has no such
+ * entry point, so the reference dispatcher (osmesa_ref.c) skips it.  Such
+ * rows are written FS_CMD_EXT in gl_commands.def (see there). */
+#define FS_F_EXT 0x20u
 #define LIST FS_F_LIST
 #define NOLIST FS_F_NOLIST
 
@@ -178,5 +183,7 @@ int fs_material_param_count(GLenum pname);
 int fs_get_count(GLenum pname);
 int64_t fs_readpixels_bytes(fs_context *c, GLsizei w, GLsizei h, GLenum format, GLenum type);
 int fs_type_size(GLenum type); /* bytes of GL_FLOAT, GL_UNSIGNED_BYTE, ...; 0 if unknown */
+/* Occlusion tiles glOcclusionBuffers expects a size for (units/occlusion_gl.c). */
+int fs_occlusion_tile_count(fs_context *c);
 
 #endif

@@ -40,6 +40,7 @@
 #define FS_UP_OF FS_UP_OUT
 #define FS_UP_OD FS_UP_OUT
 #define FS_UP_OI FS_UP_OUT
+#define FS_UP_OU FS_UP_OUT
 #define FS_UP_OB FS_UP_OUT
 #define FS_LOCAL(k, kind, name, cnt) FS_CT_##kind name = FS_UP_##kind(FS_CT_##kind, call->a[k]);
 
@@ -47,6 +48,7 @@
 #define FS_ESIZE_OF sizeof(GLfloat)
 #define FS_ESIZE_OD sizeof(GLdouble)
 #define FS_ESIZE_OI sizeof(GLint)
+#define FS_ESIZE_OU sizeof(GLuint)
 #define FS_ESIZE_OB sizeof(GLboolean)
 #define FS_ESIZE_AF 0
 #define FS_ESIZE_AD 0

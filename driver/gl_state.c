@@ -6,6 +6,8 @@
 #include <math.h>
 #include <string.h>
 #include "../pipeline/context.h"
+#include "../units/occlusion_unit.h"
+#include "../glext/GL_FRAGSIM_occlusion_unit.h"
 
 #define FS_GL_VERSION "1.1 fragsim-0.1"
 
@@ -125,8 +127,8 @@ const GLubyte *fs_exec_GetString(fs_context *c, GLenum name)
     case GL_VENDOR: return (const GLubyte *)"fragsim";
     case GL_RENDERER: return (const GLubyte *)"fragsim functional model";
     case GL_VERSION: return (const GLubyte *)FS_GL_VERSION;
-    /* Honest: no extension is implemented yet. */
-    case GL_EXTENSIONS: return (const GLubyte *)"";
+    /* Only what is implemented: the Occlusion Unit (units/occlusion_gl.c). */
+    case GL_EXTENSIONS: return (const GLubyte *)"GL_FRAGSIM_occlusion_unit";
     default:
         fs_error(c, GL_INVALID_ENUM);
         return NULL;
@@ -274,6 +276,11 @@ static bool get_state(fs_context *c, GLenum pname, get_result *r)
     case GL_VERTEX_ARRAY: case GL_NORMAL_ARRAY: case GL_COLOR_ARRAY: case GL_TEXTURE_COORD_ARRAY:
         put1(r, GET_BOOL, fs_exec_IsEnabled(c, pname));
         return true;
+    /* GL 1.5 spec table 6.30 and GL_FRAGSIM_occlusion_unit's New State. */
+    case GL_RENDER_MODE: put1(r, GET_ENUM, fs_occlusion_render_mode(c)); return true;
+    case GL_MAX_OCCLUSION_TILES: put1(r, GET_NUM, (double)c->cfg.occlusion_max_tiles); return true;
+    case GL_OCCLUSION_TILE_COUNT: put1(r, GET_NUM, fs_occlusion_tiles_set(c)); return true;
+    case GL_OCCLUSION_COUNTER_BITS: put1(r, GET_NUM, (double)c->cfg.occlusion_counter_bits); return true;
     default:
         break;
     }

@@ -1,5 +1,8 @@
 /* The OSMesa reference dispatcher: see osmesa_ref.h.  Generated from the
  * same command table as the model's dispatcher. */
+/* The GL 1.5 query entry points are declared by GL/glext.h only with
+ * prototypes requested, before GL/gl.h is first included. */
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/osmesa.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -96,6 +99,7 @@ static int64_t osm_readpixels_bytes(GLsizei w, GLsizei h)
 #define FS_OCK_OF(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLfloat))
 #define FS_OCK_OD(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLdouble))
 #define FS_OCK_OI(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLint))
+#define FS_OCK_OU(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLuint))
 #define FS_OCK_OB(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLboolean))
 #define FS_OCHECK(k, kind, name, cnt) FS_OCK_##kind(k, name, cnt)
 #define fs_readpixels_bytes(c, w, h, f, t) osm_readpixels_bytes(w, h)
@@ -116,7 +120,12 @@ int fs_osmesa_dispatch(fs_osmesa *o, const fs_call *call)
         FS_OCALL_##rk(gl##name(FS_CALL_ARGS(0 FS_MAP(n, FS_ANAME, __VA_ARGS__)))); \
         return 0;                                                               \
     }
+/* fragsim's own extension commands do not exist in OSMesa: not executed. */
+#define FS_CMD_EXT(name, rk, flags, n, ...) \
+    case FS_CMD_##name:                     \
+        return -1;
 #include "gl_commands.def"
+#undef FS_CMD_EXT
 #undef FS_CMD
     case FS_CMD_COUNT:
         break;

@@ -319,7 +319,7 @@ static int convert(fs_replayer *r, const fs_tcall *tc, int cmd, fs_call *call)
                 a->is_data = 0;
             }
             break;
-        case FS_K_OV: case FS_K_OF: case FS_K_OD: case FS_K_OI: case FS_K_OB:
+        case FS_K_OV: case FS_K_OF: case FS_K_OD: case FS_K_OI: case FS_K_OU: case FS_K_OB:
             a->out = NULL; /* the dispatcher provides scratch space */
             break;
         default:

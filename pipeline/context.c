@@ -4,6 +4,7 @@
 #include <string.h>
 #include "context.h"
 #include "../driver/display_list.h"
+#include "../units/occlusion_unit.h"
 
 fs_context *fs_context_create(const fs_config *cfg, int width, int height)
 {
@@ -44,6 +45,7 @@ void fs_context_destroy(fs_context *c)
     if (!c)
         return;
     fs_dlist_free_all(c);
+    fs_occlusion_free(c);
     fs_vertex_stage_free(c);
     fs_framebuffer_free(&c->fb);
     free(c->scratch);

@@ -20,6 +20,7 @@
 
 struct fs_dlist_state;      /* driver/display_list.c */
 struct fs_capture;          /* driver/capture.c */
+struct fs_occlusion;        /* units/occlusion_gl.c */
 
 struct fs_context {
     fs_config cfg;
@@ -42,6 +43,9 @@ struct fs_context {
 
     fs_occlusion_hook_fn occlusion_hook; /* issue 3 attaches here */
     void *occlusion_user;
+    /* The Occlusion Unit, its GL state and the query objects; created on
+     * first use (units/occlusion_gl.c). */
+    struct fs_occlusion *occlusion;
 
     fs_stats stats;               /* counters of the current frame */
     uint64_t unsupported[FS_CMD_COUNT]; /* by command: executor missing or mode unsupported */

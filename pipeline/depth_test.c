@@ -43,27 +43,31 @@ unsigned fs_stencil_depth_quad(fs_context *c, const fs_quad *q, unsigned mask,
      * written (4.1.5). */
     bool stencil = f->stencil_enabled && fb->stencil_bits > 0;
     bool depth = f->depth_enabled;
+    /* Occlusion modes run both tests but write neither buffer. */
+    bool stencil_write = stencil && !f->suppress_writes;
+    bool depth_write = depth && f->depth_write && !f->suppress_writes;
     unsigned reached = 0, passed = 0;
     for (int i = 0; i < 4; i++) {
         if (!(mask >> i & 1u))
             continue;
         size_t k = idx[i];
         if (stencil && !fs_stencil_test(c, fb->stencil[k])) {
-            fb->stencil[k] = fs_stencil_apply(c, f->stencil_fail, fb->stencil[k]);
+            if (stencil_write)
+                fb->stencil[k] = fs_stencil_apply(c, f->stencil_fail, fb->stencil[k]);
             c->stats.killed_stencil++;
             continue;
         }
         reached |= 1u << i;
         /* A disabled depth test always passes and never writes (4.1.6). */
         if (depth && !fs_depth_test(f->depth_func, q->z[i], fb->depth[k])) {
-            if (stencil)
+            if (stencil_write)
                 fb->stencil[k] = fs_stencil_apply(c, f->stencil_zfail, fb->stencil[k]);
             c->stats.killed_depth++;
             continue;
         }
-        if (stencil)
+        if (stencil_write)
             fb->stencil[k] = fs_stencil_apply(c, f->stencil_zpass, fb->stencil[k]);
-        if (depth && f->depth_write)
+        if (depth_write)
             fb->depth[k] = q->z[i];
         passed |= 1u << i;
     }

@@ -45,6 +45,7 @@ void fs_fragment_state_init(fs_fragment_state *f)
     }
     f->clear_depth = 1.0;
     f->clear_stencil = 0;
+    f->suppress_writes = false;
 }
 
 static inline void store_rgba8(uint8_t *p, const float col[4])
@@ -109,6 +110,8 @@ void fs_fragment_quad_general(fs_context *c, fs_quad *q)
     unsigned tested;
     unsigned passed = fs_stencil_depth_quad(c, q, m, idx, &tested);
     occlusion_point(c, q, tested, passed);
+    if (f->suppress_writes)
+        return;
 
     /* Dithering (4.1.9) is enabled by default but llvmpipe does not dither
      * an RGBA8 buffer, so it has no stage here. */
@@ -182,7 +185,7 @@ void fs_fragment_quad(fs_context *c, fs_quad *q)
     unsigned m = q->mask & 0xfu;
     if (!m)
         return;
-    bool simple = !f->scissor_enabled && !f->alpha_enabled && !f->stencil_enabled &&
+    bool simple = !f->suppress_writes && !f->scissor_enabled && !f->alpha_enabled && !f->stencil_enabled &&
                   !f->blend_enabled && !f->logic_op_enabled &&
                   f->color_mask[0] && f->color_mask[1] && f->color_mask[2] && f->color_mask[3];
     int qx = q->x, qy = q->y;

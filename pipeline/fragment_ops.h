@@ -43,6 +43,12 @@ typedef struct fs_fragment_state {
     float clear_color[4];
     double clear_depth;
     GLint clear_stencil;
+    /* Set while an occlusion render mode is active (units/occlusion_gl.c):
+     * every test still runs, but nothing is written to the colour, depth or
+     * stencil buffer and glClear does nothing, as in GL_SELECT (GL 1.5 spec
+     * 5.2; Huettner 1999, 3.2.1: occlusion modes do not change the
+     * framebuffer). */
+    bool suppress_writes;
 } fs_fragment_state;
 
 void fs_fragment_state_init(fs_fragment_state *f);
