@@ -32,7 +32,7 @@ FRAGSIM := $(BUILD)/fragsim
 # Link the archive whole so that every executor overrides its weak fallback.
 WHOLE_LIB = -Wl,--whole-archive $(LIB) -Wl,--no-whole-archive
 
-.PHONY: all deps test run sanitize bench golden clean scenes tests
+.PHONY: all deps test run sanitize bench golden docs clean scenes tests
 all: $(LIB) $(FRAGSIM) tests scenes
 
 deps:
@@ -77,6 +77,10 @@ bench: deps all
 
 golden: all
 	@scripts/golden.sh $(BUILD)
+
+# Reference pages generated from the config and statistics tables.
+docs: all
+	@scripts/gen_docs.sh $(BUILD)
 
 clean:
 	rm -rf build build-san build-clang

@@ -397,6 +397,10 @@ static int run_replay(int argc, char **argv, bool check)
             return 2;
         }
     }
+    if (fs_config_check(&cfg, err, sizeof err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        return 2;
+    }
     fs_replay_opts ro = {o.frame_end, o.width ? o.width : (int)cfg.framebuffer_width,
                          o.height ? o.height : (int)cfg.framebuffer_height};
     fs_replayer *r = fs_replay_open(o.trace, &ro, err, sizeof err);

@@ -133,12 +133,28 @@ int fs_config_set(fs_config *cfg, const char *assignment, char *err, size_t errl
     return 0;
 }
 
+int fs_config_check(const fs_config *cfg, char *err, size_t errlen)
+{
+    /* Constraints a range cannot say, one message each. */
+    if (cfg->framebuffer_depth_bits != 16 && cfg->framebuffer_depth_bits != 24) {
+        snprintf(err, errlen, "framebuffer.depth_bits: %ld is not supported (16 or 24)", cfg->framebuffer_depth_bits);
+        return -1;
+    }
+    if (cfg->framebuffer_stencil_bits != 0 && cfg->framebuffer_stencil_bits != 8) {
+        snprintf(err, errlen, "framebuffer.stencil_bits: %ld is not supported (0 or 8)", cfg->framebuffer_stencil_bits);
+        return -1;
+    }
+    return 0;
+}
+
 void fs_config_list(FILE *f)
 {
-    for (size_t i = 0; i < NKEYS; i++)
-        fprintf(f, "%s.%-16s %-4s default %-6ld range [%ld, %ld] %-7s %s\n", keys[i].section,
-                keys[i].key, keys[i].type, keys[i].def, keys[i].lo, keys[i].hi, keys[i].unit,
-                keys[i].meaning);
+    for (size_t i = 0; i < NKEYS; i++) {
+        char name[96];
+        snprintf(name, sizeof name, "%s.%s", keys[i].section, keys[i].key);
+        fprintf(f, "%-28s %-4s default %-6ld range [%ld, %ld] %-8s %s\n", name, keys[i].type,
+                keys[i].def, keys[i].lo, keys[i].hi, keys[i].unit, keys[i].meaning);
+    }
 }
 
 void fs_config_write_ini(FILE *f, const fs_config *cfg)

@@ -15,6 +15,9 @@ void fs_config_defaults(fs_config *cfg);
 int fs_config_load(fs_config *cfg, const char *path, char *err, size_t errlen);
 /* Applies "section.key=value". */
 int fs_config_set(fs_config *cfg, const char *assignment, char *err, size_t errlen);
+/* Checks constraints between or within keys that ranges cannot express.
+ * Returns 0, or -1 with one message naming the key. */
+int fs_config_check(const fs_config *cfg, char *err, size_t errlen);
 void fs_config_list(FILE *f);
 void fs_config_write_ini(FILE *f, const fs_config *cfg);
 #endif

@@ -59,6 +59,9 @@ test_config_errors() {
     "$FRAGSIM" replay --set framebuffer.depth_bits=99 --out "$WORK/o4" "$t" 2>"$WORK/e"
     [ $? -eq 2 ] || fail "out-of-range value must exit 2"
     grep -q "out of range" "$WORK/e" || fail "message: $(cat "$WORK/e")"
+    "$FRAGSIM" replay --set framebuffer.depth_bits=20 --out "$WORK/o4" "$t" 2>"$WORK/e"
+    [ $? -eq 2 ] || fail "depth_bits 20 must exit 2"
+    grep -q "16 or 24" "$WORK/e" || fail "message: $(cat "$WORK/e")"
     "$FRAGSIM" config --list | grep -q "raster.subpixel_bits" || fail "config --list"
     "$FRAGSIM" stats --list | grep -q "fragments_generated" || fail "stats --list"
 }
