@@ -218,6 +218,7 @@ typedef struct frame_record {
     fs_image_diff diff;
     bool has_diff;
     bool within;
+    int64_t samples_ref; /* OSMesa's GL_SAMPLES_PASSED for the frame, -1 if not measured */
 } frame_record;
 
 static void json_string(FILE *f, const char *s)
@@ -283,10 +284,12 @@ static int write_stats(const char *path, const cli_opts *o, const fs_replay_info
             fprintf(f,
                     "      \"pixels_differ\": %llu,\n      \"max_color_diff\": %d,\n"
                     "      \"psnr_db\": %s%.3f%s,\n      \"depth_differ\": %llu,\n"
+                    "      \"samples_passed_osmesa\": %lld,\n"
                     "      \"within_tolerance\": %s,\n",
                     (unsigned long long)d->pixels_differ, d->max_diff, isinf(d->psnr) ? "\"" : "",
                     isinf(d->psnr) ? 999.0 : d->psnr, isinf(d->psnr) ? " (identical)\"" : "",
-                    (unsigned long long)d->depth_differ, frames[i].within ? "true" : "false");
+                    (unsigned long long)d->depth_differ, (long long)frames[i].samples_ref,
+                    frames[i].within ? "true" : "false");
         }
         fprintf(f, "      \"stats\": {\n");
         fs_stats_write_json(f, &frames[i].stats, "        ");
@@ -448,6 +451,13 @@ static int run_replay(int argc, char **argv, bool check)
     double t0 = now_seconds(), last_progress = t0;
     fs_call call;
     bool all_within = true;
+    /* Per frame, OSMesa counts GL_SAMPLES_PASSED with a query of its own, to
+     * compare with the fragments that passed the model's depth and stencil
+     * tests (what NOHC and occlusion queries count).  A trace that runs its
+     * own queries is left alone: a second active query would be an error. */
+    bool count_samples = ref && !info->uses_queries;
+    if (count_samples)
+        fs_osmesa_samples_begin(ref);
     for (;;) {
         if (o.frame_last >= 0 && frame > o.frame_last)
             break;
@@ -494,15 +504,24 @@ static int run_replay(int argc, char **argv, bool check)
                 if (d)
                     fs_depth_compare(c->fb.depth, d, info->width, info->height, &fr->diff);
                 fr->has_diff = true;
-                fr->within = fr->diff.max_diff <= o.tolerance;
+                fr->samples_ref = count_samples ? fs_osmesa_samples_end(ref) : -1;
+                if (count_samples)
+                    fs_osmesa_samples_begin(ref);
+                bool samples_ok = !count_samples || fr->samples_ref == (int64_t)fr->stats.fragments_passed_depth;
+                fr->within = fr->diff.max_diff <= o.tolerance && samples_ok;
                 all_within &= fr->within;
                 if (!fr->within && save_mismatch(o.out_dir, frame, c->fb.color, fs_osmesa_color(ref),
                                                  info->width, info->height) != 0)
                     fprintf(stderr, "%s: could not write the mismatch images to %s\n", prog, o.out_dir);
-                printf("frame %4ld: %8llu pixels differ, max diff %3d, PSNR %s, %llu depth values differ%s\n",
+                char samples[96] = "";
+                if (count_samples)
+                    snprintf(samples, sizeof samples, ", samples passed %llu%s%lld",
+                             (unsigned long long)fr->stats.fragments_passed_depth,
+                             samples_ok ? " = OSMesa " : " != OSMesa ", (long long)fr->samples_ref);
+                printf("frame %4ld: %8llu pixels differ, max diff %3d, PSNR %s, %llu depth values differ%s%s\n",
                        frame, (unsigned long long)fr->diff.pixels_differ, fr->diff.max_diff,
                        isinf(fr->diff.psnr) ? "identical" : (snprintf(err, sizeof err, "%.2f dB", fr->diff.psnr), err),
-                       (unsigned long long)fr->diff.depth_differ, fr->within ? "" : "  <-- beyond tolerance");
+                       (unsigned long long)fr->diff.depth_differ, samples, fr->within ? "" : "  <-- beyond tolerance");
             } else {
                 char path[4200];
                 snprintf(path, sizeof path, "%s/frame_%04ld.png", o.out_dir, frame);

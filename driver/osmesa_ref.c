@@ -17,6 +17,7 @@ struct fs_osmesa {
     uint32_t *depth;
     void *scratch;
     size_t scratch_size;
+    GLuint query; /* per-frame GL_SAMPLES_PASSED query of `fragsim check` */
 };
 
 fs_osmesa *fs_osmesa_create(int width, int height, int depth_bits, int stencil_bits, char *err, size_t errlen)
@@ -62,6 +63,24 @@ static int64_t osm_readpixels_bytes(GLsizei w, GLsizei h)
     return w > 0 && h > 0 ? ((int64_t)w + 8) * h * 4 : 0;
 }
 
+/* glTexImage2D reads by OSMesa's own unpack state, which the same call
+ * stream sets: ask it, and size the image as the model does. */
+static int64_t osm_teximage_bytes(GLsizei w, GLsizei h, GLenum format, GLenum type)
+{
+    int n = format == GL_RGBA || format == GL_BGRA ? 4 : format == GL_RGB || format == GL_BGR ? 3
+            : format == GL_LUMINANCE_ALPHA ? 2 : 1;
+    int sz = type == GL_FLOAT ? 4 : 1;
+    GLint len = 0, a = 4;
+    if (w <= 0 || h <= 0)
+        return 0;
+    glGetIntegerv(GL_UNPACK_ROW_LENGTH, &len);
+    glGetIntegerv(GL_UNPACK_ALIGNMENT, &a);
+    int64_t row = (int64_t)n * (len > 0 ? len : w) * sz;
+    if (sz < a)
+        row = (row + a - 1) / a * a;
+    return row * (h - 1) + (int64_t)n * w * sz;
+}
+
 #define FS_OCK_ARR(k, name, cnt) \
     if ((int64_t)(cnt) > 0 && (name == NULL || (int64_t)call->a[k].count < (int64_t)(cnt))) return -1;
 #define FS_OCK_OUT(k, name, cnt, esize) \
@@ -103,6 +122,7 @@ static int64_t osm_readpixels_bytes(GLsizei w, GLsizei h)
 #define FS_OCK_OB(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLboolean))
 #define FS_OCHECK(k, kind, name, cnt) FS_OCK_##kind(k, name, cnt)
 #define fs_readpixels_bytes(c, w, h, f, t) osm_readpixels_bytes(w, h)
+#define fs_teximage_bytes(c, w, h, f, t) osm_teximage_bytes(w, h, f, t)
 #define FS_OCALL_V(e) e
 #define FS_OCALL_U(e) (void)(e)
 #define FS_OCALL_E(e) (void)(e)
@@ -133,6 +153,7 @@ int fs_osmesa_dispatch(fs_osmesa *o, const fs_call *call)
     return -1;
 }
 #undef fs_readpixels_bytes
+#undef fs_teximage_bytes
 
 const uint8_t *fs_osmesa_color(fs_osmesa *o)
 {
@@ -162,6 +183,21 @@ const uint32_t *fs_osmesa_depth(fs_osmesa *o)
         o->depth[i] = v & mask;
     }
     return o->depth;
+}
+
+void fs_osmesa_samples_begin(fs_osmesa *o)
+{
+    if (!o->query)
+        glGenQueries(1, &o->query);
+    glBeginQuery(GL_SAMPLES_PASSED, o->query);
+}
+
+int64_t fs_osmesa_samples_end(fs_osmesa *o)
+{
+    GLuint n = 0; /* libOSMesa exports the GL 1.5 query, not the 64-bit one */
+    glEndQuery(GL_SAMPLES_PASSED);
+    glGetQueryObjectuiv(o->query, GL_QUERY_RESULT, &n);
+    return glGetError() == GL_NO_ERROR ? (int64_t)n : -1;
 }
 
 void fs_osmesa_destroy(fs_osmesa *o)

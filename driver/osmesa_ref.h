@@ -20,5 +20,10 @@ int fs_osmesa_dispatch(fs_osmesa *o, const fs_call *call);
  * and the depth buffer as values in [0, 2^depth_bits - 1]. */
 const uint8_t *fs_osmesa_color(fs_osmesa *o);
 const uint32_t *fs_osmesa_depth(fs_osmesa *o);
+/* Counting samples per frame: begin a GL_SAMPLES_PASSED query now, and end
+ * it and return its result (fragments that passed the depth and stencil
+ * tests since the begin).  Returns -1 when the query failed. */
+void fs_osmesa_samples_begin(fs_osmesa *o);
+int64_t fs_osmesa_samples_end(fs_osmesa *o);
 void fs_osmesa_destroy(fs_osmesa *o);
 #endif

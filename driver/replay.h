@@ -24,6 +24,7 @@ typedef struct fs_replay_info {
     uint64_t frames;        /* frames found (a trailing partial frame counts) */
     int width, height;      /* chosen window size */
     char frame_end[64];     /* the call that ends frames */
+    bool uses_queries;      /* the trace begins occlusion queries itself */
 } fs_replay_info;
 
 typedef enum fs_replay_event {

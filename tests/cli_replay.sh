@@ -109,7 +109,11 @@ test_check_every_scene() {
         local t; t=$(scene_trace "$s") || fail "scenegen $s failed"
         "$FRAGSIM" check --quiet --out "$WORK/c_$s" "$t" >"$WORK/c_$s.log" 2>&1 \
             || { cat "$WORK/c_$s.log"; fail "check $s failed"; }
-        echo "$s: $(grep -c '^frame' "$WORK/c_$s.log") frames within tolerance"
+        local nf ns
+        nf=$(grep -c '^frame' "$WORK/c_$s.log")
+        ns=$(grep -c 'samples passed [0-9]* = OSMesa' "$WORK/c_$s.log")
+        [ "$nf" -gt 0 ] && [ "$nf" = "$ns" ] || { cat "$WORK/c_$s.log"; fail "$s: samples passed not compared in every frame"; }
+        echo "$s: $nf frames within tolerance, samples passed equal to OSMesa's GL_SAMPLES_PASSED"
     done
 }
 
@@ -136,6 +140,7 @@ test_glxgears_capture() {
         || { cat "$WORK/g.log"; fail "check of the glxgears capture failed"; }
     cat "$WORK/g.log"
     [ "$(grep -c '^frame' "$WORK/g.log")" -eq 10 ] || fail "expected 10 frames"
+    [ "$(grep -c 'samples passed [0-9]* = OSMesa' "$WORK/g.log")" -eq 10 ] || fail "samples passed differ from OSMesa"
 }
 
 for t in test_help test_missing_trace test_truncated_trace test_garbage_trace test_config_errors \
