@@ -244,6 +244,7 @@ int fs_dispatch(fs_context *c, fs_call *call)
 /* Output counts may need a context; validation never evaluates them. */
 #define fs_readpixels_bytes(c, w, h, f, t) 0
 #define fs_occlusion_tile_count(c) 0
+#define fs_teximage_bytes(c, w, h, f, t) 0
 
 int fs_call_validate(const fs_call *call)
 {
@@ -263,6 +264,7 @@ int fs_call_validate(const fs_call *call)
 }
 #undef fs_readpixels_bytes
 #undef fs_occlusion_tile_count
+#undef fs_teximage_bytes
 
 int fs_submit(fs_context *c, fs_call *call)
 {

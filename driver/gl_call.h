@@ -185,5 +185,10 @@ int64_t fs_readpixels_bytes(fs_context *c, GLsizei w, GLsizei h, GLenum format, 
 int fs_type_size(GLenum type); /* bytes of GL_FLOAT, GL_UNSIGNED_BYTE, ...; 0 if unknown */
 /* Occlusion tiles glOcclusionBuffers expects a size for (units/occlusion_gl.c). */
 int fs_occlusion_tile_count(fs_context *c);
+/* Texture unit (units/texture_object.c): bytes a glTexImage2D image reads
+ * under the current unpack state, values of glTexParameter*v/glTexEnv*v. */
+int64_t fs_teximage_bytes(fs_context *c, GLsizei w, GLsizei h, GLenum format, GLenum type);
+int fs_texparam_count(GLenum pname);
+int fs_texenv_count(GLenum pname);
 
 #endif

@@ -7,6 +7,7 @@
 #include <string.h>
 #include "../pipeline/context.h"
 #include "../units/occlusion_unit.h"
+#include "../units/texture_unit.h"
 #include "../glext/GL_FRAGSIM_occlusion_unit.h"
 
 #define FS_GL_VERSION "1.1 fragsim-0.1"
@@ -17,7 +18,6 @@
 static const struct { GLenum cap; const char *name; } unmodelled_caps[] = {
     {GL_FOG, "GL_FOG"},
     {GL_TEXTURE_1D, "GL_TEXTURE_1D"},
-    {GL_TEXTURE_2D, "GL_TEXTURE_2D"},
     {GL_TEXTURE_GEN_S, "GL_TEXTURE_GEN_S"},
     {GL_TEXTURE_GEN_T, "GL_TEXTURE_GEN_T"},
     {GL_TEXTURE_GEN_R, "GL_TEXTURE_GEN_R"},
@@ -60,6 +60,7 @@ static bool *cap_flag(fs_context *c, GLenum cap)
     case GL_BLEND: return &c->frag.blend_enabled;
     case GL_DITHER: return &c->frag.dither_enabled;
     case GL_COLOR_LOGIC_OP: return &c->frag.logic_op_enabled;
+    case GL_TEXTURE_2D: return fs_texture_enable_flag(c, cap);
     default: break;
     }
     if (cap >= GL_LIGHT0 && cap < GL_LIGHT0 + FS_MAX_LIGHTS)
@@ -80,6 +81,8 @@ static void set_cap(fs_context *c, GLenum cap, bool on)
     *flag = on;
     if (cap == GL_COLOR_MATERIAL && on)
         fs_color_material_update(c); /* GL 1.5 spec 2.14.3: tracks the current colour at once */
+    if (cap == GL_TEXTURE_2D)
+        fs_texture_enables_changed(c); /* the rasterizer interpolates texture coordinates */
     if (!on)
         return;
     for (size_t i = 0; i < N_UNMODELLED; i++) {

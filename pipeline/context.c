@@ -5,6 +5,7 @@
 #include "context.h"
 #include "../driver/display_list.h"
 #include "../units/occlusion_unit.h"
+#include "../units/texture_unit.h"
 
 fs_context *fs_context_create(const fs_config *cfg, int width, int height)
 {
@@ -22,6 +23,10 @@ fs_context *fs_context_create(const fs_config *cfg, int width, int height)
     fs_raster_state_init(&c->raster, (int)c->cfg.raster_subpixel_bits);
     fs_fragment_state_init(&c->frag);
     fs_vertex_stage_init(c);
+    if (fs_texture_init(c) != 0) {
+        fs_context_destroy(c);
+        return NULL;
+    }
     if (fs_context_resize(c, width, height) != 0) {
         fs_context_destroy(c);
         return NULL;
@@ -46,6 +51,7 @@ void fs_context_destroy(fs_context *c)
         return;
     fs_dlist_free_all(c);
     fs_occlusion_free(c);
+    fs_texture_free(c);
     fs_vertex_stage_free(c);
     fs_framebuffer_free(&c->fb);
     free(c->scratch);

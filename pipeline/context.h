@@ -21,6 +21,7 @@
 struct fs_dlist_state;      /* driver/display_list.c */
 struct fs_capture;          /* driver/capture.c */
 struct fs_occlusion;        /* units/occlusion_gl.c */
+struct fs_texture_state;    /* units/texture_object.c */
 
 struct fs_context {
     fs_config cfg;
@@ -46,6 +47,8 @@ struct fs_context {
     /* The Occlusion Unit, its GL state and the query objects; created on
      * first use (units/occlusion_gl.c). */
     struct fs_occlusion *occlusion;
+    /* The texture unit's state (units/texture_unit.h). */
+    struct fs_texture_state *texture;
 
     fs_stats stats;               /* counters of the current frame */
     uint64_t unsupported[FS_CMD_COUNT]; /* by command: executor missing or mode unsupported */

@@ -19,6 +19,7 @@
 #include <math.h>
 #include <string.h>
 #include "rasterizer_priv.h"
+#include "../units/texture_unit.h"
 
 /* x86 builds carry an FMA variant of the attribute evaluation, chosen at run
  * time (no -march flags in reference builds). */
@@ -137,17 +138,27 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
             float oow = 1.0f / PLANE_AT(&s->w, px, py);                           \
             for (int k = 0; k < 4; k++)                                           \
                 q->color[i][k] = PLANE_AT(&s->color[k], px, py) * oow;            \
-            if (s->use_tex)                                                       \
-                for (int k = 0; k < 4; k++)                                       \
-                    q->tex[i][k] = PLANE_AT(&s->tex[k], px, py) * oow;            \
         } else {                                                                  \
             for (int k = 0; k < 4; k++)                                           \
                 q->color[i][k] = PLANE_AT(&s->color[k], px, py);                  \
-            if (s->use_tex)                                                       \
+        }                                                                         \
+    }                                                                             \
+    /* Texture coordinates of all four pixels, covered or not: lambda comes \
+     * from the quad's differences (GL 1.5 spec 3.8.8; llvmpipe shades   \
+     * whole quads). */                                                          \
+    if (s->use_tex)                                                               \
+        for (int i = 0; i < 4; i++) {                                             \
+            float px = (float)(q->x + (i & 1));                                   \
+            float py = (float)fs_raster_row_to_gl(s->height, q->y + (i >> 1));    \
+            if (s->perspective) {                                                 \
+                float oow = 1.0f / PLANE_AT(&s->w, px, py);                       \
+                for (int k = 0; k < 4; k++)                                       \
+                    q->tex[i][k] = PLANE_AT(&s->tex[k], px, py) * oow;            \
+            } else {                                                              \
                 for (int k = 0; k < 4; k++)                                       \
                     q->tex[i][k] = PLANE_AT(&s->tex[k], px, py);                  \
-        }                                                                         \
-    }
+            }                                                                     \
+        }
 
 static void emit_pixels(const fs_prim_setup *s, fs_quad *q, unsigned m, int depth_bits)
 {
@@ -178,11 +189,15 @@ void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
 #if FS_RASTER_HAVE_FMA
     if (c->raster.has_fma) {
         emit_pixels_fma(s, q, m, c->fb.depth_bits);
+        if (s->use_tex)
+            fs_texture_quad(c, q); /* texturing (GL 1.5 spec 3.8) precedes 4.1 */
         fs_fragment_quad(c, q);
         return;
     }
 #endif
     emit_pixels(s, q, m, c->fb.depth_bits);
+    if (s->use_tex)
+        fs_texture_quad(c, q);
     fs_fragment_quad(c, q);
 }
 

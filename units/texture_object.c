@@ -1,0 +1,746 @@
+/*
+ * Texture objects (GL 1.5 spec 3.8.12), texture images (3.8.1-3.8.3),
+ * texture parameters (3.8.4), completeness (3.8.10) and the texture
+ * environment (3.8.13).  Every command checks its arguments first: a call
+ * that sets a GL error changes nothing (2.5).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "texture_priv.h"
+#include "../pipeline/context.h"
+
+static void object_defaults(fs_tex_object *t, GLuint name)
+{
+    /* Initial state: GL 1.5 spec table 6.17. */
+    memset(t, 0, sizeof *t);
+    t->name = name;
+    t->min_filter = GL_NEAREST_MIPMAP_LINEAR;
+    t->mag_filter = GL_LINEAR;
+    t->wrap_s = t->wrap_t = GL_REPEAT;
+    t->priority = 1.0f;
+    t->complete = -1;
+}
+
+static void object_release(fs_tex_object *t)
+{
+    for (int i = 0; i < FS_TEX_MAX_LEVELS; i++)
+        free(t->level[i].texels);
+}
+
+int fs_texture_init(fs_context *c)
+{
+    struct fs_texture_state *s = calloc(1, sizeof *s);
+    if (!s)
+        return -1;
+    object_defaults(&s->default_2d, 0);
+    s->bound = &s->default_2d;
+    s->next_name = 1;
+    /* Table 6.19: MODULATE, environment colour (0,0,0,0). */
+    s->env_mode = GL_MODULATE;
+    c->texture = s;
+    return 0;
+}
+
+void fs_texture_free(fs_context *c)
+{
+    struct fs_texture_state *s = c->texture;
+    if (!s)
+        return;
+    object_release(&s->default_2d);
+    for (size_t i = 0; i < s->count; i++) {
+        object_release(s->objects[i]);
+        free(s->objects[i]);
+    }
+    free(s->objects);
+    free(s);
+    c->texture = NULL;
+}
+
+bool *fs_texture_enable_flag(fs_context *c, GLenum cap)
+{
+    return cap == GL_TEXTURE_2D ? &c->texture->enabled_2d : NULL;
+}
+
+void fs_texture_enables_changed(fs_context *c)
+{
+    /* The rasterizer interpolates texture coordinates only while a unit
+     * reads them (rasterizer.h). */
+    c->raster.interpolate_tex = c->texture->enabled_2d;
+}
+
+uint64_t fs_texture_quads_sampled(const fs_context *c) { return c->texture->quads_sampled; }
+uint64_t fs_texture_quads_incomplete(const fs_context *c) { return c->texture->quads_incomplete; }
+
+/* ---- objects (3.8.12) ---- */
+
+static fs_tex_object *lookup(struct fs_texture_state *s, GLuint name, size_t *index)
+{
+    /* Linear: lookups happen at bind and delete time only, never per
+     * fragment (the bound object is held as a pointer). */
+    for (size_t i = 0; i < s->count; i++) {
+        if (s->objects[i]->name == name) {
+            if (index)
+                *index = i;
+            return s->objects[i];
+        }
+    }
+    return NULL;
+}
+
+static fs_tex_object *create_object(struct fs_texture_state *s, GLuint name)
+{
+    if (s->count == s->cap) {
+        size_t ncap = s->cap ? s->cap * 2 : 16;
+        fs_tex_object **p = realloc(s->objects, ncap * sizeof *p);
+        if (!p)
+            return NULL;
+        s->objects = p;
+        s->cap = ncap;
+    }
+    fs_tex_object *t = malloc(sizeof *t);
+    if (!t)
+        return NULL;
+    object_defaults(t, name);
+    s->objects[s->count++] = t;
+    return t;
+}
+
+void fs_exec_GenTextures(fs_context *c, GLsizei n, GLuint *textures)
+{
+    struct fs_texture_state *s = c->texture;
+    if (n < 0) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    /* Names are reserved by being returned; GL 1.5 creates the object on
+     * first bind.  fragsim creates it at once (unbound, default state),
+     * which glIsTexture cannot tell apart only because it also reports
+     * bound_once (see fs_exec_IsTexture). */
+    for (GLsizei i = 0; i < n; i++) {
+        GLuint name = s->next_name;
+        while (name == 0 || lookup(s, name, NULL))
+            name++;
+        s->next_name = name + 1;
+        if (!create_object(s, name)) {
+            fs_error(c, GL_OUT_OF_MEMORY);
+            return;
+        }
+        textures[i] = name;
+    }
+}
+
+void fs_exec_DeleteTextures(fs_context *c, GLsizei n, const GLuint *textures)
+{
+    struct fs_texture_state *s = c->texture;
+    if (n < 0) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    for (GLsizei i = 0; i < n; i++) {
+        size_t idx;
+        fs_tex_object *t = textures[i] ? lookup(s, textures[i], &idx) : NULL;
+        if (!t)
+            continue; /* 0 and unused names are silently ignored */
+        /* A bound texture that is deleted reverts to texture 0. */
+        if (s->bound == t)
+            s->bound = &s->default_2d;
+        object_release(t);
+        free(t);
+        s->objects[idx] = s->objects[--s->count];
+    }
+}
+
+void fs_exec_BindTexture(fs_context *c, GLenum target, GLuint texture)
+{
+    struct fs_texture_state *s = c->texture;
+    if (target == GL_TEXTURE_1D || target == GL_TEXTURE_3D) {
+        fs_unsupported(c, target == GL_TEXTURE_1D ? "glBindTexture(GL_TEXTURE_1D)" : "glBindTexture(GL_TEXTURE_3D)");
+        return;
+    }
+    if (target != GL_TEXTURE_2D) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    if (texture == 0) {
+        s->bound = &s->default_2d;
+        return;
+    }
+    fs_tex_object *t = lookup(s, texture, NULL);
+    if (!t)
+        t = create_object(s, texture);
+    if (!t) {
+        fs_error(c, GL_OUT_OF_MEMORY);
+        return;
+    }
+    t->bound_once = true;
+    s->bound = t;
+}
+
+GLboolean fs_exec_IsTexture(fs_context *c, GLuint texture)
+{
+    /* GL 1.5 spec 3.8.12: a name returned by GenTextures but not yet bound
+     * is not a texture. */
+    fs_tex_object *t = texture ? lookup(c->texture, texture, NULL) : NULL;
+    return t && t->bound_once ? GL_TRUE : GL_FALSE;
+}
+
+/* ---- pixel formats (3.6.4, 3.8.1) ---- */
+
+/* Elements per group of a client format; 0 for formats fragsim does not
+ * know (not a GL 1.x colour format). */
+static int format_components(GLenum format)
+{
+    switch (format) {
+    case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE: return 1;
+    case GL_LUMINANCE_ALPHA: return 2;
+    case GL_RGB: case GL_BGR: return 3;
+    case GL_RGBA: case GL_BGRA: return 4;
+    default: return 0;
+    }
+}
+
+static bool format_valid_enum(GLenum format)
+{
+    /* Valid GL 1.5 formats that are not colour formats fragsim converts
+     * (COLOR_INDEX, DEPTH_COMPONENT for textures is GL 1.4 ARB only). */
+    return format_components(format) > 0 || format == GL_COLOR_INDEX;
+}
+
+static bool type_valid_enum(GLenum type)
+{
+    switch (type) {
+    case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_UNSIGNED_SHORT: case GL_SHORT:
+    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: case GL_BITMAP:
+        return true;
+    default:
+        return false;
+    }
+}
+
+static int type_bytes(GLenum type)
+{
+    switch (type) {
+    case GL_UNSIGNED_BYTE: return 1;
+    case GL_FLOAT: return 4;
+    default: return 0;
+    }
+}
+
+/* Bytes glTexImage2D/glTexSubImage2D read (GL 1.5 spec 3.6.4, unpacking:
+ * row length and alignment).  0 for unknown formats and types (the command
+ * then fails with an error and reads nothing). */
+int64_t fs_teximage_bytes(fs_context *c, GLsizei w, GLsizei h, GLenum format, GLenum type)
+{
+    int n = format_components(format), sz = type_bytes(type);
+    if (w <= 0 || h <= 0 || n == 0 || sz == 0)
+        return 0;
+    int64_t len = c->unpack_row_length > 0 ? c->unpack_row_length : w;
+    int64_t a = c->unpack_alignment;
+    int64_t row = (int64_t)n * len * sz;
+    if (sz < a)
+        row = (row + a - 1) / a * a;
+    return row * (h - 1) + (int64_t)n * w * sz;
+}
+
+int fs_texparam_count(GLenum pname) { return pname == GL_TEXTURE_BORDER_COLOR ? 4 : 1; }
+int fs_texenv_count(GLenum pname) { return pname == GL_TEXTURE_ENV_COLOR ? 4 : 1; }
+
+/* Base internal format of an internalformat argument (tables 3.15 and
+ * 3.16); 0 when it is not one. */
+static GLenum base_format(GLint f)
+{
+    switch (f) {
+    case 1: case GL_LUMINANCE: case GL_LUMINANCE4: case GL_LUMINANCE8: case GL_LUMINANCE12: case GL_LUMINANCE16:
+        return GL_LUMINANCE;
+    case 2: case GL_LUMINANCE_ALPHA: case GL_LUMINANCE4_ALPHA4: case GL_LUMINANCE6_ALPHA2:
+    case GL_LUMINANCE8_ALPHA8: case GL_LUMINANCE12_ALPHA4: case GL_LUMINANCE12_ALPHA12:
+    case GL_LUMINANCE16_ALPHA16:
+        return GL_LUMINANCE_ALPHA;
+    case GL_ALPHA: case GL_ALPHA4: case GL_ALPHA8: case GL_ALPHA12: case GL_ALPHA16:
+        return GL_ALPHA;
+    case GL_INTENSITY: case GL_INTENSITY4: case GL_INTENSITY8: case GL_INTENSITY12: case GL_INTENSITY16:
+        return GL_INTENSITY;
+    case 3: case GL_RGB: case GL_R3_G3_B2: case GL_RGB4: case GL_RGB5: case GL_RGB8: case GL_RGB10:
+    case GL_RGB12: case GL_RGB16:
+        return GL_RGB;
+    case 4: case GL_RGBA: case GL_RGBA2: case GL_RGBA4: case GL_RGB5_A1: case GL_RGBA8: case GL_RGB10_A2:
+    case GL_RGBA12: case GL_RGBA16:
+        return GL_RGBA;
+    default:
+        return 0;
+    }
+}
+
+/* Sized formats with fewer than 8 bits per component: OSMesa may store
+ * them at that precision; fragsim keeps 8 bits and says so. */
+static bool low_precision_format(GLint f)
+{
+    switch (f) {
+    case GL_LUMINANCE4: case GL_LUMINANCE4_ALPHA4: case GL_LUMINANCE6_ALPHA2: case GL_ALPHA4:
+    case GL_INTENSITY4: case GL_R3_G3_B2: case GL_RGB4: case GL_RGB5: case GL_RGBA2: case GL_RGBA4:
+    case GL_RGB5_A1:
+        return true;
+    default:
+        return false;
+    }
+}
+
+static uint8_t float_to_ubyte(float v)
+{
+    /* Conversion of a float component to an 8-bit fixed-point texel
+     * (2.14.9 eq. 2.3 applied to 3.6.4's clamped values), rounded to
+     * nearest. */
+    v = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
+    return (uint8_t)lrintf(v * 255.0f);
+}
+
+/* Reads one client pixel group as RGBA (3.6.4: missing colour components
+ * are 0, a missing alpha is 1; luminance goes to R, G and B). */
+static void read_group(const uint8_t *p, GLenum format, GLenum type, uint8_t out[4])
+{
+    uint8_t e[4];
+    int n = format_components(format);
+    for (int k = 0; k < n; k++) {
+        if (type == GL_UNSIGNED_BYTE) {
+            e[k] = p[k];
+        } else {
+            float f;
+            memcpy(&f, p + 4 * k, sizeof f);
+            e[k] = float_to_ubyte(f);
+        }
+    }
+    out[0] = out[1] = out[2] = 0;
+    out[3] = 255;
+    switch (format) {
+    case GL_RED: out[0] = e[0]; break;
+    case GL_GREEN: out[1] = e[0]; break;
+    case GL_BLUE: out[2] = e[0]; break;
+    case GL_ALPHA: out[3] = e[0]; break;
+    case GL_LUMINANCE: out[0] = out[1] = out[2] = e[0]; break;
+    case GL_LUMINANCE_ALPHA: out[0] = out[1] = out[2] = e[0]; out[3] = e[1]; break;
+    case GL_RGB: out[0] = e[0]; out[1] = e[1]; out[2] = e[2]; break;
+    case GL_BGR: out[0] = e[2]; out[1] = e[1]; out[2] = e[0]; break;
+    case GL_RGBA: memcpy(out, e, 4); break;
+    case GL_BGRA: out[0] = e[2]; out[1] = e[1]; out[2] = e[0]; out[3] = e[3]; break;
+    default: break;
+    }
+}
+
+/* Keeps the components of the base internal format (table 3.15) and
+ * expands them as the sampler reads them (see fs_tex_image). */
+static void store_texel(uint8_t *dst, const uint8_t rgba[4], GLenum base)
+{
+    switch (base) {
+    case GL_LUMINANCE: dst[0] = dst[1] = dst[2] = rgba[0]; dst[3] = 255; break;
+    case GL_LUMINANCE_ALPHA: dst[0] = dst[1] = dst[2] = rgba[0]; dst[3] = rgba[3]; break;
+    case GL_ALPHA: dst[0] = dst[1] = dst[2] = 0; dst[3] = rgba[3]; break;
+    case GL_INTENSITY: dst[0] = dst[1] = dst[2] = dst[3] = rgba[0]; break;
+    case GL_RGB: dst[0] = rgba[0]; dst[1] = rgba[1]; dst[2] = rgba[2]; dst[3] = 255; break;
+    default: memcpy(dst, rgba, 4); break;
+    }
+}
+
+/* Unpacks a client image into rows [y0, y0+h) and columns [x0, x0+w) of img. */
+static void unpack_image(fs_context *c, fs_tex_image *img, int x0, int y0, int w, int h, GLenum format,
+                         GLenum type, const uint8_t *pixels)
+{
+    int n = format_components(format), sz = type_bytes(type);
+    int64_t len = c->unpack_row_length > 0 ? c->unpack_row_length : w;
+    int64_t a = c->unpack_alignment;
+    int64_t row = (int64_t)n * len * sz;
+    if (sz < a)
+        row = (row + a - 1) / a * a;
+    for (int y = 0; y < h; y++) {
+        const uint8_t *src = pixels + row * y;
+        uint8_t *dst = img->texels + ((size_t)(y0 + y) * (size_t)img->width + (size_t)x0) * 4;
+        for (int x = 0; x < w; x++) {
+            uint8_t rgba[4];
+            read_group(src + (size_t)x * (size_t)(n * sz), format, type, rgba);
+            store_texel(dst + 4 * x, rgba, img->base_format);
+        }
+    }
+}
+
+static bool is_pow2_or_zero(GLsizei v) { return (v & (v - 1)) == 0; }
+
+/* Checks shared by glTexImage2D and glCopyTexImage2D (3.8.1): returns the
+ * GL error or GL_NO_ERROR.  Border 1 images are valid GL but fragsim does
+ * not model borders (neither does gallium). */
+static GLenum check_image_args(GLint level, GLint internalformat, GLsizei width, GLsizei height, GLint border)
+{
+    if (level < 0 || level > FS_TEX_MAX_LOG2)
+        return GL_INVALID_VALUE;
+    if (!base_format(internalformat))
+        return GL_INVALID_VALUE;
+    if (border != 0 && border != 1)
+        return GL_INVALID_VALUE;
+    /* w = 2^n + 2*border (GL 1.x has no non-power-of-two textures); zero
+     * is a valid, empty image. */
+    if (width < 0 || height < 0 || width > FS_TEX_MAX_SIZE + 2 * border || height > FS_TEX_MAX_SIZE + 2 * border)
+        return GL_INVALID_VALUE;
+    GLsizei iw = width - 2 * border, ih = height - 2 * border;
+    if ((width > 0 && (iw < 0 || !is_pow2_or_zero(iw))) || (height > 0 && (ih < 0 || !is_pow2_or_zero(ih))))
+        return GL_INVALID_VALUE;
+    /* A level's size can be at most max_size >> level. */
+    if (iw > (FS_TEX_MAX_SIZE >> level) || ih > (FS_TEX_MAX_SIZE >> level))
+        return GL_INVALID_VALUE;
+    return GL_NO_ERROR;
+}
+
+/* Replaces level `level` of the bound texture with an allocated, undefined
+ * width x height image.  Returns it, or NULL (GL_OUT_OF_MEMORY set). */
+static fs_tex_image *define_level(fs_context *c, GLint level, GLint internalformat, GLsizei width, GLsizei height)
+{
+    fs_tex_object *t = c->texture->bound;
+    fs_tex_image *img = &t->level[level];
+    uint8_t *texels = NULL;
+    if (width > 0 && height > 0) {
+        texels = calloc((size_t)width * (size_t)height, 4);
+        if (!texels) {
+            fs_error(c, GL_OUT_OF_MEMORY);
+            return NULL;
+        }
+    }
+    free(img->texels);
+    img->texels = texels;
+    img->width = texels ? width : 0;
+    img->height = texels ? height : 0;
+    img->internal_format = internalformat;
+    img->base_format = base_format(internalformat);
+    t->complete = -1;
+    if (low_precision_format(internalformat))
+        fs_unsupported(c, "texture internal format below 8 bits per component (stored at 8)");
+    return img;
+}
+
+void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint internalformat, GLsizei width,
+                        GLsizei height, GLint border, GLenum format, GLenum type, const GLvoid *pixels)
+{
+    if (target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    if (!format_valid_enum(format) || !type_valid_enum(type)) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    GLenum err = check_image_args(level, internalformat, width, height, border);
+    if (err != GL_NO_ERROR) {
+        fs_error(c, err);
+        return;
+    }
+    /* 3.6.4: BITMAP only goes with COLOR_INDEX (and STENCIL_INDEX). */
+    if (type == GL_BITMAP && format != GL_COLOR_INDEX) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    if (target == GL_PROXY_TEXTURE_2D) {
+        fs_unsupported(c, "glTexImage2D(GL_PROXY_TEXTURE_2D)");
+        return;
+    }
+    if (border != 0) {
+        fs_unsupported(c, "glTexImage2D with a border");
+        return;
+    }
+    if (format_components(format) == 0 || type_bytes(type) == 0) {
+        fs_unsupported(c, "glTexImage2D pixel format/type (only colour formats as GL_UNSIGNED_BYTE or GL_FLOAT)");
+        return;
+    }
+    fs_tex_image *img = define_level(c, level, internalformat, width, height);
+    if (img && img->texels && pixels)
+        unpack_image(c, img, 0, 0, width, height, format, type, pixels);
+}
+
+void fs_exec_TexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                           GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *pixels)
+{
+    if (target != GL_TEXTURE_2D || !format_valid_enum(format) || !type_valid_enum(type) ||
+        (type == GL_BITMAP && format != GL_COLOR_INDEX)) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    if (level < 0 || level > FS_TEX_MAX_LOG2 || width < 0 || height < 0) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    fs_tex_image *img = &c->texture->bound->level[level];
+    /* 3.8.2: the level must have been defined by TexImage. */
+    if (!img->texels) {
+        fs_error(c, GL_INVALID_OPERATION);
+        return;
+    }
+    if (xoffset < 0 || yoffset < 0 || (int64_t)xoffset + width > img->width ||
+        (int64_t)yoffset + height > img->height) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    if (format_components(format) == 0 || type_bytes(type) == 0) {
+        fs_unsupported(c, "glTexSubImage2D pixel format/type (only colour formats as GL_UNSIGNED_BYTE or GL_FLOAT)");
+        return;
+    }
+    if (width > 0 && height > 0 && pixels)
+        unpack_image(c, img, xoffset, yoffset, width, height, format, type, pixels);
+}
+
+/* Copies a framebuffer rectangle into img at (dx, dy) (3.8.2: the pixels
+ * are taken as by ReadPixels of RGBA; pixels outside the window are
+ * undefined, fragsim leaves them as they were). */
+static void copy_from_framebuffer(fs_context *c, fs_tex_image *img, int dx, int dy, GLint x, GLint y, GLsizei w,
+                                  GLsizei h)
+{
+    const fs_framebuffer *fb = &c->fb;
+    for (int j = 0; j < h; j++) {
+        int64_t sy = (int64_t)y + j;
+        if (sy < 0 || sy >= fb->height)
+            continue;
+        for (int i = 0; i < w; i++) {
+            int64_t sx = (int64_t)x + i;
+            if (sx < 0 || sx >= fb->width)
+                continue;
+            const uint8_t *src = fb->color + ((size_t)sy * (size_t)fb->width + (size_t)sx) * 4;
+            uint8_t *dst = img->texels + ((size_t)(dy + j) * (size_t)img->width + (size_t)(dx + i)) * 4;
+            store_texel(dst, src, img->base_format);
+        }
+    }
+}
+
+void fs_exec_CopyTexImage2D(fs_context *c, GLenum target, GLint level, GLenum internalformat, GLint x, GLint y,
+                            GLsizei width, GLsizei height, GLint border)
+{
+    if (target != GL_TEXTURE_2D) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    /* Table 3.16: the internal formats 1-4 are not accepted here. */
+    GLenum err = internalformat >= 1 && internalformat <= 4
+                     ? GL_INVALID_VALUE
+                     : check_image_args(level, (GLint)internalformat, width, height, border);
+    if (err != GL_NO_ERROR) {
+        fs_error(c, err);
+        return;
+    }
+    if (border != 0) {
+        fs_unsupported(c, "glCopyTexImage2D with a border");
+        return;
+    }
+    fs_tex_image *img = define_level(c, level, (GLint)internalformat, width, height);
+    if (img && img->texels)
+        copy_from_framebuffer(c, img, 0, 0, x, y, width, height);
+}
+
+void fs_exec_CopyTexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x,
+                               GLint y, GLsizei width, GLsizei height)
+{
+    if (target != GL_TEXTURE_2D) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    if (level < 0 || level > FS_TEX_MAX_LOG2 || width < 0 || height < 0) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    fs_tex_image *img = &c->texture->bound->level[level];
+    if (!img->texels) {
+        fs_error(c, GL_INVALID_OPERATION);
+        return;
+    }
+    if (xoffset < 0 || yoffset < 0 || (int64_t)xoffset + width > img->width ||
+        (int64_t)yoffset + height > img->height) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    copy_from_framebuffer(c, img, xoffset, yoffset, x, y, width, height);
+}
+
+/* ---- parameters (3.8.4) ---- */
+
+static bool is_min_filter(GLenum f)
+{
+    switch (f) {
+    case GL_NEAREST: case GL_LINEAR: case GL_NEAREST_MIPMAP_NEAREST: case GL_LINEAR_MIPMAP_NEAREST:
+    case GL_NEAREST_MIPMAP_LINEAR: case GL_LINEAR_MIPMAP_LINEAR:
+        return true;
+    default:
+        return false;
+    }
+}
+
+static bool is_wrap(GLenum w)
+{
+    return w == GL_REPEAT || w == GL_CLAMP || w == GL_CLAMP_TO_EDGE || w == GL_CLAMP_TO_BORDER ||
+           w == GL_MIRRORED_REPEAT;
+}
+
+/* One texture parameter; vals holds 1 or 4 values already as floats (the
+ * integer forms convert colours as 2.14.9 says, enums exactly). */
+static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const float *vals, bool vector)
+{
+    if (target != GL_TEXTURE_2D) {
+        if (target == GL_TEXTURE_1D || target == GL_TEXTURE_3D)
+            fs_unsupported(c, "glTexParameter on a 1D/3D texture");
+        else
+            fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    fs_tex_object *t = c->texture->bound;
+    GLenum e = (GLenum)(GLint)vals[0];
+    switch (pname) {
+    case GL_TEXTURE_MIN_FILTER:
+        if (!is_min_filter(e))
+            break;
+        t->min_filter = e;
+        t->complete = -1;
+        return;
+    case GL_TEXTURE_MAG_FILTER:
+        if (e != GL_NEAREST && e != GL_LINEAR)
+            break;
+        t->mag_filter = e;
+        return;
+    case GL_TEXTURE_WRAP_S:
+    case GL_TEXTURE_WRAP_T:
+        if (!is_wrap(e))
+            break;
+        if (e == GL_CLAMP_TO_BORDER || e == GL_MIRRORED_REPEAT)
+            fs_unsupported(c, "texture wrap mode GL_CLAMP_TO_BORDER/GL_MIRRORED_REPEAT (sampled as GL_CLAMP_TO_EDGE)");
+        *(pname == GL_TEXTURE_WRAP_S ? &t->wrap_s : &t->wrap_t) = e;
+        return;
+    case GL_TEXTURE_BORDER_COLOR:
+        if (!vector)
+            break;
+        for (int k = 0; k < 4; k++)
+            t->border[k] = vals[k] < 0.0f ? 0.0f : vals[k] > 1.0f ? 1.0f : vals[k];
+        return;
+    case GL_TEXTURE_PRIORITY:
+        t->priority = vals[0] < 0.0f ? 0.0f : vals[0] > 1.0f ? 1.0f : vals[0];
+        return;
+    case GL_TEXTURE_MIN_LOD: case GL_TEXTURE_MAX_LOD: case GL_TEXTURE_BASE_LEVEL: case GL_TEXTURE_MAX_LEVEL:
+    case GL_GENERATE_MIPMAP:
+        fs_unsupported(c, "glTexParameter LOD/level range or GL_GENERATE_MIPMAP");
+        return;
+    default:
+        break;
+    }
+    fs_error(c, GL_INVALID_ENUM);
+}
+
+/* Integer colour components map to [-1, 1] linearly (2.14.9 table 2.9). */
+static float int_to_float_color(GLint v) { return (float)((2.0 * v + 1.0) / 4294967295.0); }
+
+void fs_exec_TexParameteri(fs_context *c, GLenum target, GLenum pname, GLint param)
+{
+    float v = (float)param;
+    tex_parameter(c, target, pname, &v, false);
+}
+
+void fs_exec_TexParameterf(fs_context *c, GLenum target, GLenum pname, GLfloat param)
+{
+    tex_parameter(c, target, pname, &param, false);
+}
+
+void fs_exec_TexParameteriv(fs_context *c, GLenum target, GLenum pname, const GLint *params)
+{
+    float v[4] = {0, 0, 0, 0};
+    if (pname == GL_TEXTURE_BORDER_COLOR)
+        for (int k = 0; k < 4; k++)
+            v[k] = int_to_float_color(params[k]);
+    else
+        v[0] = (float)params[0];
+    tex_parameter(c, target, pname, v, true);
+}
+
+void fs_exec_TexParameterfv(fs_context *c, GLenum target, GLenum pname, const GLfloat *params)
+{
+    float v[4] = {params[0], 0, 0, 0};
+    if (pname == GL_TEXTURE_BORDER_COLOR)
+        memcpy(v, params, sizeof v);
+    tex_parameter(c, target, pname, v, true);
+}
+
+/* ---- completeness (3.8.10) ---- */
+
+bool fs_tex_complete(fs_tex_object *t)
+{
+    if (t->complete >= 0)
+        return t->complete != 0;
+    const fs_tex_image *b = &t->level[0];
+    bool ok = b->texels != NULL;
+    int last = 0;
+    bool mip = t->min_filter != GL_NEAREST && t->min_filter != GL_LINEAR;
+    if (ok && mip) {
+        /* Levels 1..p down to 1x1, each half the previous size (at least
+         * 1), all of the same internal format. */
+        int w = b->width, h = b->height;
+        while (ok && (w > 1 || h > 1)) {
+            w = w > 1 ? w / 2 : 1;
+            h = h > 1 ? h / 2 : 1;
+            last++;
+            const fs_tex_image *l = &t->level[last];
+            ok = l->texels && l->width == w && l->height == h && l->internal_format == b->internal_format;
+        }
+    }
+    t->last_level = ok ? last : 0;
+    t->complete = ok ? 1 : 0;
+    return ok;
+}
+
+/* ---- texture environment (3.8.13) ---- */
+
+static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *vals, bool vector)
+{
+    struct fs_texture_state *s = c->texture;
+    if (target != GL_TEXTURE_ENV) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    if (pname == GL_TEXTURE_ENV_MODE) {
+        GLenum m = (GLenum)(GLint)vals[0];
+        switch (m) {
+        case GL_MODULATE: case GL_DECAL: case GL_BLEND: case GL_REPLACE: case GL_ADD:
+            s->env_mode = m;
+            return;
+        case GL_COMBINE:
+            fs_unsupported(c, "glTexEnv(GL_COMBINE)");
+            return;
+        default:
+            fs_error(c, GL_INVALID_ENUM);
+            return;
+        }
+    }
+    if (pname == GL_TEXTURE_ENV_COLOR && vector) {
+        for (int k = 0; k < 4; k++)
+            s->env_color[k] = vals[k] < 0.0f ? 0.0f : vals[k] > 1.0f ? 1.0f : vals[k];
+        return;
+    }
+    fs_error(c, GL_INVALID_ENUM);
+}
+
+void fs_exec_TexEnvi(fs_context *c, GLenum target, GLenum pname, GLint param)
+{
+    float v = (float)param;
+    tex_env(c, target, pname, &v, false);
+}
+
+void fs_exec_TexEnvf(fs_context *c, GLenum target, GLenum pname, GLfloat param)
+{
+    tex_env(c, target, pname, &param, false);
+}
+
+void fs_exec_TexEnviv(fs_context *c, GLenum target, GLenum pname, const GLint *params)
+{
+    float v[4] = {0, 0, 0, 0};
+    if (pname == GL_TEXTURE_ENV_COLOR)
+        for (int k = 0; k < 4; k++)
+            v[k] = int_to_float_color(params[k]);
+    else
+        v[0] = (float)params[0];
+    tex_env(c, target, pname, v, true);
+}
+
+void fs_exec_TexEnvfv(fs_context *c, GLenum target, GLenum pname, const GLfloat *params)
+{
+    float v[4] = {params[0], 0, 0, 0};
+    if (pname == GL_TEXTURE_ENV_COLOR)
+        memcpy(v, params, sizeof v);
+    tex_env(c, target, pname, v, true);
+}

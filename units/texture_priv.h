@@ -1,0 +1,51 @@
+/*
+ * Private to the texture unit (texture_object.c, texture_sample.c): the
+ * texture objects and the unit's state.
+ */
+#ifndef FS_TEXTURE_PRIV_H
+#define FS_TEXTURE_PRIV_H
+#include <stddef.h>
+#include "texture_unit.h"
+
+/* One image (a MIPmap level).  Texels are stored as RGBA8 already expanded
+ * the way the sampler reads them (llvmpipe's sampler-view swizzle, GL 1.5
+ * spec table 3.21): LUMINANCE as (L,L,L,1), ALPHA as (0,0,0,A),
+ * INTENSITY as (I,I,I,I), RGB as (R,G,B,1).  The base format is kept for
+ * the texture environment, whose functions depend on it (table 3.22). */
+typedef struct fs_tex_image {
+    int width, height;          /* 0: the level is not defined */
+    GLint internal_format;      /* as given (for the completeness rule) */
+    GLenum base_format;         /* GL_RGBA, GL_RGB, GL_LUMINANCE, ... */
+    uint8_t *texels;            /* width*height*4 bytes, row 0 = t near 0 */
+} fs_tex_image;
+
+typedef struct fs_tex_object {
+    GLuint name;
+    bool bound_once;            /* has been bound: its target is fixed (3.8.12) */
+    GLenum min_filter, mag_filter, wrap_s, wrap_t;
+    float border[4];
+    float priority;
+    fs_tex_image level[FS_TEX_MAX_LEVELS];
+    /* Completeness (3.8.10), recomputed when images or filters change:
+     * -1 unknown, 0 incomplete, 1 complete.  last_level is the highest
+     * level sampling may use. */
+    int complete;
+    int last_level;
+} fs_tex_object;
+
+struct fs_texture_state {
+    bool enabled_2d;            /* glEnable(GL_TEXTURE_2D) */
+    fs_tex_object default_2d;   /* texture object 0 (3.8.12) */
+    fs_tex_object *bound;       /* the current 2D texture */
+    fs_tex_object **objects;    /* named objects, unordered */
+    size_t count, cap;
+    GLuint next_name;           /* where glGenTextures starts looking */
+    /* texture environment (3.8.13) */
+    GLenum env_mode;
+    float env_color[4];
+    uint64_t quads_sampled, quads_incomplete;
+};
+
+/* Completeness of an object, cached (3.8.10). */
+bool fs_tex_complete(fs_tex_object *t);
+#endif

@@ -1,0 +1,394 @@
+/*
+ * Texture sampling (GL 1.5 spec 3.8.5-3.8.9) and the texture environment
+ * (3.8.13), modelled on llvmpipe as OSMesa 22.3 uses it (gallivm
+ * lp_bld_sample.c, lp_bld_sample_aos.c, lp_bld_sample_soa.c, lp_bld_arit.c;
+ * read for the rules, not copied; facts and measurements in
+ * tests/test_texture.c):
+ *
+ * - The texture coordinates are divided by q (Mesa's fixed-function
+ *   fragment program samples projectively: s * (1/q)).
+ * - lambda is computed once per 2x2 quad (llvmpipe's default "quad lod")
+ *   from the differences of the quad's upper-left pixel (in llvmpipe's
+ *   y-down frame) to its right and lower neighbours, scaled by the level-0
+ *   size: rho^2 = max(dsdx^2 + dtdx^2, dsdy^2 + dtdy^2), exact (no "rho
+ *   approximation" and no "brilinear" by default).  For the MIPMAP_NEAREST
+ *   filters the level is iround(log2(rho)) taken from the float exponent of
+ *   rho^2; for MIPMAP_LINEAR lambda = 0.5 * fast_log2(rho^2), a piece-wise
+ *   linear log2 exact at powers of two.  Magnification is rho^2 <= 1
+ *   (c = 0, GL 1.5's c = 0.5 case is not applied).
+ * - 8-bit textures with REPEAT or CLAMP_TO_EDGE are filtered in fixed point
+ *   ("AoS" path): NEAREST takes floor(s * w); LINEAR takes
+ *   round(s * w * 256) - 128 as a 24.8 fixed-point texel position, whose 8
+ *   fraction bits are the bilinear weights; lerps are 8-bit with rounding;
+ *   the two MIPmap levels are blended with weight trunc(frac(lambda)*256).
+ * - GL_CLAMP with LINEAR needs the border colour: llvmpipe filters that in
+ *   float ("SoA" path), and so does fragsim.
+ * - The texel becomes a float c/255 and the environment is computed in
+ *   float; the colour buffer conversion rounds it (fragment_stages.h).
+ */
+#include <math.h>
+#include <string.h>
+#include "texture_priv.h"
+#include "../pipeline/context.h"
+
+#ifdef __clang__
+/* Every float operation must round separately, as llvmpipe's do. */
+#pragma STDC FP_CONTRACT OFF
+#endif
+
+static inline uint32_t float_bits(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof u);
+    return u;
+}
+
+static inline float bits_float(uint32_t u)
+{
+    float f;
+    memcpy(&f, &u, sizeof f);
+    return f;
+}
+
+/* float -> int32 like cvttps2dq/cvtps2dq: out of range or NaN gives
+ * INT32_MIN ("integer indefinite"). */
+static inline int32_t to_int_floor(float v)
+{
+    if (!(v >= -2147483648.0f && v < 2147483648.0f))
+        return INT32_MIN;
+    return (int32_t)floorf(v);
+}
+
+static inline int32_t to_int_round_even(float v)
+{
+    if (!(v >= -2147483648.0f && v < 2147483648.0f))
+        return INT32_MIN;
+    return (int32_t)nearbyintf(v);
+}
+
+/* ---- lambda (3.8.8) ---- */
+
+typedef struct lod_result {
+    bool minified;    /* lambda > c: the min filter applies */
+    int level0, level1;
+    int weight8;      /* AoS blend weight of level1, 0..255 */
+    float weightf;    /* the same weight in float (SoA path) */
+} lod_result;
+
+static int exponent_of(float x, int bias)
+{
+    /* floor(log2(x)) + bias from the IEEE exponent field (no denormal
+     * special case, as llvmpipe's lp_build_extract_exponent). */
+    return (int)((float_bits(x) >> 23) & 0xffu) - 127 + bias;
+}
+
+static float fast_log2(float x)
+{
+    /* log2(x) ~ (floor(log2(x)) - 1) + x / 2^floor(log2(x)) */
+    float ipart = (float)exponent_of(x, -1);
+    float fpart = bits_float((float_bits(x) & 0x007fffffu) | 0x3f800000u);
+    return ipart + fpart;
+}
+
+static void select_lod(const fs_tex_object *t, const float s[4], const float tt[4], lod_result *r)
+{
+    const fs_tex_image *b = &t->level[0];
+    /* llvmpipe's quad is (upper-left, upper-right, lower-left, lower-right)
+     * in its y-down frame, i.e. fs_quad pixels 2, 3, 0, 1. */
+    float fw = (float)b->width, fh = (float)b->height;
+    float dsdx = (s[3] - s[2]) * fw, dsdy = (s[0] - s[2]) * fw;
+    float dtdx = (tt[3] - tt[2]) * fh, dtdy = (tt[0] - tt[2]) * fh;
+    float rx = dsdx * dsdx + dtdx * dtdx;
+    float ry = dsdy * dsdy + dtdy * dtdy;
+    float rho2 = rx > ry ? rx : ry;
+    GLenum mf = t->min_filter;
+    r->level0 = r->level1 = 0;
+    r->weight8 = 0;
+    r->weightf = 0.0f;
+    if (mf == GL_NEAREST || mf == GL_LINEAR) {
+        r->minified = rho2 > 1.0f;
+        return;
+    }
+    if (mf == GL_NEAREST_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_NEAREST) {
+        /* iround(log2(sqrt(rho2))) = (floor(log2(rho2)) + 1) >> 1 */
+        int ip = exponent_of(rho2, 1) >> 1;
+        r->minified = rho2 > 1.0f;
+        r->level0 = ip < 0 ? 0 : ip > t->last_level ? t->last_level : ip;
+        r->level1 = r->level0;
+        return;
+    }
+    float lod = fast_log2(rho2) * 0.5f;
+    r->minified = lod > 0.0f;
+    float fl = floorf(lod);
+    float fpart = lod - fl;
+    int ip = (int)fl;
+    if (fl < 0.0f) {
+        r->level0 = r->level1 = 0;
+        fpart = 0.0f;
+    } else if (fl >= (float)t->last_level) {
+        r->level0 = r->level1 = t->last_level;
+        fpart = 0.0f;
+    } else {
+        r->level0 = ip;
+        r->level1 = ip + 1;
+    }
+    r->weightf = fpart;
+    r->weight8 = (int)(fpart * 256.0f);
+}
+
+/* ---- fixed-point filtering (llvmpipe's AoS path) ---- */
+
+static inline int lerp8(int w, int a, int b)
+{
+    /* 8.8 fixed-point lerp with rounding of the product (x86 pmulhrsw of
+     * w and (b - a) << 7), wrapped to 8 bits. */
+    return (a + ((w * (b - a) + 128) >> 8)) & 0xff;
+}
+
+static inline int wrap_nearest(int x, int len, GLenum wrap)
+{
+    if (wrap == GL_REPEAT)
+        return x & (len - 1);
+    return x < 0 ? 0 : x > len - 1 ? len - 1 : x;
+}
+
+static void sample_nearest8(const fs_tex_object *t, const fs_tex_image *img, float s, float tt, uint8_t out[4])
+{
+    int x = wrap_nearest(to_int_floor(s * (float)img->width), img->width, t->wrap_s);
+    int y = wrap_nearest(to_int_floor(tt * (float)img->height), img->height, t->wrap_t);
+    memcpy(out, img->texels + ((size_t)y * (size_t)img->width + (size_t)x) * 4, 4);
+}
+
+static void linear_coord8(float s, int len, GLenum wrap, int *i0, int *i1, int *frac)
+{
+    int32_t v = to_int_round_even(s * (float)(len << 8));
+    v = (int32_t)((uint32_t)v - 128u);
+    *frac = v & 0xff;
+    int x0 = (int)(v >> 8);
+    if (wrap == GL_REPEAT) {
+        *i0 = x0 & (len - 1);
+        *i1 = (x0 + 1) & (len - 1);
+    } else {
+        *i0 = x0 < 0 ? 0 : x0 > len - 1 ? len - 1 : x0;
+        int x1 = x0 + 1;
+        *i1 = x1 < 0 ? 0 : x1 > len - 1 ? len - 1 : x1;
+    }
+}
+
+static void sample_linear8(const fs_tex_object *t, const fs_tex_image *img, float s, float tt, uint8_t out[4])
+{
+    int x0, x1, y0, y1, fx, fy;
+    linear_coord8(s, img->width, t->wrap_s, &x0, &x1, &fx);
+    linear_coord8(tt, img->height, t->wrap_t, &y0, &y1, &fy);
+    const uint8_t *r0 = img->texels + (size_t)y0 * (size_t)img->width * 4;
+    const uint8_t *r1 = img->texels + (size_t)y1 * (size_t)img->width * 4;
+    for (int k = 0; k < 4; k++) {
+        int a = lerp8(fx, r0[4 * x0 + k], r0[4 * x1 + k]);
+        int b = lerp8(fx, r1[4 * x0 + k], r1[4 * x1 + k]);
+        out[k] = (uint8_t)lerp8(fy, a, b);
+    }
+}
+
+static void sample_level8(const fs_tex_object *t, int level, GLenum filter, float s, float tt, uint8_t out[4])
+{
+    if (filter == GL_NEAREST)
+        sample_nearest8(t, &t->level[level], s, tt, out);
+    else
+        sample_linear8(t, &t->level[level], s, tt, out);
+}
+
+/* ---- float filtering with a border (llvmpipe's SoA path for GL_CLAMP) ---- */
+
+static void fetch_f(const fs_tex_object *t, const fs_tex_image *img, int x, int y, float out[4])
+{
+    if (x < 0 || y < 0 || x >= img->width || y >= img->height) {
+        memcpy(out, t->border, 4 * sizeof(float));
+        return;
+    }
+    const uint8_t *p = img->texels + ((size_t)y * (size_t)img->width + (size_t)x) * 4;
+    for (int k = 0; k < 4; k++)
+        out[k] = (float)p[k] * (1.0f / 255.0f);
+}
+
+static void linear_coord_f(float s, int len, GLenum wrap, int *i0, int *i1, float *frac)
+{
+    float lf = (float)len;
+    float u = s * lf;
+    if (wrap == GL_REPEAT) {
+        /* The float path also filters a REPEAT axis when the other one
+         * clamps. */
+        u = u - 0.5f;
+        float fl = floorf(u);
+        *frac = u - fl;
+        int x0 = to_int_floor(fl);
+        *i0 = x0 & (len - 1);
+        *i1 = (x0 + 1) & (len - 1);
+        return;
+    }
+    if (wrap == GL_CLAMP) {
+        /* 3.8.7: clamp to [0, 1] in texel space, then the border may be
+         * reached by one of the two texels. */
+        u = u < 0.0f ? 0.0f : u > lf ? lf : u;
+        u = u - 0.5f;
+        float fl = floorf(u);
+        *frac = u - fl;
+        *i0 = to_int_floor(fl);
+        *i1 = *i0 + 1;
+        return;
+    }
+    /* CLAMP_TO_EDGE (and the unmodelled modes) */
+    u = u < 0.5f ? 0.5f : u > lf - 0.5f ? lf - 0.5f : u;
+    u = u - 0.5f;
+    float fl = floorf(u);
+    *frac = u - fl;
+    int x0 = to_int_floor(fl);
+    *i0 = x0;
+    *i1 = x0 + 1 < len ? x0 + 1 : len - 1;
+}
+
+static inline float lerpf(float w, float a, float b) { return a + w * (b - a); }
+
+static void sample_level_f(const fs_tex_object *t, int level, GLenum filter, float s, float tt, float out[4])
+{
+    const fs_tex_image *img = &t->level[level];
+    if (filter == GL_NEAREST) {
+        int x = to_int_floor(s * (float)img->width), y = to_int_floor(tt * (float)img->height);
+        x = t->wrap_s == GL_REPEAT ? x & (img->width - 1) : x < 0 ? 0 : x >= img->width ? img->width - 1 : x;
+        y = t->wrap_t == GL_REPEAT ? y & (img->height - 1) : y < 0 ? 0 : y >= img->height ? img->height - 1 : y;
+        fetch_f(t, img, x, y, out);
+        return;
+    }
+    int x0, x1, y0, y1;
+    float fx, fy, a[4], b[4], cc[4], d[4];
+    linear_coord_f(s, img->width, t->wrap_s, &x0, &x1, &fx);
+    linear_coord_f(tt, img->height, t->wrap_t, &y0, &y1, &fy);
+    fetch_f(t, img, x0, y0, a);
+    fetch_f(t, img, x1, y0, b);
+    fetch_f(t, img, x0, y1, cc);
+    fetch_f(t, img, x1, y1, d);
+    for (int k = 0; k < 4; k++)
+        out[k] = lerpf(fy, lerpf(fx, a[k], b[k]), lerpf(fx, cc[k], d[k]));
+}
+
+/* ---- texture environment (3.8.13, tables 3.22 and 3.23) ---- */
+
+static inline float clamp01(float v) { return v < 0.0f ? 0.0f : v > 1.0f ? 1.0f : v; }
+
+static void apply_env(const struct fs_texture_state *st, GLenum base, const float tex[4], float col[4])
+{
+    const float *cc = st->env_color;
+    float lt = tex[0], at = tex[3];
+    switch (st->env_mode) {
+    case GL_REPLACE:
+        switch (base) {
+        case GL_ALPHA: col[3] = at; break;
+        case GL_LUMINANCE: case GL_RGB: col[0] = tex[0]; col[1] = tex[1]; col[2] = tex[2]; break;
+        default: memcpy(col, tex, 4 * sizeof(float)); break;
+        }
+        break;
+    case GL_MODULATE:
+        if (base != GL_ALPHA)
+            for (int k = 0; k < 3; k++)
+                col[k] = col[k] * tex[k];
+        if (base != GL_LUMINANCE && base != GL_RGB)
+            col[3] = col[3] * at;
+        break;
+    case GL_DECAL:
+        /* Undefined for the one- and two-component formats; Mesa passes
+         * the fragment through. */
+        if (base == GL_RGB)
+            for (int k = 0; k < 3; k++)
+                col[k] = tex[k];
+        else if (base == GL_RGBA)
+            for (int k = 0; k < 3; k++)
+                col[k] = lerpf(at, col[k], tex[k]);
+        break;
+    case GL_BLEND:
+        if (base != GL_ALPHA)
+            for (int k = 0; k < 3; k++)
+                col[k] = lerpf(tex[k], col[k], cc[k]);
+        if (base == GL_INTENSITY)
+            col[3] = lerpf(lt, col[3], cc[3]);
+        else if (base != GL_LUMINANCE && base != GL_RGB)
+            col[3] = col[3] * at;
+        break;
+    case GL_ADD:
+        if (base != GL_ALPHA)
+            for (int k = 0; k < 3; k++)
+                col[k] = clamp01(col[k] + tex[k]);
+        if (base == GL_INTENSITY)
+            col[3] = clamp01(col[3] + at);
+        else if (base != GL_LUMINANCE && base != GL_RGB)
+            col[3] = col[3] * at;
+        break;
+    default:
+        break;
+    }
+}
+
+/* ---- per quad ---- */
+
+void fs_texture_quad(fs_context *c, fs_quad *q)
+{
+    struct fs_texture_state *st = c->texture;
+    fs_tex_object *t = st->bound;
+    if (!st->enabled_2d)
+        return;
+    if (!fs_tex_complete(t)) {
+        /* 3.8.10: texturing is as if disabled for the unit. */
+        st->quads_incomplete++;
+        return;
+    }
+    st->quads_sampled++;
+    float s[4], tt[4];
+    for (int i = 0; i < 4; i++) {
+        float oq = 1.0f / q->tex[i][3];
+        s[i] = q->tex[i][0] * oq;
+        tt[i] = q->tex[i][1] * oq;
+    }
+    lod_result lr;
+    select_lod(t, s, tt, &lr);
+    GLenum mf = t->min_filter;
+    GLenum img_filter = (mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR)
+                            ? GL_LINEAR : GL_NEAREST;
+    bool mip_linear = mf == GL_NEAREST_MIPMAP_LINEAR || mf == GL_LINEAR_MIPMAP_LINEAR;
+    if (!lr.minified && t->mag_filter != img_filter) {
+        /* Magnification: level 0 (lambda <= 0 selects the base level),
+         * one image, mag filter. */
+        img_filter = t->mag_filter;
+        mip_linear = false;
+        lr.level0 = lr.level1 = 0;
+    }
+    /* The border colour only matters for GL_CLAMP with LINEAR; llvmpipe
+     * filters that case in float. */
+    bool any_linear = mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR ||
+                      t->mag_filter == GL_LINEAR;
+    bool float_path = any_linear && (t->wrap_s == GL_CLAMP || t->wrap_t == GL_CLAMP);
+    GLenum base = t->level[0].base_format;
+    for (int i = 0; i < 4; i++) {
+        if (!(q->mask & (1u << i)))
+            continue;
+        float tex[4];
+        if (float_path) {
+            sample_level_f(t, lr.level0, img_filter, s[i], tt[i], tex);
+            if (mip_linear && lr.weightf > 0.0f) {
+                float t1[4];
+                sample_level_f(t, lr.level1, img_filter, s[i], tt[i], t1);
+                for (int k = 0; k < 4; k++)
+                    tex[k] = lerpf(lr.weightf, tex[k], t1[k]);
+            }
+        } else {
+            uint8_t v[4];
+            sample_level8(t, lr.level0, img_filter, s[i], tt[i], v);
+            if (mip_linear && lr.weight8 > 0) {
+                uint8_t v1[4];
+                sample_level8(t, lr.level1, img_filter, s[i], tt[i], v1);
+                for (int k = 0; k < 4; k++)
+                    v[k] = (uint8_t)lerp8(lr.weight8, v[k], v1[k]);
+            }
+            for (int k = 0; k < 4; k++)
+                tex[k] = (float)v[k] * (1.0f / 255.0f);
+        }
+        apply_env(st, base, tex, q->color[i]);
+    }
+}

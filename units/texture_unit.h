@@ -1,0 +1,52 @@
+/*
+ * The GL texture unit (GL 1.5 spec 3.8): texture objects, 2D images and
+ * their MIPmap levels, sampling with the six min filters, and the texture
+ * environment.  One unit (unit 0), 2D textures only.
+ *
+ * Where it sits: the rasterizer interpolates the texture coordinates of all
+ * four pixels of a 2x2 quad (covered or not, because lambda needs the
+ * quad's derivatives) and calls fs_texture_quad() right before the
+ * per-fragment operations; it replaces each covered pixel's colour with the
+ * texture environment's result (GL 1.5 spec 3.8.13).
+ *
+ * The arithmetic follows llvmpipe as OSMesa uses it (Mesa 22.3, gallivm
+ * lp_bld_sample*.c; read for the rules, not copied): see texture_sample.c.
+ *
+ * Files: texture_object.c (objects, images, parameters, environment, GL
+ * errors), texture_sample.c (lambda, filters, environment arithmetic).
+ */
+#ifndef FS_TEXTURE_UNIT_H
+#define FS_TEXTURE_UNIT_H
+#include <stdbool.h>
+#include <stdint.h>
+#include <GL/gl.h>
+#include "../pipeline/rasterizer.h"
+
+typedef struct fs_context fs_context;
+
+/* GL_MAX_TEXTURE_SIZE: levels 0..FS_TEX_MAX_LEVELS-1 (GL 1.5 spec 3.8.1). */
+#define FS_TEX_MAX_LOG2 12
+#define FS_TEX_MAX_SIZE (1 << FS_TEX_MAX_LOG2)
+#define FS_TEX_MAX_LEVELS (FS_TEX_MAX_LOG2 + 1)
+
+/* Allocates c->texture with GL's initial state (GL 1.5 spec table 6.16-6.19).
+ * Returns 0, or -1 when out of memory. */
+int fs_texture_init(fs_context *c);
+void fs_texture_free(fs_context *c);
+
+/* The enable flag of a texture target (GL_TEXTURE_2D), for glEnable and
+ * glIsEnabled; NULL for other caps.  After changing it call
+ * fs_texture_enables_changed. */
+bool *fs_texture_enable_flag(fs_context *c, GLenum cap);
+/* Re-derives c->raster.interpolate_tex from the enables. */
+void fs_texture_enables_changed(fs_context *c);
+
+/* Applies texturing to a quad whose tex[][] holds the interpolated
+ * (s, t, r, q) of all four pixels. */
+void fs_texture_quad(fs_context *c, fs_quad *q);
+
+/* Sampling counters for tests: quads textured, and quads passed through
+ * untextured because the bound texture is incomplete (GL 1.5 spec 3.8.10). */
+uint64_t fs_texture_quads_sampled(const fs_context *c);
+uint64_t fs_texture_quads_incomplete(const fs_context *c);
+#endif
