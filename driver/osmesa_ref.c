@@ -4,6 +4,7 @@
  * prototypes requested, before GL/gl.h is first included. */
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/osmesa.h>
+#include <stdbool.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,6 +19,7 @@ struct fs_osmesa {
     void *scratch;
     size_t scratch_size;
     GLuint query; /* per-frame GL_SAMPLES_PASSED query of `fragsim check` */
+    bool query_active;
 };
 
 fs_osmesa *fs_osmesa_create(int width, int height, int depth_bits, int stencil_bits, char *err, size_t errlen)
@@ -190,12 +192,14 @@ void fs_osmesa_samples_begin(fs_osmesa *o)
     if (!o->query)
         glGenQueries(1, &o->query);
     glBeginQuery(GL_SAMPLES_PASSED, o->query);
+    o->query_active = true;
 }
 
 int64_t fs_osmesa_samples_end(fs_osmesa *o)
 {
     GLuint n = 0; /* libOSMesa exports the GL 1.5 query, not the 64-bit one */
     glEndQuery(GL_SAMPLES_PASSED);
+    o->query_active = false;
     glGetQueryObjectuiv(o->query, GL_QUERY_RESULT, &n);
     return glGetError() == GL_NO_ERROR ? (int64_t)n : -1;
 }
@@ -204,6 +208,14 @@ void fs_osmesa_destroy(fs_osmesa *o)
 {
     if (!o)
         return;
+    if (o->ctx && o->query) {
+        /* llvmpipe's rasterizer threads still write to an active query:
+         * end it and wait for them before the context frees it. */
+        if (o->query_active)
+            glEndQuery(GL_SAMPLES_PASSED);
+        glFinish();
+        glDeleteQueries(1, &o->query);
+    }
     if (o->ctx)
         OSMesaDestroyContext(o->ctx);
     free(o->color);
