@@ -27,13 +27,22 @@ LIB_OBJS := $(LIB_SRCS:%.c=$(BUILD)/%.o)
 CLI_OBJS := $(CLI_SRCS:%.c=$(BUILD)/%.o) $(CLI_CXX:%.cpp=$(BUILD)/%.o)
 TEST_BINS := $(TEST_SRCS:tests/%.c=$(BUILD)/tests/%)
 SCENEGEN := $(BUILD)/scenegen
+# The shim driver: GL and OSMesa entry points in a shared library, so that an
+# OSMesa program runs on the model (driver/shim_*.c).  Debian's gcc builds PIE
+# by default, which cannot go into a shared object, so the library core is
+# compiled again with -fPIC into $(BUILD)/pic/; hidden visibility exports only
+# the GL and OSMesa names.  It needs neither OSMesa nor OpenImageIO.
+SHIM_SRCS := $(wildcard driver/shim_*.c)
+PIC_OBJS := $(LIB_SRCS:%.c=$(BUILD)/pic/%.o) $(SHIM_SRCS:%.c=$(BUILD)/pic/%.o)
+SHIM := $(BUILD)/libfragsimGL.so
+SHIM_LIBS = $(shell pkg-config --libs snappy inih 2>/dev/null || echo -lsnappy -linih)
 LIB := $(BUILD)/libfragsim.a
 FRAGSIM := $(BUILD)/fragsim
 # Link the archive whole so that every executor overrides its weak fallback.
 WHOLE_LIB = -Wl,--whole-archive $(LIB) -Wl,--no-whole-archive
 
-.PHONY: all deps test run sanitize bench golden docs clean scenes tests
-all: $(LIB) $(FRAGSIM) tests scenes
+.PHONY: all deps test run sanitize bench golden docs clean scenes tests shim
+all: $(LIB) $(FRAGSIM) tests scenes shim
 
 deps:
 	@scripts/deps.sh
@@ -46,12 +55,20 @@ $(BUILD)/%.o: %.cpp
 	@mkdir -p $(dir $@)
 	$(CXX) $(CXXFLAGS) $(shell pkg-config --cflags OpenImageIO 2>/dev/null) -MMD -MP -c $< -o $@
 
+$(BUILD)/pic/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -fPIC -fvisibility=hidden -MMD -MP -c $< -o $@
+
 $(LIB): $(LIB_OBJS)
 	@mkdir -p $(dir $@)
 	rm -f $@ && ar rcs $@ $^
 
 $(FRAGSIM): $(CLI_OBJS) $(LIB)
 	$(CXX) $(LDFLAGS) -o $@ $(CLI_OBJS) $(WHOLE_LIB) $(PKG_LIBS) $(OIIO_LIBS) -lm
+
+shim: $(SHIM)
+$(SHIM): $(PIC_OBJS)
+	$(CC) $(LDFLAGS) -shared -Wl,-soname,libfragsimGL.so -Wl,-z,defs -o $@ $(PIC_OBJS) $(SHIM_LIBS) -lm
 
 tests: $(TEST_BINS)
 $(BUILD)/tests/%: $(BUILD)/tests/%.o $(LIB) $(filter-out $(BUILD)/driver/cli_main.o,$(CLI_OBJS))
