@@ -10,10 +10,12 @@ ROOT=$(cd "$(dirname "$0")/.." && pwd)
 SHIM="$FRAGSIM_BUILD/libfragsimGL.so"
 CC=${CC:-cc}
 # A sanitizer build's shim needs the sanitizer runtime loaded first: build
-# the programs with the same sanitizers.
+# the programs with the same sanitizers, and preload the runtime before it.
 PROG_FLAGS="-std=c11 -O1 -g -Wall -Wextra -Werror"
+PRELOAD="$SHIM"
 if ldd "$SHIM" 2>/dev/null | grep -q libasan; then
     PROG_FLAGS="$PROG_FLAGS -fsanitize=address,undefined"
+    PRELOAD="$(ldd "$SHIM" | awk '/libasan/ {print $3}') $SHIM"
 fi
 
 totals() { # STATS.json -> the lines of its "totals" block
@@ -49,7 +51,7 @@ test_boxes_same_numbers_as_osmesa() {
     ldd "$WORK/osmesa_boxes_shim" | grep -q OSMesa && fail "the shim build links libOSMesa"
     "$WORK/osmesa_boxes_osmesa" >"$WORK/boxes_osmesa.txt" 2>"$WORK/e1" || fail "OSMesa run: $(cat "$WORK/e1")"
     "$WORK/osmesa_boxes_shim" >"$WORK/boxes_shim.txt" 2>"$WORK/e2" || fail "shim run: $(cat "$WORK/e2")"
-    LD_PRELOAD="$SHIM" "$WORK/osmesa_boxes_osmesa" >"$WORK/boxes_preload.txt" 2>"$WORK/e3" \
+    LD_PRELOAD="$PRELOAD" "$WORK/osmesa_boxes_osmesa" >"$WORK/boxes_preload.txt" 2>"$WORK/e3" \
         || fail "preloaded run: $(cat "$WORK/e3")"
     grep -q llvmpipe "$WORK/e1" || fail "OSMesa run did not use llvmpipe: $(cat "$WORK/e1")"
     grep -q fragsim "$WORK/e2" || fail "linked run did not use the model: $(cat "$WORK/e2")"
