@@ -412,6 +412,8 @@ static int run_replay(int argc, char **argv, bool check)
         return 1;
     }
     const fs_replay_info *info = fs_replay_info_get(r);
+    if (info->warning[0])
+        fprintf(stderr, "%s: warning: %s\n", prog, info->warning);
     fs_context *c = fs_context_create(&cfg, info->width, info->height);
     fs_osmesa *ref = NULL;
     if (!c) {

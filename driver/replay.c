@@ -548,6 +548,8 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
         fs_replay_close(r);
         return NULL;
     }
+    if (fs_trace_warning(r->tr))
+        snprintf(r->info.warning, sizeof r->info.warning, "%s", fs_trace_warning(r->tr));
     fs_trace_close(r->tr);
     r->tr = NULL;
     reset_arrays(r);

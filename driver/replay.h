@@ -25,6 +25,7 @@ typedef struct fs_replay_info {
     int width, height;      /* chosen window size */
     char frame_end[64];     /* the call that ends frames */
     bool uses_queries;      /* the trace begins occlusion queries itself */
+    char warning[400];      /* e.g. the trace ends inside an event (a killed capture) */
 } fs_replay_info;
 
 typedef enum fs_replay_event {

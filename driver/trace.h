@@ -105,6 +105,13 @@ fs_trace_reader *fs_trace_open(const char *path, char *err, size_t errlen);
  */
 int fs_trace_next(fs_trace_reader *r, fs_tcall *call);
 const char *fs_trace_error(const fs_trace_reader *r);
+/* A capture whose program was killed (apitrace flushes whole chunks on
+ * SIGTERM) ends inside an event although every chunk is whole.  By default
+ * that partial event is dropped and the trace ends cleanly, with a warning
+ * here; strict mode makes it an error like any other truncation.  A
+ * truncated chunk is always an error. */
+const char *fs_trace_warning(const fs_trace_reader *r);
+void fs_trace_set_strict_end(fs_trace_reader *r, int strict);
 /* The trace's format version (header version_no). */
 unsigned fs_trace_version(const fs_trace_reader *r);
 void fs_trace_close(fs_trace_reader *r);

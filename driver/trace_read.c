@@ -189,6 +189,9 @@ struct fs_trace_reader {
     uint64_t stream_base;    /* stream offset of buf[0] */
     int eof;                 /* no more events */
     int failed;
+    int cut_in_event;      /* the data ended cleanly at a chunk boundary inside an event */
+    int strict_end;        /* treat that as an error too (fs_trace_set_strict_end) */
+    char warning[400];     /* set when the trace ended inside an event */
     char err[512];
     unsigned version, semantic;
 
@@ -302,8 +305,10 @@ static int rd_byte(fs_trace_reader *r, unsigned *b)
         int rc = have_data(r);
         if (rc <= 0) {
             *b = 0;
-            if (rc == 0)
+            if (rc == 0) {
+                r->cut_in_event = 1;
                 rfail(r, "unexpected end of the trace inside an event (truncated file?)");
+            }
             return -1;
         }
     }
@@ -317,8 +322,10 @@ static int rd_bytes(fs_trace_reader *r, void *dst, size_t n)
     while (n) {
         if (r->pos >= r->len) {
             int rc = have_data(r);
-            if (rc <= 0)
+            if (rc <= 0) {
+                r->cut_in_event = rc == 0;
                 return rc < 0 ? -1 : rfail(r, "unexpected end of the trace inside an event (truncated file?)");
+            }
         }
         size_t k = r->len - r->pos < n ? r->len - r->pos : n;
         if (d) {
@@ -953,6 +960,10 @@ static int parse_leave(fs_trace_reader *r, uint64_t off)
     return 0;
 }
 
+void fs_trace_set_strict_end(fs_trace_reader *r, int strict) { r->strict_end = strict; }
+
+const char *fs_trace_warning(const fs_trace_reader *r) { return r->warning[0] ? r->warning : NULL; }
+
 int fs_trace_next(fs_trace_reader *r, fs_tcall *call)
 {
     if (r->returned) {
@@ -990,12 +1001,33 @@ int fs_trace_next(fs_trace_reader *r, fs_tcall *call)
         }
         uint64_t off = stream_off(r);
         unsigned ev = r->buf[r->pos++];
+        size_t queued = r->qcount;
         if (ev == EV_ENTER)
             rc = parse_enter(r, off);
         else if (ev == EV_LEAVE)
             rc = parse_leave(r, off);
         else
             rc = rfail_at(r, off, "unknown event 0x%02x", ev);
+        if (rc && r->cut_in_event && r->strict_end)
+            return -1;
+        if (rc && r->cut_in_event) {
+            /* Every chunk is whole but the stream stops inside this event:
+             * what apitrace leaves when the traced program is killed (it
+             * flushes whole chunks on SIGTERM).  The partial event is
+             * dropped; calls before it are returned as usual. */
+            if (ev == EV_ENTER && r->qcount > queued) {
+                pending *last = r->q[(r->qhead + r->qcount - 1) % r->qcap];
+                r->qcount--;
+                pending_free(r, last);
+            }
+            snprintf(r->warning, sizeof r->warning,
+                     "%s: the trace ends inside an event at stream offset %llu; that partial call was dropped",
+                     r->path, (unsigned long long)off);
+            r->failed = 0;
+            r->cut_in_event = 0;
+            r->eof = 1;
+            continue;
+        }
         if (rc)
             return -1;
     }
