@@ -627,6 +627,26 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
 /* Integer colour components map to [-1, 1] linearly (2.14.9 table 2.9). */
 static float int_to_float_color(GLint v) { return (float)((2.0 * v + 1.0) / 4294967295.0); }
 
+/* The vector forms of glTexParameter and glTexEnv carry four values for a
+ * colour parameter and one for any other. */
+static void vector_from_iv(float v[4], const GLint *params, bool colour)
+{
+    v[0] = v[1] = v[2] = v[3] = 0.0f;
+    if (colour)
+        for (int k = 0; k < 4; k++)
+            v[k] = int_to_float_color(params[k]);
+    else
+        v[0] = (float)params[0];
+}
+
+static void vector_from_fv(float v[4], const GLfloat *params, bool colour)
+{
+    v[0] = params[0];
+    v[1] = v[2] = v[3] = 0.0f;
+    if (colour)
+        memcpy(v, params, 4 * sizeof *v);
+}
+
 void fs_exec_TexParameteri(fs_context *c, GLenum target, GLenum pname, GLint param)
 {
     float v = (float)param;
@@ -640,20 +660,15 @@ void fs_exec_TexParameterf(fs_context *c, GLenum target, GLenum pname, GLfloat p
 
 void fs_exec_TexParameteriv(fs_context *c, GLenum target, GLenum pname, const GLint *params)
 {
-    float v[4] = {0, 0, 0, 0};
-    if (pname == GL_TEXTURE_BORDER_COLOR)
-        for (int k = 0; k < 4; k++)
-            v[k] = int_to_float_color(params[k]);
-    else
-        v[0] = (float)params[0];
+    float v[4];
+    vector_from_iv(v, params, pname == GL_TEXTURE_BORDER_COLOR);
     tex_parameter(c, target, pname, v, true);
 }
 
 void fs_exec_TexParameterfv(fs_context *c, GLenum target, GLenum pname, const GLfloat *params)
 {
-    float v[4] = {params[0], 0, 0, 0};
-    if (pname == GL_TEXTURE_BORDER_COLOR)
-        memcpy(v, params, sizeof v);
+    float v[4];
+    vector_from_fv(v, params, pname == GL_TEXTURE_BORDER_COLOR);
     tex_parameter(c, target, pname, v, true);
 }
 
@@ -728,19 +743,14 @@ void fs_exec_TexEnvf(fs_context *c, GLenum target, GLenum pname, GLfloat param)
 
 void fs_exec_TexEnviv(fs_context *c, GLenum target, GLenum pname, const GLint *params)
 {
-    float v[4] = {0, 0, 0, 0};
-    if (pname == GL_TEXTURE_ENV_COLOR)
-        for (int k = 0; k < 4; k++)
-            v[k] = int_to_float_color(params[k]);
-    else
-        v[0] = (float)params[0];
+    float v[4];
+    vector_from_iv(v, params, pname == GL_TEXTURE_ENV_COLOR);
     tex_env(c, target, pname, v, true);
 }
 
 void fs_exec_TexEnvfv(fs_context *c, GLenum target, GLenum pname, const GLfloat *params)
 {
-    float v[4] = {params[0], 0, 0, 0};
-    if (pname == GL_TEXTURE_ENV_COLOR)
-        memcpy(v, params, sizeof v);
+    float v[4];
+    vector_from_fv(v, params, pname == GL_TEXTURE_ENV_COLOR);
     tex_env(c, target, pname, v, true);
 }
