@@ -73,6 +73,11 @@ static bool *cap_flag(fs_context *c, GLenum cap)
 
 static void set_cap(fs_context *c, GLenum cap, bool on)
 {
+    if (cap == GL_OCCLUSION_TEST_HP) {
+        if (fs_occlusion_hp_enable(c, on) != 0)
+            fs_error(c, GL_OUT_OF_MEMORY);
+        return;
+    }
     bool *flag = cap_flag(c, cap);
     if (!flag) {
         fs_error(c, GL_INVALID_ENUM);
@@ -109,6 +114,8 @@ GLboolean fs_exec_IsEnabled(fs_context *c, GLenum cap)
     }
     if (arr)
         return arr->enabled ? GL_TRUE : GL_FALSE;
+    if (cap == GL_OCCLUSION_TEST_HP)
+        return fs_occlusion_hp_enabled(c) ? GL_TRUE : GL_FALSE;
     bool *flag = cap_flag(c, cap);
     if (!flag) {
         fs_error(c, GL_INVALID_ENUM);
@@ -131,7 +138,7 @@ const GLubyte *fs_exec_GetString(fs_context *c, GLenum name)
     case GL_RENDERER: return (const GLubyte *)"fragsim functional model";
     case GL_VERSION: return (const GLubyte *)FS_GL_VERSION;
     /* Only what is implemented: the Occlusion Unit (units/occlusion_gl.c). */
-    case GL_EXTENSIONS: return (const GLubyte *)"GL_FRAGSIM_occlusion_unit";
+    case GL_EXTENSIONS: return (const GLubyte *)"GL_FRAGSIM_occlusion_unit GL_HP_occlusion_test";
     default:
         fs_error(c, GL_INVALID_ENUM);
         return NULL;
@@ -281,6 +288,9 @@ static bool get_state(fs_context *c, GLenum pname, get_result *r)
         return true;
     /* GL 1.5 spec table 6.30 and GL_FRAGSIM_occlusion_unit's New State. */
     case GL_RENDER_MODE: put1(r, GET_ENUM, fs_occlusion_render_mode(c)); return true;
+    case GL_OCCLUSION_TEST_HP: put1(r, GET_BOOL, fs_occlusion_hp_enabled(c)); return true;
+    /* Reading the result clears it (GL_HP_occlusion_test). */
+    case GL_OCCLUSION_TEST_RESULT_HP: put1(r, GET_BOOL, fs_occlusion_hp_take_result(c)); return true;
     case GL_MAX_OCCLUSION_TILES: put1(r, GET_NUM, (double)c->cfg.occlusion_max_tiles); return true;
     case GL_OCCLUSION_TILE_COUNT: put1(r, GET_NUM, fs_occlusion_tiles_set(c)); return true;
     case GL_OCCLUSION_COUNTER_BITS: put1(r, GET_NUM, (double)c->cfg.occlusion_counter_bits); return true;

@@ -42,6 +42,9 @@ struct fs_occlusion {
     GLuint active_query;   /* 0 when none */
     uint32_t query_count;
     bool query_overflow;
+    /* GL_HP_occlusion_test: one flag, set when any fragment passes while
+     * the test is enabled, cleared when it is read. */
+    bool hp_enabled, hp_result;
 };
 
 /* Fixed layout of GL state tokens we rely on: GL/glext.h names them. */
@@ -113,6 +116,37 @@ static bool in_occlusion_mode(const struct fs_occlusion *o)
     return o && (o->render_mode == GL_BRIEF_OCCLUSION || o->render_mode == GL_VERBOSE_OCCLUSION);
 }
 
+/* ---- GL_HP_occlusion_test ---- */
+
+static void update_hook(fs_context *c);
+
+int fs_occlusion_hp_enable(fs_context *c, bool on)
+{
+    struct fs_occlusion *o = state(c);
+    if (!o)
+        return -1;
+    /* Enabling does not clear the result; only reading it does (as Mesa's
+     * implementation of the extension behaved). */
+    o->hp_enabled = on;
+    update_hook(c);
+    return 0;
+}
+
+bool fs_occlusion_hp_enabled(const fs_context *c)
+{
+    return c->occlusion && c->occlusion->hp_enabled;
+}
+
+bool fs_occlusion_hp_take_result(fs_context *c)
+{
+    struct fs_occlusion *o = c->occlusion;
+    if (!o)
+        return false;
+    bool r = o->hp_result;
+    o->hp_result = false;
+    return r;
+}
+
 int fs_occlusion_tiles_set(const fs_context *c)
 {
     return c->occlusion ? c->occlusion->ntiles_spec : 0;
@@ -129,6 +163,8 @@ int fs_occlusion_tile_count(fs_context *c)
 static void occlusion_hook(fs_context *c, void *user, const fs_quad *q, unsigned tested, unsigned passed)
 {
     struct fs_occlusion *o = user;
+    if (o->hp_enabled && passed)
+        o->hp_result = true;
     if (in_occlusion_mode(o))
         fs_occu_quad(o->unit, q, tested, passed, &c->stats);
     if (o->active_query) {
@@ -149,7 +185,7 @@ static void occlusion_hook(fs_context *c, void *user, const fs_quad *q, unsigned
 static void update_hook(fs_context *c)
 {
     struct fs_occlusion *o = c->occlusion;
-    bool on = in_occlusion_mode(o) || (o && o->active_query);
+    bool on = in_occlusion_mode(o) || (o && (o->active_query || o->hp_enabled));
     c->occlusion_hook = on ? occlusion_hook : NULL;
     c->occlusion_user = on ? o : NULL;
     c->frag.suppress_writes = in_occlusion_mode(o);

@@ -87,6 +87,12 @@ void fs_occlusion_free(fs_context *c);
 GLenum fs_occlusion_render_mode(const fs_context *c);
 /* Tiles set by glScissors (0: the scissor box is the one tile). */
 int fs_occlusion_tiles_set(const fs_context *c);
+/* GL_HP_occlusion_test: glEnable/glDisable(GL_OCCLUSION_TEST_HP), and
+ * GL_OCCLUSION_TEST_RESULT_HP, which reports whether any fragment passed the
+ * depth test while the test was enabled since the last read, then clears. */
+int fs_occlusion_hp_enable(fs_context *c, bool on);
+bool fs_occlusion_hp_enabled(const fs_context *c);
+bool fs_occlusion_hp_take_result(fs_context *c);
 /* The unit of a context, or NULL before any occlusion command.  Its tiles
  * keep the last pass's results until the next pass starts, also when no
  * client buffers were given (a replayed trace). */
