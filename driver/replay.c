@@ -473,7 +473,7 @@ static int next_call(fs_replayer *r, fs_call *call, bool pass1)
         }
         if (pass1 && cmd == FS_CMD_Finish)
             r->p1_finishes++;
-        if (pass1 && cmd == FS_CMD_BeginQuery)
+        if (pass1 && (cmd == FS_CMD_BeginQuery || cmd == FS_CMD_BeginQueryARB))
             r->info.uses_queries = true;
         if (convert(r, &tc, cmd, call) != 0)
             return -1;

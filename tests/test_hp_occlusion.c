@@ -108,7 +108,52 @@ TEST(hp_result_equals_osmesa_samples)
     fs_context_destroy(c);
 }
 
-TEST_LIST = {TEST_ENTRY(hp_result_equals_osmesa_samples), TEST_END};
+/* The GL_ARB_occlusion_query names run the same queries: counts equal
+ * OSMesa's through its ARB entry points. */
+TEST(arb_query_names_match_osmesa)
+{
+    fs_context *c = fs_context_create(NULL, W, H);
+    REQUIRE(c != NULL);
+    static uint8_t buf[W * H * 4];
+    OSMesaContext o = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+    REQUIRE(o && OSMesaMakeCurrent(o, buf, GL_UNSIGNED_BYTE, W, H));
+    CHECK(strstr((const char *)fsglGetString(c, GL_EXTENSIONS), "GL_ARB_occlusion_query") != NULL);
+    fsglEnable(c, GL_DEPTH_TEST);
+    glEnable(GL_DEPTH_TEST);
+    fsglClear(c, GL_DEPTH_BUFFER_BIT);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    fs_square(c, -0.5f, 0.0f, 0.5f, 0.0f);
+    gl_square(-0.5f, 0.0f, 0.5f, 0.0f);
+    GLuint fq = 0, oq = 0;
+    fsglGenQueriesARB(c, 1, &fq);
+    glGenQueriesARB(1, &oq);
+    CHECK(fq != 0);
+    for (int i = 0; i < NPROBES; i++) {
+        const probe *p = &probes[i];
+        fsglBeginQueryARB(c, GL_SAMPLES_PASSED, fq);
+        fs_square(c, p->x, p->y, p->h, p->z);
+        fsglEndQueryARB(c, GL_SAMPLES_PASSED);
+        glBeginQueryARB(GL_SAMPLES_PASSED, oq);
+        gl_square(p->x, p->y, p->h, p->z);
+        glEndQueryARB(GL_SAMPLES_PASSED);
+        GLuint a = 1234, b = 5678, avail = 0;
+        fsglGetQueryObjectuivARB(c, fq, GL_QUERY_RESULT_AVAILABLE, &avail);
+        fsglGetQueryObjectuivARB(c, fq, GL_QUERY_RESULT, &a);
+        glGetQueryObjectuivARB(oq, GL_QUERY_RESULT, &b);
+        CHECK_EQ_UINT(avail, GL_TRUE);
+        CHECK_EQ_UINT(a, b);
+    }
+    CHECK_EQ_INT(fsglIsQueryARB(c, fq), GL_TRUE);
+    fsglDeleteQueriesARB(c, 1, &fq);
+    CHECK_EQ_INT(fsglIsQueryARB(c, fq), GL_FALSE);
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    glDeleteQueriesARB(1, &oq);
+    glFinish();
+    OSMesaDestroyContext(o);
+    fs_context_destroy(c);
+}
+
+TEST_LIST = {TEST_ENTRY(hp_result_equals_osmesa_samples), TEST_ENTRY(arb_query_names_match_osmesa), TEST_END};
 
 int main(int argc, char **argv)
 {

@@ -518,3 +518,22 @@ void fs_exec_GetQueryObjectuiv(fs_context *c, GLuint id, GLenum pname, GLuint *p
     if (query_value(c, id, pname, &v))
         *params = v;
 }
+
+/* ---- GL_ARB_occlusion_query entry points: the same commands ---- */
+void fs_exec_GenQueriesARB(fs_context *c, GLsizei n, GLuint *ids) { fs_exec_GenQueries(c, n, ids); }
+void fs_exec_DeleteQueriesARB(fs_context *c, GLsizei n, const GLuint *ids) { fs_exec_DeleteQueries(c, n, ids); }
+GLboolean fs_exec_IsQueryARB(fs_context *c, GLuint id) { return fs_exec_IsQuery(c, id); }
+void fs_exec_BeginQueryARB(fs_context *c, GLenum target, GLuint id) { fs_exec_BeginQuery(c, target, id); }
+void fs_exec_EndQueryARB(fs_context *c, GLenum target) { fs_exec_EndQuery(c, target); }
+void fs_exec_GetQueryivARB(fs_context *c, GLenum target, GLenum pname, GLint *params)
+{
+    fs_exec_GetQueryiv(c, target, pname, params);
+}
+void fs_exec_GetQueryObjectivARB(fs_context *c, GLuint id, GLenum pname, GLint *params)
+{
+    fs_exec_GetQueryObjectiv(c, id, pname, params);
+}
+void fs_exec_GetQueryObjectuivARB(fs_context *c, GLuint id, GLenum pname, GLuint *params)
+{
+    fs_exec_GetQueryObjectuiv(c, id, pname, params);
+}
