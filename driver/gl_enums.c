@@ -433,6 +433,12 @@ static const fs_gl_enum fs_gl_enum_table[] = {
     {0x4005, "GL_LIGHT5"},
     {0x4006, "GL_LIGHT6"},
     {0x4007, "GL_LIGHT7"},
+    /* GL_FRAGSIM_occlusion_unit (glext/GL_FRAGSIM_occlusion_unit.h) */
+    {0x6F00, "GL_BRIEF_OCCLUSION"},
+    {0x6F01, "GL_VERBOSE_OCCLUSION"},
+    {0x6F02, "GL_MAX_OCCLUSION_TILES"},
+    {0x6F03, "GL_OCCLUSION_TILE_COUNT"},
+    {0x6F04, "GL_OCCLUSION_COUNTER_BITS"},
     {0x8001, "GL_CONSTANT_COLOR"},
     {0x8002, "GL_ONE_MINUS_CONSTANT_COLOR"},
     {0x8003, "GL_CONSTANT_ALPHA"},
@@ -622,6 +628,9 @@ static const fs_gl_enum fs_gl_enum_table[] = {
     {0x8151, "GL_CONSTANT_BORDER"},
     {0x8153, "GL_REPLICATE_BORDER"},
     {0x8154, "GL_CONVOLUTION_BORDER_COLOR"},
+    /* GL_HP_occlusion_test */
+    {0x8165, "GL_OCCLUSION_TEST_HP"},
+    {0x8166, "GL_OCCLUSION_TEST_RESULT_HP"},
     {0x8191, "GL_GENERATE_MIPMAP"},
     {0x8192, "GL_GENERATE_MIPMAP_HINT"},
     {0x81A5, "GL_DEPTH_COMPONENT16"},

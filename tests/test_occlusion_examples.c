@@ -13,6 +13,9 @@
 #include "check.h"
 #include "../pipeline/context.h"
 #include "../glext/GL_FRAGSIM_occlusion_unit.h"
+#include "../driver/capture.h"
+#include "../driver/replay.h"
+#include <unistd.h>
 
 #define W 128
 #define H 128
@@ -206,7 +209,74 @@ TEST(ray_casting_through_the_listed_pixels)
     fs_context_destroy(c);
 }
 
+/* Capture of the occlusion-driven run: apitrace dump names the extension's
+ * calls and enums, and replaying the trace gives the same framebuffer. */
+TEST(capture_of_occlusion_calls_replays)
+{
+    static scene s;
+    make_scene(&s);
+    char path[128], err[256];
+    snprintf(path, sizeof path, "/tmp/fragsim_occ_capture_%d.trace", (int)getpid());
+    fs_context *c = fs_context_create(NULL, W, H);
+    REQUIRE(c != NULL);
+    REQUIRE(fs_capture_open(c, path, err, sizeof err) == 0);
+    fsglViewport(c, 0, 0, W, H);
+    setup(c);
+    draw_wall(c);
+    fsglEnable(c, GL_OCCLUSION_TEST_HP);
+    for (int g = 0; g < GROUPS; g++)
+        if (box_nohc(c, s.glo[g], s.ghi[g]) > 0)
+            for (int b = 0; b < PER; b++)
+                box(c, s.lo[g][b], s.hi[g][b]);
+    fs_capture_frame_end(c);
+    REQUIRE(fs_capture_close(c) == 0);
+
+    FILE *p = popen("command -v apitrace >/dev/null 2>&1 && echo yes", "r");
+    char yes[8] = "";
+    if (p) {
+        if (!fgets(yes, sizeof yes, p))
+            yes[0] = '\0';
+        pclose(p);
+    }
+    if (yes[0] == 'y') {
+        char cmd[256], line[4096];
+        snprintf(cmd, sizeof cmd, "apitrace dump --color=never '%s'", path);
+        p = popen(cmd, "r");
+        REQUIRE(p != NULL);
+        int brief = 0, buffers = 0, hp = 0;
+        while (fgets(line, sizeof line, p)) {
+            brief |= strstr(line, "glRenderMode(mode = GL_BRIEF_OCCLUSION)") != NULL;
+            buffers |= strstr(line, "glOcclusionBuffers(") != NULL;
+            hp |= strstr(line, "glEnable(cap = GL_OCCLUSION_TEST_HP)") != NULL;
+        }
+        pclose(p);
+        CHECK(brief);
+        CHECK(buffers);
+        CHECK(hp);
+    }
+
+    fs_replayer *r = fs_replay_open(path, NULL, err, sizeof err);
+    if (!r)
+        fprintf(stderr, "  %s\n", err);
+    REQUIRE(r != NULL);
+    fs_context *d = fs_context_create(NULL, W, H);
+    REQUIRE(d != NULL);
+    fs_call call;
+    fs_replay_event ev;
+    while ((ev = fs_replay_next(r, &call)) != FS_REPLAY_EOF && ev != FS_REPLAY_ERROR)
+        if (ev == FS_REPLAY_CALL)
+            CHECK_EQ_INT(fs_submit(d, &call), 0);
+    CHECK(ev == FS_REPLAY_EOF);
+    CHECK(memcmp(c->fb.color, d->fb.color, (size_t)W * H * 4) == 0);
+    CHECK(memcmp(c->fb.depth, d->fb.depth, (size_t)W * H * sizeof *c->fb.depth) == 0);
+    fs_replay_close(r);
+    fs_context_destroy(d);
+    fs_context_destroy(c);
+    unlink(path);
+}
+
 TEST_LIST = {
+    TEST_ENTRY(capture_of_occlusion_calls_replays),
     TEST_ENTRY(bvh_occlusion_culling_draws_the_same_image),
     TEST_ENTRY(ray_casting_through_the_listed_pixels),
     TEST_END,
