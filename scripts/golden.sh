@@ -5,7 +5,7 @@
 set -euo pipefail
 BUILD=${1:-build}
 DIR=tests/golden
-SCENES=${SCENES:-"city norwich cathedrals forest garbage terrain demo"}
+SCENES=${SCENES:-"city norwich cathedrals forest garbage terrain demo textured"}
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
 mkdir -p "$DIR"

@@ -4,7 +4,7 @@
 # bad input at the CLI level (clear error, non-zero exit, no image written).
 . "$(dirname "$0")/lib_cli.sh"
 : "${FRAGSIM:?}" "${SCENEGEN:?}"
-SCENES="city norwich cathedrals forest garbage terrain demo"
+SCENES="city norwich cathedrals forest garbage terrain demo textured"
 
 scene_trace() { # NAME -> path of a small trace of that scene
     local t="$WORK/$1.trace"

@@ -27,6 +27,7 @@
 #include "../traces/scene_garbage.c"
 #include "../traces/scene_terrain.c"
 #include "../traces/scene_demo.c"
+#include "../traces/scene_textured.c"
 #include "../traces/scene_bench.c"
 #include "../driver/trace.h"
 
@@ -200,6 +201,7 @@ TEST(forest) { check_scene(check_st_, "forest"); }
 TEST(garbage) { check_scene(check_st_, "garbage"); }
 TEST(terrain) { check_scene(check_st_, "terrain"); }
 TEST(demo) { check_scene(check_st_, "demo"); }
+TEST(textured) { check_scene(check_st_, "textured"); }
 TEST(bench8) { check_scene(check_st_, "bench8"); }
 TEST(bench32) { check_scene(check_st_, "bench32"); }
 
@@ -258,7 +260,7 @@ TEST(seed_changes_scene)
 
 TEST_LIST = {
     TEST_ENTRY(prim_tris), TEST_ENTRY(city), TEST_ENTRY(norwich), TEST_ENTRY(cathedrals),
-    TEST_ENTRY(forest), TEST_ENTRY(garbage), TEST_ENTRY(terrain), TEST_ENTRY(demo),
+    TEST_ENTRY(forest), TEST_ENTRY(garbage), TEST_ENTRY(terrain), TEST_ENTRY(demo), TEST_ENTRY(textured),
     TEST_ENTRY(bench8), TEST_ENTRY(bench32), TEST_ENTRY(paper_counts), TEST_ENTRY(seed_changes_scene),
     TEST_END,
 };

@@ -174,6 +174,7 @@ int sg_scene_forest(sg *s, const sg_params *p, char *err, size_t errlen);
 int sg_scene_garbage(sg *s, const sg_params *p, char *err, size_t errlen);
 int sg_scene_terrain(sg *s, const sg_params *p, char *err, size_t errlen);
 int sg_scene_demo(sg *s, const sg_params *p, char *err, size_t errlen);
+int sg_scene_textured(sg *s, const sg_params *p, char *err, size_t errlen);
 int sg_scene_bench8(sg *s, const sg_params *p, char *err, size_t errlen);
 int sg_scene_bench32(sg *s, const sg_params *p, char *err, size_t errlen);
 #endif
