@@ -73,26 +73,6 @@ int fs_capture_open(fs_context *c, const char *path, char *err, size_t errlen)
     return 0;
 }
 
-static int type_size(GLenum type)
-{
-    switch (type) {
-    case GL_BYTE:
-    case GL_UNSIGNED_BYTE:
-        return 1;
-    case GL_SHORT:
-    case GL_UNSIGNED_SHORT:
-        return 2;
-    case GL_INT:
-    case GL_UNSIGNED_INT:
-    case GL_FLOAT:
-        return 4;
-    case GL_DOUBLE:
-        return 8;
-    default:
-        return 0;
-    }
-}
-
 static fs_tval enum_val(const char *cmd, const char *arg, int64_t v)
 {
     fs_tval t;
@@ -128,30 +108,8 @@ static uint64_t draw_vertex_count(const fs_call *call)
         return (uint64_t)end + 1;
     }
     case FS_CMD_DrawElements: {
-        int64_t count = call->a[1].i;
-        int size = type_size((GLenum)call->a[2].i);
-        const unsigned char *p = call->a[3].p;
-        if (count <= 0 || size == 0 || !p)
-            return 0;
-        /* Only the indices the blob really holds. */
-        if ((uint64_t)count > call->a[3].count / (unsigned)size)
-            count = call->a[3].count / (unsigned)size;
-        uint32_t max = 0;
-        for (int64_t i = 0; i < count; i++) {
-            uint32_t v;
-            if (size == 1) {
-                v = p[i];
-            } else if (size == 2) {
-                GLushort s;
-                memcpy(&s, p + 2 * i, 2);
-                v = s;
-            } else {
-                memcpy(&v, p + 4 * i, 4);
-            }
-            if (v > max)
-                max = v;
-        }
-        return count > 0 ? (uint64_t)max + 1 : 0;
+        int64_t lo, hi; /* apitrace: the highest index + 1 */
+        return fs_draw_vertex_range(call, &lo, &hi) ? (uint64_t)hi + 1 : 0;
     }
     default:
         return 0;
@@ -164,7 +122,7 @@ static void write_fake_pointer(fs_context *c, int cmd, const fs_client_array *a,
     fs_tval args[4];
     unsigned n = 0;
     memset(args, 0, sizeof args);
-    int esize = type_size(a->type) * (cmd == FS_CMD_NormalPointer ? 3 : a->size);
+    int esize = fs_type_size(a->type) * (cmd == FS_CMD_NormalPointer ? 3 : a->size);
     uint64_t stride = a->stride ? (uint64_t)(uint32_t)a->stride : (uint64_t)esize;
     if (cmd != FS_CMD_NormalPointer) {
         args[n].type = FS_TV_SINT;

@@ -35,6 +35,64 @@ int fs_cmd_lookup(const char *name)
     return -1;
 }
 
+size_t fs_kind_elem_size(int kind)
+{
+    switch (kind) {
+    case FS_K_AF: case FS_K_AI: case FS_K_AU: return 4;
+    case FS_K_AD: return 8;
+    case FS_K_AS: case FS_K_AUS: return 2;
+    case FS_K_AUB: case FS_K_ABY: case FS_K_BLOB: return 1;
+    default: return 0;
+    }
+}
+
+static int64_t index_at(const unsigned char *idx, int es, int64_t i)
+{
+    if (es == 1)
+        return idx[i];
+    if (es == 2) {
+        uint16_t v;
+        memcpy(&v, idx + 2 * i, 2);
+        return v;
+    }
+    uint32_t v;
+    memcpy(&v, idx + 4 * i, 4);
+    return v;
+}
+
+bool fs_draw_vertex_range(const fs_call *call, int64_t *lo, int64_t *hi)
+{
+    switch (call->cmd) {
+    case FS_CMD_ArrayElement:
+        *lo = *hi = call->a[0].i;
+        return *lo >= 0;
+    case FS_CMD_DrawArrays:
+        *lo = call->a[1].i;
+        *hi = call->a[1].i + call->a[2].i - 1;
+        return *lo >= 0 && *hi >= *lo;
+    case FS_CMD_DrawElements:
+    case FS_CMD_DrawRangeElements: {
+        int ci = call->cmd == FS_CMD_DrawElements ? 1 : 3;
+        int64_t count = call->a[ci].i;
+        GLenum type = (GLenum)call->a[ci + 1].i;
+        const unsigned char *idx = call->a[ci + 2].p;
+        int es = type == GL_UNSIGNED_BYTE ? 1 : type == GL_UNSIGNED_SHORT ? 2 : type == GL_UNSIGNED_INT ? 4 : 0;
+        if (!idx || es == 0 || count <= 0 || (int64_t)call->a[ci + 2].count < count * es)
+            return false;
+        *lo = INT64_MAX;
+        *hi = -1;
+        for (int64_t i = 0; i < count; i++) {
+            int64_t v = index_at(idx, es, i);
+            if (v < *lo) *lo = v;
+            if (v > *hi) *hi = v;
+        }
+        return true;
+    }
+    default:
+        return false;
+    }
+}
+
 static uint32_t count_u32(int64_t n)
 {
     return n < 0 ? 0 : n > (int64_t)UINT32_MAX ? UINT32_MAX : (uint32_t)n;

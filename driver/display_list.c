@@ -172,67 +172,11 @@ static void *keep(fs_dlist_state *s, dl_list *l, const void *src, size_t bytes)
     return p;
 }
 
-static size_t kind_elem_size(int kind)
-{
-    switch (kind) {
-    case FS_K_AF: case FS_K_AI: case FS_K_AU: return 4;
-    case FS_K_AD: return 8;
-    case FS_K_AS: case FS_K_AUS: return 2;
-    case FS_K_AUB: case FS_K_ABY: case FS_K_BLOB: return 1;
-    default: return 0;
-    }
-}
-
 /* Bytes between consecutive elements of a client array (GL 1.5 spec 2.8:
  * stride 0 means tightly packed). */
 static size_t array_stride(const fs_client_array *a, int ncomp)
 {
     return a->stride ? (size_t)a->stride : (size_t)fs_type_size(a->type) * (size_t)ncomp;
-}
-
-static int64_t index_at(const void *indices, GLenum type, int64_t i)
-{
-    switch (type) {
-    case GL_UNSIGNED_BYTE: return ((const GLubyte *)indices)[i];
-    case GL_UNSIGNED_SHORT: return ((const GLushort *)indices)[i];
-    case GL_UNSIGNED_INT: return ((const GLuint *)indices)[i];
-    default: return -1;
-    }
-}
-
-/* The range of vertices a draw call reads, or false when it reads none. */
-static bool draw_range(const fs_call *call, int64_t *lo, int64_t *hi)
-{
-    switch (call->cmd) {
-    case FS_CMD_ArrayElement:
-        *lo = *hi = call->a[0].i;
-        return *lo >= 0;
-    case FS_CMD_DrawArrays:
-        *lo = call->a[1].i;
-        *hi = call->a[1].i + call->a[2].i - 1;
-        return *lo >= 0 && *hi >= *lo;
-    case FS_CMD_DrawElements:
-    case FS_CMD_DrawRangeElements: {
-        int ci = call->cmd == FS_CMD_DrawElements ? 1 : 3;
-        int64_t count = call->a[ci].i;
-        GLenum type = (GLenum)call->a[ci + 1].i;
-        const void *idx = call->a[ci + 2].p;
-        if (count <= 0 || !idx || fs_type_size(type) == 0)
-            return false;
-        *lo = INT64_MAX;
-        *hi = -1;
-        for (int64_t i = 0; i < count; i++) {
-            int64_t v = index_at(idx, type, i);
-            if (v < 0)
-                return false;
-            if (v < *lo) *lo = v;
-            if (v > *hi) *hi = v;
-        }
-        return true;
-    }
-    default:
-        return false;
-    }
 }
 
 static void snapshot_array(fs_dlist_state *s, dl_list *l, fs_client_array *dst,
@@ -276,7 +220,7 @@ void fs_dlist_compile(fs_context *c, const fs_call *call)
     e->arrays = NULL;
     const fs_cmd_info *info = &fs_cmd_table[call->cmd];
     for (int i = 0; i < info->nargs; i++) {
-        size_t es = kind_elem_size(info->kinds[i]);
+        size_t es = fs_kind_elem_size(info->kinds[i]);
         if (es && call->a[i].p) {
             e->call.a[i].p = keep(s, l, call->a[i].p, es * call->a[i].count);
             if (!e->call.a[i].p)
@@ -288,7 +232,7 @@ void fs_dlist_compile(fs_context *c, const fs_call *call)
         fs_array_state *snap = keep(s, l, &c->arrays, sizeof c->arrays);
         if (!snap)
             return;
-        if (draw_range(&e->call, &lo, &hi)) {
+        if (fs_draw_vertex_range(&e->call, &lo, &hi)) {
             snapshot_array(s, l, &snap->vertex, &c->arrays.vertex, c->arrays.vertex.size, lo, hi);
             snapshot_array(s, l, &snap->normal, &c->arrays.normal, 3, lo, hi);
             snapshot_array(s, l, &snap->color, &c->arrays.color, c->arrays.color.size, lo, hi);

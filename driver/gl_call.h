@@ -8,6 +8,7 @@
 #ifndef FS_GL_CALL_H
 #define FS_GL_CALL_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <GL/gl.h>
@@ -183,6 +184,12 @@ int fs_material_param_count(GLenum pname);
 int fs_get_count(GLenum pname);
 int64_t fs_readpixels_bytes(fs_context *c, GLsizei w, GLsizei h, GLenum format, GLenum type);
 int fs_type_size(GLenum type); /* bytes of GL_FLOAT, GL_UNSIGNED_BYTE, ...; 0 if unknown */
+/* Bytes per element of an array kind (BLOB: 1); 0 for kinds that are not arrays. */
+size_t fs_kind_elem_size(int kind);
+/* The vertices a draw call (FS_F_DRAW) reads from client arrays: indices
+ * *lo..*hi.  False when it reads none: no vertex, a negative first index, an
+ * unknown index type, or an index blob shorter than the count. */
+bool fs_draw_vertex_range(const fs_call *call, int64_t *lo, int64_t *hi);
 /* Occlusion tiles glOcclusionBuffers expects a size for (units/occlusion_gl.c). */
 int fs_occlusion_tile_count(fs_context *c);
 /* Texture unit (units/texture_object.c): bytes a glTexImage2D image reads

@@ -214,20 +214,10 @@ static bool tv_double(const fs_tval *v, double *out)
     }
 }
 
-static size_t elem_size(int kind)
-{
-    switch (kind) {
-    case FS_K_AF: case FS_K_AI: case FS_K_AU: return 4;
-    case FS_K_AD: return 8;
-    case FS_K_AS: case FS_K_AUS: return 2;
-    default: return 1;
-    }
-}
-
 /* Converts an array value into a typed C array in the arena. */
 static int to_array(fs_replayer *r, const fs_tcall *tc, int kind, const fs_tval *v, fs_arg *a)
 {
-    size_t es = elem_size(kind);
+    size_t es = fs_kind_elem_size(kind); /* only array kinds come here */
     if (v->type == FS_TV_NULL) {
         a->p = NULL;
         a->count = 0;
@@ -385,44 +375,11 @@ static int track_pointer(fs_replayer *r, const fs_tcall *tc, fs_call *call, int 
     return 0;
 }
 
-static int64_t max_index(const fs_call *call, int64_t *lo)
-{
-    int64_t hi = -1;
-    *lo = 0;
-    switch (call->cmd) {
-    case FS_CMD_ArrayElement:
-        *lo = hi = call->a[0].i;
-        break;
-    case FS_CMD_DrawArrays:
-        *lo = call->a[1].i;
-        hi = call->a[2].i > 0 ? call->a[1].i + call->a[2].i - 1 : -1;
-        break;
-    default: {
-        int ci = call->cmd == FS_CMD_DrawElements ? 1 : 3;
-        int64_t count = call->a[ci].i;
-        GLenum type = (GLenum)call->a[ci + 1].i;
-        const unsigned char *idx = call->a[ci + 2].p;
-        int es = type == GL_UNSIGNED_BYTE ? 1 : type == GL_UNSIGNED_SHORT ? 2 : type == GL_UNSIGNED_INT ? 4 : 0;
-        if (!idx || es == 0 || count <= 0 || (int64_t)call->a[ci + 2].count < count * es)
-            return -1;
-        for (int64_t i = 0; i < count; i++) {
-            uint32_t v = 0;
-            if (es == 1) v = idx[i];
-            else if (es == 2) { uint16_t s; memcpy(&s, idx + 2 * i, 2); v = s; }
-            else memcpy(&v, idx + 4 * i, 4);
-            if ((int64_t)v > hi) hi = v;
-        }
-    }
-    }
-    return hi;
-}
-
 /* True when every enabled array holds recorded data for the draw's vertices. */
 static bool draw_is_safe(fs_replayer *r, const fs_call *call)
 {
-    int64_t lo;
-    int64_t hi = max_index(call, &lo);
-    if (hi < 0 || lo < 0)
+    int64_t lo, hi;
+    if (!fs_draw_vertex_range(call, &lo, &hi))
         return true; /* reads no vertex (or the GL call itself is an error) */
     for (int s = 0; s < ARR_COUNT; s++) {
         const array_track *t = &r->arr[s];

@@ -505,31 +505,19 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
  * y, so GL row gy is raster row H-1-gy. */
 static void raster_tri_reference(fs_context *c, const fs_prim_setup *s, const tri_edges *e)
 {
-    const int H = s->height;
-    int gy0 = fs_raster_row_to_gl(H, e->y1), gy1 = fs_raster_row_to_gl(H, e->y0);
-    for (int qy = gy0 & ~1; qy <= gy1; qy += 2) {
-        for (int qx = e->x0 & ~1; qx <= e->x1; qx += 2) {
-            unsigned mask = 0;
-            for (int i = 0; i < 4; i++) {
-                int px = qx + (i & 1), gy = qy + (i >> 1);
-                int ry = fs_raster_row_to_gl(H, gy);
-                if (px < e->x0 || px > e->x1 || ry < e->y0 || ry > e->y1)
-                    continue;
-                bool in = true;
-                for (int k = 0; k < 3; k++)
-                    in = in && e->c[k] - e->dcdx[k] * px + e->dcdy[k] * ry > 0;
-                if (in)
-                    mask |= 1u << i;
-            }
-            if (mask) {
-                fs_quad q;
-                q.x = qx;
-                q.y = qy;
-                q.mask = mask;
-                fs_raster_emit_quad(c, s, &q);
-            }
-        }
+    /* The plain per-pixel evaluation lines and points use, on three edges. */
+    fs_edge_planes p;
+    p.n = 3;
+    for (int k = 0; k < 3; k++) {
+        p.c[k] = e->c[k];
+        p.dcdx[k] = e->dcdx[k];
+        p.dcdy[k] = e->dcdy[k];
     }
+    p.x0 = e->x0;
+    p.x1 = e->x1;
+    p.y0 = e->y0;
+    p.y1 = e->y1;
+    fs_raster_planes(c, s, &p);
 }
 
 /* The same coverage with the edge functions stepped incrementally: per quad
