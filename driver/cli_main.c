@@ -301,29 +301,10 @@ static int write_stats(const char *path, const cli_opts *o, const fs_replay_info
     write_unsupported_json(f, c);
     fprintf(f, ",\n  \"skipped_trace_calls\": ");
     fs_replay_write_skipped_json(r, f, "  ");
-    fprintf(f, ",\n  \"config\": {");
     /* The effective configuration, so any run can be reproduced. */
-    char *buf = NULL;
-    size_t len = 0;
-    FILE *m = open_memstream(&buf, &len);
-    if (m) {
-        fs_config_write_ini(m, &c->cfg);
-        fclose(m);
-        int first = 1;
-        char *save = NULL, section[64] = "";
-        for (char *line = strtok_r(buf, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
-            char key[64];
-            long val;
-            if (sscanf(line, "[%63[^]]]", section) == 1)
-                continue;
-            if (sscanf(line, "%63s = %ld", key, &val) == 2) {
-                fprintf(f, "%s\n    \"%s.%s\": %ld", first ? "" : ",", section, key, val);
-                first = 0;
-            }
-        }
-        free(buf);
-    }
-    fprintf(f, "\n  }\n}\n");
+    fprintf(f, ",\n  \"config\": {\n");
+    fs_config_write_json(f, &c->cfg, "    ");
+    fprintf(f, "  }\n}\n");
     if (fclose(f) != 0) {
         fprintf(stderr, "%s: error writing %s\n", prog, path);
         return -1;

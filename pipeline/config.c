@@ -157,14 +157,9 @@ void fs_config_list(FILE *f)
     }
 }
 
-void fs_config_write_ini(FILE *f, const fs_config *cfg)
+void fs_config_write_json(FILE *f, const fs_config *cfg, const char *indent)
 {
-    const char *section = "";
-    for (size_t i = 0; i < NKEYS; i++) {
-        if (strcmp(section, keys[i].section) != 0) {
-            section = keys[i].section;
-            fprintf(f, "%s[%s]\n", i ? "\n" : "", section);
-        }
-        fprintf(f, "%s = %ld\n", keys[i].key, *(const long *)((const char *)cfg + keys[i].offset));
-    }
+    for (size_t i = 0; i < NKEYS; i++)
+        fprintf(f, "%s\"%s.%s\": %ld%s\n", indent, keys[i].section, keys[i].key,
+                *(const long *)((const char *)cfg + keys[i].offset), i + 1 < NKEYS ? "," : "");
 }
