@@ -584,7 +584,6 @@ void fs_replay_write_skipped_json(const fs_replayer *r, FILE *f, const char *ind
         fprintf(f, "%s\n%s  \"%s\": {\"count\": %llu, \"reason\": \"%s\"}", i ? "," : "", indent,
                 r->skips[i].name, (unsigned long long)r->skips[i].count, kind_name(r->skips[i].kind));
     fprintf(f, "%s}", r->nskips ? "\n" : "");
-    (void)indent;
 }
 
 uint64_t fs_replay_skipped_total(const fs_replayer *r)
