@@ -108,8 +108,20 @@ test_capture_dump_replay_check() {
     cat "$WORK/c.log"
 }
 
+# A capture path that cannot be written: one clear message, and the program
+# runs on and prints what it prints without capture.
+test_capture_to_unwritable_path() {
+    build osmesa_boxes
+    "$WORK/osmesa_boxes_shim" >"$WORK/plain.txt" 2>/dev/null || fail "plain run failed"
+    FRAGSIM_TRACE="$WORK/no/such/dir/x.trace" "$WORK/osmesa_boxes_shim" >"$WORK/bad.txt" 2>"$WORK/e" \
+        || fail "the program failed: $(cat "$WORK/e")"
+    grep -q "FRAGSIM_TRACE: not capturing" "$WORK/e" || fail "no message: $(cat "$WORK/e")"
+    grep -q "no/such/dir/x.trace" "$WORK/e" || fail "message does not name the path: $(cat "$WORK/e")"
+    diff "$WORK/plain.txt" "$WORK/bad.txt" || fail "output changed"
+}
+
 for t in test_shim_exports_table_and_osmesa_api test_boxes_same_numbers_as_osmesa test_api_same_as_osmesa \
-         test_capture_dump_replay_check; do
+         test_capture_dump_replay_check test_capture_to_unwritable_path; do
     run_test "$t"
 done
 finish
