@@ -14,6 +14,7 @@
 #include "../pipeline/context.h"
 #include "image.h"
 #include "osmesa_ref.h"
+#include "cli.h"
 #include "replay.h"
 
 #define DEFAULT_TOLERANCE 1
@@ -33,22 +34,6 @@ typedef struct cli_opts {
 } cli_opts;
 
 static const char *prog = "fragsim";
-
-static void usage_main(FILE *f)
-{
-    fprintf(f,
-            "usage: fragsim COMMAND [options]\n"
-            "\n"
-            "commands:\n"
-            "  replay TRACE    render an apitrace trace on the model; write PNGs and statistics\n"
-            "  check TRACE     render on the model and on OSMesa (llvmpipe) and compare per frame\n"
-            "  diff A B        compare two images (OpenImageIO)\n"
-            "  bench TRACE     time a replay on the model or on OSMesa (used by `make bench`)\n"
-            "  config --list   list every configuration key with its default and meaning\n"
-            "  stats --list    list every statistic with its unit and meaning\n"
-            "\n"
-            "`fragsim COMMAND --help` describes each command.\n");
-}
 
 static void usage_replay(FILE *f, bool check)
 {
@@ -689,33 +674,64 @@ static int run_bench(int argc, char **argv)
     return 0;
 }
 
+static int run_config(int argc, char **argv)
+{
+    if (argc == 1 && !strcmp(argv[0], "--list")) {
+        fs_config_list(stdout);
+        return 0;
+    }
+    printf("usage: fragsim config --list\n");
+    return argc == 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h")) ? 0 : 2;
+}
+
+static int run_stats(int argc, char **argv)
+{
+    if (argc == 1 && !strcmp(argv[0], "--list")) {
+        fs_stats_list(stdout);
+        return 0;
+    }
+    printf("usage: fragsim stats --list\n");
+    return argc == 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h")) ? 0 : 2;
+}
+
+static int run_replay_only(int argc, char **argv) { return run_replay(argc, argv, false); }
+static int run_check(int argc, char **argv) { return run_replay(argc, argv, true); }
+
+/* Every subcommand, one row each: a new command is a new row (and usually a
+ * new driver/cli_NAME.c declaring its entry point in cli.h).  argv[0] of
+ * the entry point is the first argument after the command name. */
+static const struct cli_command {
+    const char *name, *synopsis, *summary;
+    int (*run)(int argc, char **argv);
+} commands[] = {
+    {"replay", "TRACE", "render an apitrace trace on the model; write PNGs and statistics", run_replay_only},
+    {"check", "TRACE", "render on the model and on OSMesa (llvmpipe) and compare per frame", run_check},
+    {"diff", "A B", "compare two images (OpenImageIO)", run_diff},
+    {"bench", "TRACE", "time a replay on the model or on OSMesa (used by `make bench`)", run_bench},
+    {"config", "--list", "list every configuration key with its default and meaning", run_config},
+    {"stats", "--list", "list every statistic with its unit and meaning", run_stats},
+};
+
+static void usage_main(FILE *f)
+{
+    fprintf(f, "usage: fragsim COMMAND [options]\n\ncommands:\n");
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++) {
+        char head[64];
+        snprintf(head, sizeof head, "%s %s", commands[i].name, commands[i].synopsis);
+        fprintf(f, "  %-20s %s\n", head, commands[i].summary);
+    }
+    fprintf(f, "\n`fragsim COMMAND --help` describes each command.\n");
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
         usage_main(argc < 2 ? stderr : stdout);
         return argc < 2 ? 2 : 0;
     }
-    const char *cmd = argv[1];
-    if (!strcmp(cmd, "replay"))
-        return run_replay(argc - 2, argv + 2, false);
-    if (!strcmp(cmd, "check"))
-        return run_replay(argc - 2, argv + 2, true);
-    if (!strcmp(cmd, "bench"))
-        return run_bench(argc - 2, argv + 2);
-    if (!strcmp(cmd, "diff"))
-        return run_diff(argc - 2, argv + 2);
-    if (!strcmp(cmd, "config") && argc == 3 && !strcmp(argv[2], "--list")) {
-        fs_config_list(stdout);
-        return 0;
-    }
-    if (!strcmp(cmd, "stats") && argc == 3 && !strcmp(argv[2], "--list")) {
-        fs_stats_list(stdout);
-        return 0;
-    }
-    if (!strcmp(cmd, "config") || !strcmp(cmd, "stats")) {
-        printf("usage: fragsim %s --list\n", cmd);
-        return argc == 3 && (!strcmp(argv[2], "--help") || !strcmp(argv[2], "-h")) ? 0 : 2;
-    }
-    fprintf(stderr, "%s: unknown command '%s' (see fragsim --help)\n", prog, cmd);
+    for (size_t i = 0; i < sizeof commands / sizeof commands[0]; i++)
+        if (!strcmp(argv[1], commands[i].name))
+            return commands[i].run(argc - 2, argv + 2);
+    fprintf(stderr, "%s: unknown command '%s' (see fragsim --help)\n", prog, argv[1]);
     return 2;
 }

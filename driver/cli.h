@@ -1,0 +1,10 @@
+/*
+ * Entry points of the fragsim subcommands that live outside cli_main.c
+ * (one file each: driver/cli_NAME.c).  Each takes the arguments after the
+ * command name (argv[0] is the first of them) and returns the exit status:
+ * 0 success, 1 bad input or failure, 2 usage error.  cli_main.c lists them
+ * in its command table.
+ */
+#ifndef FS_CLI_H
+#define FS_CLI_H
+#endif
