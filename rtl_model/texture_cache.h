@@ -33,7 +33,10 @@ typedef struct fs_tex_cache fs_tex_cache;
 #define FS_TEX_CACHE_MAX_BANKS 64u
 /* Banks interleave 4-byte texel words: bank = (address / 4) mod banks, so
  * neighbouring texels of a row go to different banks (the
- * texel interleaving of Igehy et al. 1998). */
+ * texel interleaving of Igehy et al. 1998).  With row-major texels a 2x2
+ * bilinear quad meets itself in a bank when the row pitch is a multiple of
+ * banks words; a caller that stores textures in 2x2 blocks makes each quad
+ * four consecutive words, conflict-free with 4 banks. */
 #define FS_TEX_CACHE_WORD_BYTES 4u
 fs_tex_cache *fs_tex_cache_create(const fs_tex_cache_config *cfg);
 void fs_tex_cache_destroy(fs_tex_cache *c);
