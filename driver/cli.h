@@ -9,8 +9,4 @@
 #define FS_CLI_H
 /* fragsim sweep SPEC.ini: parameter grids run as jobs (driver/cli_sweep.c) */
 int fs_cli_sweep(int argc, char **argv);
-/* fragsim study-filters: texture filter quality/cost study (driver/cli_study_filters.c) */
-int fs_cli_study_filters(int argc, char **argv);
-/* fragsim mpgrid: the MP-Grid memory example of Huettner 1999, 4.1.2 (driver/cli_mpgrid.c) */
-int fs_cli_mpgrid(int argc, char **argv);
 #endif
