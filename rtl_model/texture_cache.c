@@ -34,7 +34,7 @@ static unsigned log2u(unsigned v)
 fs_tex_cache *fs_tex_cache_create(const fs_tex_cache_config *cfg)
 {
     if (!cfg || !pow2(cfg->size_bytes) || !pow2(cfg->line_bytes) || !pow2(cfg->ways) ||
-        !pow2(cfg->banks) || !pow2(cfg->bytes_per_cycle))
+        !pow2(cfg->banks) || cfg->bytes_per_cycle == 0)
         return NULL;
     if (cfg->size_bytes > FS_TEX_CACHE_MAX_BYTES || cfg->line_bytes > cfg->size_bytes ||
         cfg->banks > FS_TEX_CACHE_MAX_BANKS || cfg->ways > FS_TEX_CACHE_MAX_WAYS)

@@ -24,8 +24,9 @@ typedef struct fs_tex_cache_config {
 
 typedef struct fs_tex_cache fs_tex_cache;
 
-/* NULL on a bad config: a field zero or not a power of two (latency may be
- * any value, 0 included), line larger than the cache, ways more than lines
+/* NULL on a bad config: size, line, ways or banks zero or not a power of
+ * two, bytes_per_cycle zero (any other value is fine, latency may be 0),
+ * line larger than the cache, ways more than lines
  * or than FS_TEX_CACHE_MAX_WAYS, banks more than FS_TEX_CACHE_MAX_BANKS, or a
  * cache larger than FS_TEX_CACHE_MAX_BYTES. */
 #define FS_TEX_CACHE_MAX_BYTES (64u << 20)
