@@ -17,6 +17,11 @@
 typedef struct dl_entry {
     fs_call call;
     fs_array_state *arrays; /* non-NULL for FS_F_DRAW commands: the snapshot */
+    /* For commands that unpack an image (glTexImage2D, glTexSubImage2D):
+     * the unpack state at compile time, which GL 1.5 spec 5.4 says the
+     * list uses ("pixel data are unpacked when the list is compiled"). */
+    bool has_unpack;
+    GLint unpack_alignment, unpack_row_length;
 } dl_entry;
 
 typedef struct dl_list {
@@ -218,6 +223,11 @@ void fs_dlist_compile(fs_context *c, const fs_call *call)
     dl_entry *e = &l->entries[l->n];
     e->call = *call;
     e->arrays = NULL;
+    /* The image blob was sized by the current unpack state
+     * (fs_teximage_bytes); keep that state with it. */
+    e->has_unpack = call->cmd == FS_CMD_TexImage2D || call->cmd == FS_CMD_TexSubImage2D;
+    e->unpack_alignment = c->unpack_alignment;
+    e->unpack_row_length = c->unpack_row_length;
     const fs_cmd_info *info = &fs_cmd_table[call->cmd];
     for (int i = 0; i < info->nargs; i++) {
         size_t es = fs_kind_elem_size(info->kinds[i]);
@@ -264,6 +274,13 @@ static void execute_list(fs_context *c, GLuint name)
             c->arrays = *e->arrays;
             fs_dispatch(c, &e->call);
             c->arrays = saved;
+        } else if (e->has_unpack) {
+            GLint align = c->unpack_alignment, len = c->unpack_row_length;
+            c->unpack_alignment = e->unpack_alignment;
+            c->unpack_row_length = e->unpack_row_length;
+            fs_dispatch(c, &e->call);
+            c->unpack_alignment = align;
+            c->unpack_row_length = len;
         } else {
             fs_dispatch(c, &e->call);
         }

@@ -7,7 +7,7 @@
 #include <string.h>
 #include "../pipeline/context.h"
 #include "../units/occlusion_unit.h"
-#include "../units/texture_unit.h"
+#include "../units/texture_priv.h"
 #include "../glext/GL_FRAGSIM_occlusion_unit.h"
 
 #define FS_GL_VERSION "1.1 fragsim-0.1"
@@ -138,7 +138,7 @@ const GLubyte *fs_exec_GetString(fs_context *c, GLenum name)
     case GL_RENDERER: return (const GLubyte *)"fragsim functional model";
     case GL_VERSION: return (const GLubyte *)FS_GL_VERSION;
     /* Only what is implemented: the Occlusion Unit (units/occlusion_gl.c). */
-    case GL_EXTENSIONS: return (const GLubyte *)"GL_ARB_occlusion_query GL_FRAGSIM_occlusion_unit GL_HP_occlusion_test";
+    case GL_EXTENSIONS: return (const GLubyte *)"GL_ARB_occlusion_query GL_FRAGSIM_occlusion_unit GL_HP_occlusion_test GL_FRAGSIM_footprint_filter";
     default:
         fs_error(c, GL_INVALID_ENUM);
         return NULL;
@@ -283,6 +283,10 @@ static bool get_state(fs_context *c, GLenum pname, get_result *r)
     case GL_PACK_ALIGNMENT: put1(r, GET_NUM, c->pack_alignment); return true;
     case GL_UNPACK_ALIGNMENT: put1(r, GET_NUM, c->unpack_alignment); return true;
     case GL_UNPACK_ROW_LENGTH: put1(r, GET_NUM, c->unpack_row_length); return true;
+    case GL_PACK_ROW_LENGTH: put1(r, GET_NUM, c->pack_row_length); return true;
+    /* GL 1.5 spec table 6.15 and 6.26 (texture unit, units/texture_object.c). */
+    case GL_TEXTURE_BINDING_2D: put1(r, GET_NUM, fs_texture_binding_2d(c)); return true;
+    case GL_MAX_TEXTURE_SIZE: put1(r, GET_NUM, FS_TEX_MAX_SIZE); return true;
     case GL_VERTEX_ARRAY: case GL_NORMAL_ARRAY: case GL_COLOR_ARRAY: case GL_TEXTURE_COORD_ARRAY:
         put1(r, GET_BOOL, fs_exec_IsEnabled(c, pname));
         return true;
@@ -360,6 +364,14 @@ void fs_exec_GetFloatv(fs_context *c, GLenum pname, GLfloat *params)
             params[i] = (GLfloat)r.v[i];
 }
 
+GLint fs_norm_to_int(double x)
+{
+    /* GL 1.5 spec 6.1.2: [-1,1] maps linearly onto [-2^31, 2^31-1]. */
+    double y = ((x * 4294967295.0) - 1.0) / 2.0;
+    y = y > 2147483647.0 ? 2147483647.0 : y < -2147483648.0 ? -2147483648.0 : y;
+    return (GLint)y;
+}
+
 void fs_exec_GetIntegerv(fs_context *c, GLenum pname, GLint *params)
 {
     get_result r;
@@ -368,10 +380,7 @@ void fs_exec_GetIntegerv(fs_context *c, GLenum pname, GLint *params)
     for (int i = 0; i < r.n; i++) {
         double x = r.v[i];
         if (r.cls == GET_NORM) {
-            /* GL 1.5 spec 6.1.2: [-1,1] maps linearly onto [-2^31, 2^31-1]. */
-            double y = ((x * 4294967295.0) - 1.0) / 2.0;
-            x = y > 2147483647.0 ? 2147483647.0 : y < -2147483648.0 ? -2147483648.0 : y;
-            params[i] = (GLint)x;
+            params[i] = fs_norm_to_int(x);
         } else {
             x = floor(x + 0.5);
             params[i] = x > 2147483647.0 ? 2147483647 : x < -2147483648.0 ? (GLint)-2147483647 - 1 : (GLint)x;
@@ -414,14 +423,14 @@ void fs_exec_PixelStorei(fs_context *c, GLenum pname, GLint param)
         }
         *(pname == GL_PACK_ALIGNMENT ? &c->pack_alignment : &c->unpack_alignment) = param;
         return;
-    case GL_UNPACK_ROW_LENGTH:
+    case GL_UNPACK_ROW_LENGTH: case GL_PACK_ROW_LENGTH:
         if (param < 0) {
             fs_error(c, GL_INVALID_VALUE);
             return;
         }
-        c->unpack_row_length = param;
+        *(pname == GL_PACK_ROW_LENGTH ? &c->pack_row_length : &c->unpack_row_length) = param;
         return;
-    case GL_PACK_ROW_LENGTH: case GL_PACK_SKIP_ROWS: case GL_PACK_SKIP_PIXELS:
+    case GL_PACK_SKIP_ROWS: case GL_PACK_SKIP_PIXELS:
     case GL_UNPACK_SKIP_ROWS: case GL_UNPACK_SKIP_PIXELS: case GL_PACK_SWAP_BYTES:
     case GL_UNPACK_SWAP_BYTES: case GL_PACK_LSB_FIRST: case GL_UNPACK_LSB_FIRST:
         if (param < 0) {

@@ -83,6 +83,17 @@ static int64_t osm_teximage_bytes(GLsizei w, GLsizei h, GLenum format, GLenum ty
     return row * (h - 1) + (int64_t)n * w * sz;
 }
 
+/* glGetTexImage writes the level by OSMesa's own pack state: an upper
+ * bound from the level's size (16 bytes a pixel, alignment 8). */
+static int64_t osm_gettex_bytes(GLenum target, GLint level)
+{
+    GLint w = 0, h = 0, len = 0;
+    glGetTexLevelParameteriv(target, level, GL_TEXTURE_WIDTH, &w);
+    glGetTexLevelParameteriv(target, level, GL_TEXTURE_HEIGHT, &h);
+    glGetIntegerv(GL_PACK_ROW_LENGTH, &len);
+    return w > 0 && h > 0 ? ((int64_t)(len > w ? len : w) * 16 + 8) * h : 0;
+}
+
 #define FS_OCK_ARR(k, name, cnt) \
     if ((int64_t)(cnt) > 0 && (name == NULL || (int64_t)call->a[k].count < (int64_t)(cnt))) return -1;
 #define FS_OCK_OUT(k, name, cnt, esize) \
@@ -125,6 +136,7 @@ static int64_t osm_teximage_bytes(GLsizei w, GLsizei h, GLenum format, GLenum ty
 #define FS_OCHECK(k, kind, name, cnt) FS_OCK_##kind(k, name, cnt)
 #define fs_readpixels_bytes(c, w, h, f, t) osm_readpixels_bytes(w, h)
 #define fs_teximage_bytes(c, w, h, f, t) osm_teximage_bytes(w, h, f, t)
+#define fs_gettexImage_bytes(c, tg, l, f, t) osm_gettex_bytes(tg, l)
 #define FS_OCALL_V(e) e
 #define FS_OCALL_U(e) (void)(e)
 #define FS_OCALL_E(e) (void)(e)
@@ -156,6 +168,7 @@ int fs_osmesa_dispatch(fs_osmesa *o, const fs_call *call)
 }
 #undef fs_readpixels_bytes
 #undef fs_teximage_bytes
+#undef fs_gettexImage_bytes
 
 const uint8_t *fs_osmesa_color(fs_osmesa *o)
 {

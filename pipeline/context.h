@@ -36,7 +36,7 @@ struct fs_context {
     fs_fragment_state frag;
     fs_framebuffer fb;
 
-    GLint pack_alignment, unpack_alignment, unpack_row_length;
+    GLint pack_alignment, unpack_alignment, unpack_row_length, pack_row_length;
     bool unmodelled_caps[32];     /* enables fragsim stores but does not model (driver/gl_state.c) */
 
     struct fs_dlist_state *lists;
@@ -73,4 +73,7 @@ void fs_error(fs_context *c, GLenum err);
 /* Counts an unsupported feature of a call by a descriptive name. */
 void fs_unsupported(fs_context *c, const char *what);
 void *fs_scratch(fs_context *c, size_t bytes);
+/* A normalized value as glGetIntegerv returns it (GL 1.5 spec 6.1.2;
+ * driver/gl_state.c), for every query of colours. */
+GLint fs_norm_to_int(double x);
 #endif

@@ -55,7 +55,9 @@ static int64_t row_stride(const fs_context *c, GLsizei w, int64_t bpp)
     int64_t a = c->pack_alignment;
     if (a != 1 && a != 2 && a != 4 && a != 8)
         a = 4;
-    return ((int64_t)w * bpp + a - 1) / a * a;
+    /* GL_PACK_ROW_LENGTH, when positive, replaces the width (table 4.5). */
+    int64_t len = c->pack_row_length > 0 ? c->pack_row_length : w;
+    return (len * bpp + a - 1) / a * a;
 }
 
 int64_t fs_readpixels_bytes(fs_context *c, GLsizei w, GLsizei h, GLenum format, GLenum type)

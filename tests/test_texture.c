@@ -462,6 +462,392 @@ TEST(unpack_and_subimage)
     fs_context_destroy(c);
 }
 
+/* ---- queries (GL 1.5 spec 6.1.3, 6.1.4) against OSMesa: the same call
+ * sequence on both, every result and every glGetError logged; the logs
+ * must be identical.  Output buffers start filled with a sentinel so that
+ * what a call leaves alone (on an error, or the row padding) counts too.
+ * Implementation limits (GL_MAX_TEXTURE_SIZE: 4096 here, 16384 in
+ * llvmpipe; levels 13-14 exist only there) and the sizes of formats below
+ * 8 bits (stored at 8 here) are left out. ---- */
+
+#define GR(name, ...) (c ? fsgl##name(c, __VA_ARGS__) : gl##name(__VA_ARGS__))
+
+typedef struct qlog { uint8_t *data; size_t n, cap; char what[16384][64]; size_t at[16384]; int entries; } qlog;
+
+static void qrec(qlog *q, const char *what, const void *p, size_t bytes)
+{
+    if (q->n + bytes > q->cap) {
+        size_t cap = (q->n + bytes) * 2 + 4096;
+        uint8_t *d = realloc(q->data, cap);
+        if (!d)
+            return;
+        q->data = d;
+        q->cap = cap;
+    }
+    memcpy(q->data + q->n, p, bytes);
+    if (q->entries < 16384) {
+        snprintf(q->what[q->entries], sizeof q->what[0], "%.63s", what);
+        q->at[q->entries++] = q->n;
+    }
+    q->n += bytes;
+}
+
+static void qerr(qlog *q, fs_context *c, const char *what)
+{
+    GLenum e = c ? fsglGetError(c) : glGetError();
+    char w[64];
+    snprintf(w, sizeof w, "err after %.40s", what);
+    qrec(q, w, &e, sizeof e);
+}
+
+#define SENT 0x5A5A5A5A
+
+static void query_params(qlog *q, fs_context *c, const char *tag)
+{
+    static const GLenum pn[] = {GL_TEXTURE_MIN_FILTER, GL_TEXTURE_MAG_FILTER, GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T,
+                                GL_TEXTURE_BORDER_COLOR, GL_TEXTURE_PRIORITY, GL_TEXTURE_RESIDENT,
+                                GL_TEXTURE_MIN_LOD, GL_TEXTURE_MAX_LOD, GL_TEXTURE_BASE_LEVEL, GL_TEXTURE_MAX_LEVEL,
+                                GL_GENERATE_MIPMAP};
+    for (size_t i = 0; i < sizeof pn / sizeof pn[0]; i++) {
+        GLint iv[4] = {SENT, SENT, SENT, SENT};
+        GLfloat fv[4] = {-7, -7, -7, -7};
+        G(GetTexParameteriv, GL_TEXTURE_2D, pn[i], iv);
+        G(GetTexParameterfv, GL_TEXTURE_2D, pn[i], fv);
+        char w[48];
+        snprintf(w, sizeof w, "%s texparam %#x", tag, pn[i]);
+        qrec(q, w, iv, sizeof iv);
+        qrec(q, w, fv, sizeof fv);
+        qerr(q, c, w);
+    }
+    GLint iv[4] = {SENT, SENT, SENT, SENT};
+    GLfloat fv[4] = {-7, -7, -7, -7};
+    G(GetTexEnviv, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, iv);
+    G(GetTexEnvfv, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, fv);
+    qrec(q, "env mode", iv, sizeof iv);
+    qrec(q, "env mode", fv, sizeof fv);
+    G(GetTexEnviv, GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, iv);
+    G(GetTexEnvfv, GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, fv);
+    qrec(q, "env color", iv, sizeof iv);
+    qrec(q, "env color", fv, sizeof fv);
+    GLint b = SENT;
+    G(GetIntegerv, GL_TEXTURE_BINDING_2D, &b);
+    qrec(q, "binding", &b, sizeof b);
+    qerr(q, c, tag);
+}
+
+static void query_levels(qlog *q, fs_context *c, const char *tag)
+{
+    static const GLenum pn[] = {GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_DEPTH, GL_TEXTURE_INTERNAL_FORMAT,
+                                GL_TEXTURE_BORDER, GL_TEXTURE_RED_SIZE, GL_TEXTURE_GREEN_SIZE, GL_TEXTURE_BLUE_SIZE,
+                                GL_TEXTURE_ALPHA_SIZE, GL_TEXTURE_LUMINANCE_SIZE, GL_TEXTURE_INTENSITY_SIZE,
+                                GL_TEXTURE_DEPTH_SIZE, GL_TEXTURE_COMPRESSED};
+    static const GLint levels[] = {0, 1, 12};
+    for (size_t l = 0; l < 3; l++)
+        for (size_t i = 0; i < sizeof pn / sizeof pn[0]; i++) {
+            GLint iv = SENT;
+            GLfloat fv = -7;
+            G(GetTexLevelParameteriv, GL_TEXTURE_2D, levels[l], pn[i], &iv);
+            G(GetTexLevelParameterfv, GL_TEXTURE_2D, levels[l], pn[i], &fv);
+            char w[48];
+            snprintf(w, sizeof w, "%s level %d %#x", tag, levels[l], pn[i]);
+            qrec(q, w, &iv, sizeof iv);
+            qrec(q, w, &fv, sizeof fv);
+            qerr(q, c, w);
+        }
+}
+
+/* glGetTexImage of level 0 in every format and type (and the packed types
+ * with the formats they go with) under one pack state. */
+static void query_images(qlog *q, fs_context *c, const char *tag, int w, int h)
+{
+    static const GLenum fmts[] = {GL_RED, GL_GREEN, GL_BLUE, GL_ALPHA, GL_RGB, GL_BGR, GL_RGBA, GL_BGRA,
+                                  GL_LUMINANCE, GL_LUMINANCE_ALPHA};
+    static const GLenum types[] = {GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT, GL_UNSIGNED_INT, GL_INT,
+                                   GL_FLOAT};
+    static const struct { GLenum type, format; } packed[] = {
+        {GL_UNSIGNED_BYTE_3_3_2, GL_RGB}, {GL_UNSIGNED_BYTE_2_3_3_REV, GL_RGB},
+        {GL_UNSIGNED_SHORT_5_6_5, GL_RGB}, {GL_UNSIGNED_SHORT_5_6_5_REV, GL_RGB},
+        {GL_UNSIGNED_SHORT_4_4_4_4, GL_RGBA}, {GL_UNSIGNED_SHORT_4_4_4_4_REV, GL_BGRA},
+        {GL_UNSIGNED_SHORT_5_5_5_1, GL_RGBA}, {GL_UNSIGNED_SHORT_1_5_5_5_REV, GL_BGRA},
+        {GL_UNSIGNED_INT_8_8_8_8, GL_RGBA}, {GL_UNSIGNED_INT_8_8_8_8_REV, GL_BGRA},
+        {GL_UNSIGNED_INT_10_10_10_2, GL_RGBA}, {GL_UNSIGNED_INT_2_10_10_10_REV, GL_BGRA},
+    };
+    size_t bytes = (size_t)(w + 16) * (size_t)h * 16 + 64;
+    uint8_t *buf = malloc(bytes);
+    if (!buf)
+        return;
+    for (size_t f = 0; f < sizeof fmts / sizeof fmts[0] + sizeof packed / sizeof packed[0]; f++) {
+        size_t nt = f < sizeof fmts / sizeof fmts[0] ? sizeof types / sizeof types[0] : 1;
+        for (size_t t = 0; t < nt; t++) {
+            GLenum format = f < 10 ? fmts[f] : packed[f - 10].format;
+            GLenum type = f < 10 ? types[t] : packed[f - 10].type;
+            /* Mesa converts luminance to GL_UNSIGNED_INT through a float
+             * (24 bits; 1.0 wraps to 0): a known difference, checked
+             * against the closed form in luminance_uint_readback. */
+            if ((format == GL_LUMINANCE || format == GL_LUMINANCE_ALPHA) && type == GL_UNSIGNED_INT)
+                continue;
+            memset(buf, 0xA5, bytes);
+            G(GetTexImage, GL_TEXTURE_2D, 0, format, type, buf);
+            char wh[48];
+            snprintf(wh, sizeof wh, "%s image %#x %#x", tag, format, type);
+            qrec(q, wh, buf, bytes);
+            qerr(q, c, wh);
+        }
+    }
+    free(buf);
+}
+
+static void query_sequence(qlog *q, fs_context *c)
+{
+    query_params(q, c, "default");
+    GLuint names[3] = {0, 0, 0};
+    G(GenTextures, 3, names);
+    for (int i = 0; i < 3; i++) {
+        GLboolean is = GR(IsTexture, names[i]);
+        qrec(q, "is genned", &is, sizeof is);
+    }
+    G(BindTexture, GL_TEXTURE_2D, names[1]);
+    GLboolean is = GR(IsTexture, names[1]);
+    qrec(q, "is bound", &is, sizeof is);
+    query_params(q, c, "bound");
+    query_levels(q, c, "empty");
+
+    uint8_t px[8 * 4 * 4];
+    uint32_t seed = 99;
+    for (size_t i = 0; i < sizeof px; i++)
+        px[i] = (uint8_t)rng_next(&seed);
+    px[0] = 0; px[1] = 255; px[2] = 128; px[3] = 127; /* the ends and the middle of the range */
+    G(PixelStorei, GL_UNPACK_ALIGNMENT, 1);
+    static const struct { GLint internal; const char *name; } fmts[] = {
+        {GL_RGBA, "rgba"}, {GL_RGB, "rgb"}, {GL_LUMINANCE, "lum"}, {GL_LUMINANCE_ALPHA, "lum_alpha"},
+        {GL_ALPHA, "alpha"}, {GL_INTENSITY, "intensity"}, {1, "1"}, {2, "2"}, {3, "3"}, {4, "4"},
+        {GL_RGBA8, "rgba8"}, {GL_RGB8, "rgb8"}, {GL_LUMINANCE8, "lum8"}, {GL_ALPHA8, "alpha8"},
+        {GL_INTENSITY8, "intensity8"}, {GL_LUMINANCE8_ALPHA8, "lum8_alpha8"},
+    };
+    for (size_t f = 0; f < sizeof fmts / sizeof fmts[0]; f++) {
+        G(TexImage2D, GL_TEXTURE_2D, 0, fmts[f].internal, 8, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+        qerr(q, c, fmts[f].name);
+        query_levels(q, c, fmts[f].name);
+        query_images(q, c, fmts[f].name, 8, 4);
+    }
+    /* Pack state: alignment and row length change the layout. */
+    static const struct { int w, h, align, len; } packs[] = {
+        {2, 1, 4, 0}, {2, 2, 8, 0}, {2, 2, 2, 0}, {4, 2, 4, 7}, {1, 4, 8, 3}, {8, 4, 1, 11},
+    };
+    for (size_t p = 0; p < sizeof packs / sizeof packs[0]; p++) {
+        G(TexImage2D, GL_TEXTURE_2D, 0, GL_RGBA, packs[p].w, packs[p].h, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+        G(PixelStorei, GL_PACK_ALIGNMENT, packs[p].align);
+        G(PixelStorei, GL_PACK_ROW_LENGTH, packs[p].len);
+        char tag[48];
+        snprintf(tag, sizeof tag, "pack %zu", p);
+        query_images(q, c, tag, packs[p].len > packs[p].w ? packs[p].len : packs[p].w, packs[p].h);
+        GLint v[2] = {SENT, SENT};
+        G(GetIntegerv, GL_PACK_ALIGNMENT, &v[0]);
+        G(GetIntegerv, GL_PACK_ROW_LENGTH, &v[1]);
+        qrec(q, tag, v, sizeof v);
+    }
+    G(PixelStorei, GL_PACK_ALIGNMENT, 4);
+    G(PixelStorei, GL_PACK_ROW_LENGTH, 0);
+
+    /* Set parameters, read them back (colours clamp to [0, 1]). */
+    G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+    G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP);
+    G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    const GLfloat border[4] = {0.7f, 0.25f, -1.0f, 2.0f};
+    G(TexParameterfv, GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+    G(TexParameterf, GL_TEXTURE_2D, GL_TEXTURE_PRIORITY, 0.3f);
+    G(TexEnvi, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_DECAL);
+    const GLfloat envc[4] = {0.1f, 0.9f, 0.333f, 1.0f};
+    G(TexEnvfv, GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, envc);
+    const GLint border_i[4] = {2147483647, 0, 1073741823, -5};
+    G(BindTexture, GL_TEXTURE_2D, names[2]);
+    G(TexParameteriv, GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border_i);
+    query_params(q, c, "names[2]");
+    G(BindTexture, GL_TEXTURE_2D, names[1]);
+    query_params(q, c, "set");
+
+    /* Priorities: zero and unused names are skipped, values clamp. */
+    const GLuint pn[4] = {names[1], 0, 999, names[2]};
+    const GLclampf pv[4] = {0.2f, 0.5f, 0.6f, 1.5f};
+    G(PrioritizeTextures, 4, pn, pv);
+    qerr(q, c, "prioritize");
+    query_params(q, c, "prioritized 1");
+    G(BindTexture, GL_TEXTURE_2D, names[2]);
+    query_params(q, c, "prioritized 2");
+    G(PrioritizeTextures, -1, pn, pv);
+    qerr(q, c, "prioritize -1");
+
+    /* Residency: all resident, residences untouched; 0 or unused names and
+     * n < 0 are INVALID_VALUE. */
+    GLboolean res[4] = {7, 7, 7, 7};
+    GLboolean all = GR(AreTexturesResident, 2, names + 1, res);
+    qrec(q, "resident", &all, sizeof all);
+    qrec(q, "resident", res, sizeof res);
+    qerr(q, c, "resident");
+    const GLuint bad1[2] = {names[1], 0}, bad2[2] = {names[1], 4242};
+    all = GR(AreTexturesResident, 2, bad1, res);
+    qrec(q, "resident 0", &all, sizeof all);
+    qerr(q, c, "resident 0");
+    all = GR(AreTexturesResident, 2, bad2, res);
+    qrec(q, "resident unused", &all, sizeof all);
+    qerr(q, c, "resident unused");
+    all = GR(AreTexturesResident, -1, bad2, res);
+    qrec(q, "resident -1", &all, sizeof all);
+    qrec(q, "resident", res, sizeof res);
+    qerr(q, c, "resident -1");
+
+    /* Errors: the output is left alone. */
+    GLint iv[4] = {SENT, SENT, SENT, SENT};
+    GLfloat fv[4] = {-7, -7, -7, -7};
+    G(GetTexParameteriv, GL_TEXTURE_ENV, GL_TEXTURE_MIN_FILTER, iv);
+    qerr(q, c, "texparam target");
+    G(GetTexParameterfv, GL_TEXTURE_2D, GL_TEXTURE_ENV_MODE, fv);
+    qerr(q, c, "texparam pname");
+    G(GetTexLevelParameteriv, GL_TEXTURE_ENV, 0, GL_TEXTURE_WIDTH, iv);
+    qerr(q, c, "level target");
+    G(GetTexLevelParameteriv, GL_TEXTURE_2D, -1, GL_TEXTURE_WIDTH, iv);
+    qerr(q, c, "level -1");
+    G(GetTexLevelParameteriv, GL_TEXTURE_2D, 20, GL_TEXTURE_WIDTH, iv);
+    qerr(q, c, "level 20");
+    /* Mesa's glGetTexLevelParameterfv writes 0 on an error; the model
+     * leaves the output alone (2.5), checked in query_errors_change_nothing. */
+    GLfloat fv_mesa_writes = -7;
+    G(GetTexLevelParameterfv, GL_TEXTURE_2D, 0, GL_TEXTURE_MIN_FILTER, &fv_mesa_writes);
+    qerr(q, c, "level pname");
+    G(GetTexEnviv, GL_TEXTURE_2D, GL_TEXTURE_ENV_MODE, iv);
+    qerr(q, c, "env target");
+    G(GetTexEnvfv, GL_TEXTURE_ENV, GL_TEXTURE_MIN_FILTER, fv);
+    qerr(q, c, "env pname");
+    uint8_t img[64 * 16];
+    static const struct { GLenum target; GLint level; GLenum format, type; const char *what; } bad[] = {
+        {GL_TEXTURE_ENV, 0, GL_RGBA, GL_UNSIGNED_BYTE, "image target"},
+        {GL_PROXY_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, "image proxy"},
+        {GL_TEXTURE_2D, -1, GL_RGBA, GL_UNSIGNED_BYTE, "image level -1"},
+        {GL_TEXTURE_2D, 20, GL_RGBA, GL_UNSIGNED_BYTE, "image level 20"},
+        {GL_TEXTURE_2D, 0, 0x1234, GL_UNSIGNED_BYTE, "image format"},
+        {GL_TEXTURE_2D, 0, GL_RGBA, 0x1234, "image type"},
+        {GL_TEXTURE_2D, 0, GL_RGBA, GL_BITMAP, "image bitmap"},
+        {GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_SHORT_5_6_5, "image 565 rgba"},
+        {GL_TEXTURE_2D, 0, GL_RGB, GL_UNSIGNED_SHORT_4_4_4_4, "image 4444 rgb"},
+        {GL_TEXTURE_2D, 0, GL_LUMINANCE, GL_UNSIGNED_INT_8_8_8_8, "image 8888 lum"},
+        {GL_TEXTURE_2D, 3, GL_RGBA, GL_UNSIGNED_BYTE, "image undefined level"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        memset(img, 0xA5, sizeof img);
+        G(GetTexImage, bad[i].target, bad[i].level, bad[i].format, bad[i].type, img);
+        qrec(q, bad[i].what, img, sizeof img);
+        qerr(q, c, bad[i].what);
+    }
+    qrec(q, "error outputs", iv, sizeof iv);
+    qrec(q, "error outputs", fv, sizeof fv);
+
+    /* Between Begin and End every query is INVALID_OPERATION (2.6.3). */
+    G(Begin, GL_TRIANGLES);
+    G(GetTexParameteriv, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, iv);
+    G(GetTexLevelParameteriv, GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, iv);
+    G(GetTexEnvfv, GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, fv);
+    memset(img, 0xA5, sizeof img);
+    G(GetTexImage, GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, img);
+    G(PrioritizeTextures, 1, names + 2, pv);
+    G0(End);
+    qerr(q, c, "inside begin/end");
+    qrec(q, "begin/end outputs", iv, sizeof iv);
+    qrec(q, "begin/end outputs", fv, sizeof fv);
+    qrec(q, "begin/end outputs", img, sizeof img);
+    query_params(q, c, "after begin/end");
+
+    /* Deleting the bound texture binds 0. */
+    G(DeleteTextures, 1, names + 2);
+    is = GR(IsTexture, names[2]);
+    qrec(q, "is deleted", &is, sizeof is);
+    query_params(q, c, "deleted");
+    query_levels(q, c, "deleted");
+}
+
+TEST(queries_vs_osmesa)
+{
+    static qlog ref, mine;
+    free(ref.data);
+    free(mine.data);
+    memset(&ref, 0, sizeof ref);
+    memset(&mine, 0, sizeof mine);
+    uint8_t fb[16 * 16 * 4];
+    OSMesaContext oc = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+    REQUIRE(oc && OSMesaMakeCurrent(oc, fb, GL_UNSIGNED_BYTE, 16, 16));
+    query_sequence(&ref, NULL);
+    GLint max = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
+    OSMesaDestroyContext(oc);
+    fs_context *c = fs_context_create(NULL, 16, 16);
+    REQUIRE(c);
+    query_sequence(&mine, c);
+    GLint mymax = 0;
+    fsglGetIntegerv(c, GL_MAX_TEXTURE_SIZE, &mymax);
+    CHECK_EQ_INT(mymax, FS_TEX_MAX_SIZE);
+    CHECK(max >= 64 && mymax >= 64); /* the GL minimum (table 6.32) */
+    fs_context_destroy(c);
+    CHECK_EQ_INT(mine.n, ref.n);
+    CHECK_EQ_INT(mine.entries, ref.entries);
+    int shown = 0;
+    long differ = 0;
+    for (int i = 0; i < ref.entries && i < mine.entries; i++) {
+        size_t end = i + 1 < ref.entries ? ref.at[i + 1] : ref.n;
+        size_t len = end - ref.at[i];
+        if (ref.at[i] != mine.at[i] || memcmp(ref.data + ref.at[i], mine.data + mine.at[i], len) != 0) {
+            differ++;
+            if (shown++ < (getenv("FS_Q_ALL") ? 100000 : 12)) {
+                char a[64] = "", b[64] = "";
+                for (size_t k = 0; k < len && k < 16; k++) {
+                    snprintf(a + strlen(a), sizeof a - strlen(a), "%02x", ref.data[ref.at[i] + k]);
+                    snprintf(b + strlen(b), sizeof b - strlen(b), "%02x", mine.data[mine.at[i] + k]);
+                }
+                CHECK_FAIL_("%s: OSMesa %s.. model %s..", ref.what[i], a, b);
+            }
+        }
+    }
+    printf("  %d query results (%zu bytes) compared, %ld differ\n", ref.entries, ref.n, differ);
+    free(ref.data);
+    free(mine.data);
+    ref.data = mine.data = NULL;
+}
+
+TEST(luminance_uint_readback)
+{
+    /* 6.1.4 with table 6.1 and 4.3.2: L = R, and an 8-bit value x becomes
+     * x * (2^32 - 1) / 255 = x * 0x01010101 exactly. */
+    fs_context *c = fs_context_create(NULL, 4, 4);
+    REQUIRE(c);
+    const uint8_t px[4 * 2] = {0, 9, 9, 9, 255, 7, 7, 200};
+    fsglPixelStorei(c, GL_UNPACK_ALIGNMENT, 1);
+    fsglTexImage2D(c, GL_TEXTURE_2D, 0, GL_RGBA, 2, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    uint32_t out[4] = {1, 1, 1, 1};
+    fsglGetTexImage(c, GL_TEXTURE_2D, 0, GL_LUMINANCE_ALPHA, GL_UNSIGNED_INT, out);
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    CHECK_EQ_UINT(out[0], 0u);
+    CHECK_EQ_UINT(out[1], 9u * 0x01010101u);
+    CHECK_EQ_UINT(out[2], 0xffffffffu);
+    CHECK_EQ_UINT(out[3], 200u * 0x01010101u);
+    fs_context_destroy(c);
+}
+
+TEST(query_errors_change_nothing)
+{
+    fs_context *c = fs_context_create(NULL, 4, 4);
+    REQUIRE(c);
+    GLfloat fv = -7;
+    GLint iv = -7;
+    fsglGetTexLevelParameterfv(c, GL_TEXTURE_2D, 0, GL_TEXTURE_MIN_FILTER, &fv);
+    CHECK_EQ_INT(fsglGetError(c), GL_INVALID_ENUM);
+    fsglGetTexLevelParameterfv(c, GL_TEXTURE_2D, 20, GL_TEXTURE_WIDTH, &fv);
+    CHECK_EQ_INT(fsglGetError(c), GL_INVALID_VALUE);
+    fsglGetTexLevelParameteriv(c, GL_TEXTURE_2D, -1, GL_TEXTURE_WIDTH, &iv);
+    CHECK_EQ_INT(fsglGetError(c), GL_INVALID_VALUE);
+    CHECK(fv == -7.0f);
+    CHECK_EQ_INT(iv, -7);
+    fs_context_destroy(c);
+}
+
 TEST_LIST = {
     TEST_ENTRY(filters_magnified),
     TEST_ENTRY(filters_minified),
@@ -471,6 +857,9 @@ TEST_LIST = {
     TEST_ENTRY(incomplete_texture),
     TEST_ENTRY(errors),
     TEST_ENTRY(unpack_and_subimage),
+    TEST_ENTRY(queries_vs_osmesa),
+    TEST_ENTRY(luminance_uint_readback),
+    TEST_ENTRY(query_errors_change_nothing),
     TEST_END,
 };
 

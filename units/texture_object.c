@@ -754,3 +754,400 @@ void fs_exec_TexEnvfv(fs_context *c, GLenum target, GLenum pname, const GLfloat 
     vector_from_fv(v, params, pname == GL_TEXTURE_ENV_COLOR);
     tex_env(c, target, pname, v, true);
 }
+
+/* ---- queries (GL 1.5 spec 6.1.3 texture queries, 6.1.4 GetTexImage) ----
+ * Values the model does not store (the GL 1.2-1.4 LOD and level range,
+ * GENERATE_MIPMAP: setting them is counted unsupported) read as their
+ * initial values (table 6.17).  Colours and the priority come out of the
+ * integer forms as normalized integers (6.1.2), as Mesa returns them. */
+
+GLuint fs_texture_binding_2d(const fs_context *c) { return c->texture->bound->name; }
+
+/* A texture target the queries accept; sets the error (or counts the
+ * unsupported 1D/3D target) and returns false otherwise. */
+static bool query_target_ok(fs_context *c, GLenum target, bool proxy_ok, const char *what)
+{
+    if (target == GL_TEXTURE_2D || (proxy_ok && target == GL_PROXY_TEXTURE_2D))
+        return true;
+    if (target == GL_TEXTURE_1D || target == GL_TEXTURE_3D)
+        fs_unsupported(c, what);
+    else
+        fs_error(c, GL_INVALID_ENUM);
+    return false;
+}
+
+/* One texture parameter: returns how many values (1 or 4) were written to
+ * v, 0 for an unknown name; *norm tells whether they are normalized. */
+static int tex_parameter_value(const fs_tex_object *t, GLenum pname, float v[4], bool *norm)
+{
+    *norm = false;
+    switch (pname) {
+    case GL_TEXTURE_MIN_FILTER: v[0] = (float)t->min_filter; return 1;
+    case GL_TEXTURE_MAG_FILTER: v[0] = (float)t->mag_filter; return 1;
+    case GL_TEXTURE_WRAP_S: v[0] = (float)t->wrap_s; return 1;
+    case GL_TEXTURE_WRAP_T: v[0] = (float)t->wrap_t; return 1;
+    case GL_TEXTURE_BORDER_COLOR: memcpy(v, t->border, 4 * sizeof *v); *norm = true; return 4;
+    case GL_TEXTURE_PRIORITY: v[0] = t->priority; *norm = true; return 1;
+    /* 3.8.12: a texture of the model is always resident. */
+    case GL_TEXTURE_RESIDENT: v[0] = 1.0f; return 1;
+    case GL_TEXTURE_MIN_LOD: v[0] = -1000.0f; return 1;
+    case GL_TEXTURE_MAX_LOD: v[0] = 1000.0f; return 1;
+    case GL_TEXTURE_BASE_LEVEL: v[0] = 0.0f; return 1;
+    case GL_TEXTURE_MAX_LEVEL: v[0] = 1000.0f; return 1;
+    case GL_GENERATE_MIPMAP: v[0] = 0.0f; return 1;
+    default: return 0;
+    }
+}
+
+static int get_tex_parameter(fs_context *c, GLenum target, GLenum pname, float v[4], bool *norm)
+{
+    if (!query_target_ok(c, target, false, "glGetTexParameter on a 1D/3D texture"))
+        return 0;
+    int n = tex_parameter_value(c->texture->bound, pname, v, norm);
+    if (n == 0)
+        fs_error(c, GL_INVALID_ENUM);
+    return n;
+}
+
+void fs_exec_GetTexParameterfv(fs_context *c, GLenum target, GLenum pname, GLfloat *params)
+{
+    float v[4];
+    bool norm;
+    int n = get_tex_parameter(c, target, pname, v, &norm);
+    memcpy(params, v, (size_t)n * sizeof *v);
+}
+
+void fs_exec_GetTexParameteriv(fs_context *c, GLenum target, GLenum pname, GLint *params)
+{
+    float v[4];
+    bool norm;
+    int n = get_tex_parameter(c, target, pname, v, &norm);
+    for (int k = 0; k < n; k++)
+        params[k] = norm ? fs_norm_to_int(v[k]) : (GLint)v[k];
+}
+
+/* Bits the model stores of a component pname for an image (8 for every
+ * component of its base format, table 6.18), -1 for a name that is not a
+ * component size. */
+static int component_bits(const fs_tex_image *img, GLenum pname)
+{
+    GLenum b = img->base_format;
+    bool rgb = b == GL_RGB || b == GL_RGBA;
+    bool alpha = b == GL_ALPHA || b == GL_LUMINANCE_ALPHA || b == GL_RGBA;
+    bool has;
+    switch (pname) {
+    case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_GREEN_SIZE: case GL_TEXTURE_BLUE_SIZE: has = rgb; break;
+    case GL_TEXTURE_ALPHA_SIZE: has = alpha; break;
+    case GL_TEXTURE_LUMINANCE_SIZE: has = b == GL_LUMINANCE || b == GL_LUMINANCE_ALPHA; break;
+    case GL_TEXTURE_INTENSITY_SIZE: has = b == GL_INTENSITY; break;
+    case GL_TEXTURE_DEPTH_SIZE: has = false; break;
+    default: return -1;
+    }
+    return has && img->texels ? 8 : 0;
+}
+
+/* One level parameter (table 6.18); false for an unknown name.  An
+ * undefined level reads as zero size with Mesa's internal format RGBA. */
+static bool tex_level_value(const fs_tex_image *img, GLenum pname, GLint *v)
+{
+    bool defined = img && img->texels;
+    switch (pname) {
+    case GL_TEXTURE_WIDTH: *v = defined ? img->width : 0; return true;
+    case GL_TEXTURE_HEIGHT: *v = defined ? img->height : 0; return true;
+    case GL_TEXTURE_DEPTH: *v = defined ? 1 : 0; return true;
+    case GL_TEXTURE_INTERNAL_FORMAT: *v = defined ? img->internal_format : GL_RGBA; return true;
+    case GL_TEXTURE_BORDER: *v = 0; return true;
+    case GL_TEXTURE_COMPRESSED: *v = GL_FALSE; return true;
+    default: break;
+    }
+    static const fs_tex_image undefined;
+    int bits = component_bits(defined ? img : &undefined, pname);
+    if (bits < 0)
+        return false;
+    *v = bits;
+    return true;
+}
+
+static bool get_tex_level(fs_context *c, GLenum target, GLint level, GLenum pname, GLint *v)
+{
+    if (!query_target_ok(c, target, true, "glGetTexLevelParameter on a 1D/3D texture"))
+        return false;
+    if (level < 0 || level >= FS_TEX_MAX_LEVELS) {
+        fs_error(c, GL_INVALID_VALUE);
+        return false;
+    }
+    /* The model keeps no proxy images (glTexImage2D on the proxy target is
+     * unsupported), so every proxy level reads as undefined. */
+    const fs_tex_image *img = target == GL_TEXTURE_2D ? &c->texture->bound->level[level] : NULL;
+    if (!tex_level_value(img, pname, v)) {
+        fs_error(c, GL_INVALID_ENUM);
+        return false;
+    }
+    return true;
+}
+
+void fs_exec_GetTexLevelParameteriv(fs_context *c, GLenum target, GLint level, GLenum pname, GLint *params)
+{
+    GLint v;
+    if (get_tex_level(c, target, level, pname, &v))
+        params[0] = v;
+}
+
+void fs_exec_GetTexLevelParameterfv(fs_context *c, GLenum target, GLint level, GLenum pname, GLfloat *params)
+{
+    GLint v;
+    if (get_tex_level(c, target, level, pname, &v))
+        params[0] = (GLfloat)v;
+}
+
+static int get_tex_env(fs_context *c, GLenum target, GLenum pname, float v[4])
+{
+    const struct fs_texture_state *s = c->texture;
+    if (target != GL_TEXTURE_ENV) {
+        fs_error(c, GL_INVALID_ENUM);
+        return 0;
+    }
+    if (pname == GL_TEXTURE_ENV_MODE) {
+        v[0] = (float)s->env_mode;
+        return 1;
+    }
+    if (pname == GL_TEXTURE_ENV_COLOR) {
+        memcpy(v, s->env_color, 4 * sizeof *v);
+        return 4;
+    }
+    fs_error(c, GL_INVALID_ENUM);
+    return 0;
+}
+
+void fs_exec_GetTexEnvfv(fs_context *c, GLenum target, GLenum pname, GLfloat *params)
+{
+    float v[4];
+    int n = get_tex_env(c, target, pname, v);
+    memcpy(params, v, (size_t)n * sizeof *v);
+}
+
+void fs_exec_GetTexEnviv(fs_context *c, GLenum target, GLenum pname, GLint *params)
+{
+    float v[4];
+    int n = get_tex_env(c, target, pname, v);
+    for (int k = 0; k < n; k++)
+        params[k] = n == 4 ? fs_norm_to_int(v[k]) : (GLint)v[k];
+}
+
+GLboolean fs_exec_AreTexturesResident(fs_context *c, GLsizei n, const GLuint *textures, GLboolean *residences)
+{
+    /* 3.8.12: every texture is resident, so the answer is TRUE and
+     * residences is left as it was; zero or unused names are an error. */
+    (void)residences;
+    if (n < 0) {
+        fs_error(c, GL_INVALID_VALUE);
+        return GL_FALSE;
+    }
+    for (GLsizei i = 0; i < n; i++) {
+        if (textures[i] == 0 || !lookup(c->texture, textures[i], NULL)) {
+            fs_error(c, GL_INVALID_VALUE);
+            return GL_FALSE;
+        }
+    }
+    return GL_TRUE;
+}
+
+void fs_exec_PrioritizeTextures(fs_context *c, GLsizei n, const GLuint *textures, const GLclampf *priorities)
+{
+    if (n < 0) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    /* 3.8.12: zero and unused names are ignored; priorities clamp to [0, 1]. */
+    for (GLsizei i = 0; i < n; i++) {
+        fs_tex_object *t = textures[i] ? lookup(c->texture, textures[i], NULL) : NULL;
+        if (t)
+            t->priority = priorities[i] < 0.0f ? 0.0f : priorities[i] > 1.0f ? 1.0f : priorities[i];
+    }
+}
+
+/* Layout of a packed pixel type (3.6.4 table 3.8): bits per component from
+ * the most significant end, or from the least for the _REV types; 0 when
+ * the type is not packed. */
+typedef struct packed_layout { int bytes, n, bits[4]; bool rev; } packed_layout;
+
+static packed_layout packed_type(GLenum type)
+{
+    switch (type) {
+    case GL_UNSIGNED_BYTE_3_3_2: return (packed_layout){1, 3, {3, 3, 2, 0}, false};
+    case GL_UNSIGNED_BYTE_2_3_3_REV: return (packed_layout){1, 3, {3, 3, 2, 0}, true};
+    case GL_UNSIGNED_SHORT_5_6_5: return (packed_layout){2, 3, {5, 6, 5, 0}, false};
+    case GL_UNSIGNED_SHORT_5_6_5_REV: return (packed_layout){2, 3, {5, 6, 5, 0}, true};
+    case GL_UNSIGNED_SHORT_4_4_4_4: return (packed_layout){2, 4, {4, 4, 4, 4}, false};
+    case GL_UNSIGNED_SHORT_4_4_4_4_REV: return (packed_layout){2, 4, {4, 4, 4, 4}, true};
+    case GL_UNSIGNED_SHORT_5_5_5_1: return (packed_layout){2, 4, {5, 5, 5, 1}, false};
+    case GL_UNSIGNED_SHORT_1_5_5_5_REV: return (packed_layout){2, 4, {5, 5, 5, 1}, true};
+    case GL_UNSIGNED_INT_8_8_8_8: return (packed_layout){4, 4, {8, 8, 8, 8}, false};
+    case GL_UNSIGNED_INT_8_8_8_8_REV: return (packed_layout){4, 4, {8, 8, 8, 8}, true};
+    case GL_UNSIGNED_INT_10_10_10_2: return (packed_layout){4, 4, {10, 10, 10, 2}, false};
+    case GL_UNSIGNED_INT_2_10_10_10_REV: return (packed_layout){4, 4, {10, 10, 10, 2}, true};
+    default: return (packed_layout){0, 0, {0, 0, 0, 0}, false};
+    }
+}
+
+/* Bytes per component of an unpacked type GetTexImage writes, 0 otherwise. */
+static int component_type_bytes(GLenum type)
+{
+    switch (type) {
+    case GL_UNSIGNED_BYTE: case GL_BYTE: return 1;
+    case GL_UNSIGNED_SHORT: case GL_SHORT: return 2;
+    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: return 4;
+    default: return 0;
+    }
+}
+
+/* The GL error of a GetTexImage format/type pair (6.1.4 with 3.6.4's rules
+ * for packed types), GL_NO_ERROR when the pair is valid. */
+static GLenum get_image_format_error(GLenum format, GLenum type)
+{
+    if (format_components(format) == 0)
+        return GL_INVALID_ENUM; /* includes COLOR_INDEX, STENCIL_INDEX, DEPTH_COMPONENT */
+    packed_layout pl = packed_type(type);
+    if (pl.bytes == 0)
+        return component_type_bytes(type) ? GL_NO_ERROR : GL_INVALID_ENUM;
+    bool ok = pl.n == 3 ? format == GL_RGB : format == GL_RGBA || format == GL_BGRA;
+    return ok ? GL_NO_ERROR : GL_INVALID_OPERATION;
+}
+
+int64_t fs_gettexImage_bytes(fs_context *c, GLenum target, GLint level, GLenum format, GLenum type)
+{
+    if (target != GL_TEXTURE_2D || level < 0 || level >= FS_TEX_MAX_LEVELS ||
+        get_image_format_error(format, type) != GL_NO_ERROR)
+        return 0;
+    const fs_tex_image *img = &c->texture->bound->level[level];
+    if (!img->texels)
+        return 0;
+    /* The pack layout is glReadPixels' (4.3.2, 6.1.4). */
+    return fs_readpixels_bytes(c, img->width, img->height, format, type);
+}
+
+/* A texel as GetTexImage sees it: table 6.1 assigns the base format's
+ * components to R, G, B, A (luminance and intensity to R alone, a missing
+ * alpha to 1), undoing the sampler's expansion of the stored texel. */
+static void texel_for_get(const uint8_t *t, GLenum base, uint8_t out[4])
+{
+    out[0] = t[0];
+    out[1] = t[1];
+    out[2] = t[2];
+    out[3] = t[3];
+    switch (base) {
+    case GL_LUMINANCE: case GL_INTENSITY: out[1] = out[2] = 0; out[3] = 255; break;
+    case GL_LUMINANCE_ALPHA: out[1] = out[2] = 0; break;
+    default: break;
+    }
+}
+
+/* The components of a client format in order, as indices into RGBA; L is R
+ * (Mesa's GetTexImage does not sum R, G and B as ReadPixels would). */
+static int format_order(GLenum format, int idx[4])
+{
+    switch (format) {
+    case GL_RED: case GL_LUMINANCE: idx[0] = 0; return 1;
+    case GL_GREEN: idx[0] = 1; return 1;
+    case GL_BLUE: idx[0] = 2; return 1;
+    case GL_ALPHA: idx[0] = 3; return 1;
+    case GL_LUMINANCE_ALPHA: idx[0] = 0; idx[1] = 3; return 2;
+    case GL_RGB: idx[0] = 0; idx[1] = 1; idx[2] = 2; return 3;
+    case GL_BGR: idx[0] = 2; idx[1] = 1; idx[2] = 0; return 3;
+    case GL_RGBA: idx[0] = 0; idx[1] = 1; idx[2] = 2; idx[3] = 3; return 4;
+    case GL_BGRA: idx[0] = 2; idx[1] = 1; idx[2] = 0; idx[3] = 3; return 4;
+    default: return 0;
+    }
+}
+
+/* An 8-bit unsigned normalized value as a b-bit one (2.14.9 eq. 2.3's
+ * c = f * (2^b - 1) in integers): narrowing rounds to nearest; widening
+ * multiplies by floor((2^b - 1) / 255) and fills the low bits with x's top
+ * bits, which is exact for multiples of 8 and is how Mesa converts unorm8
+ * storage (util/format_utils.h, checked by the tests), so 255 gives the
+ * largest value.  Signed types use b - 1 bits of magnitude.  `round` asks
+ * for rounding to nearest also when widening: Mesa goes through float for
+ * images whose base format is not RGBA, which differs for 10 bits. */
+static uint32_t unorm8_to_bits(uint32_t x, int b, bool round)
+{
+    if (b <= 8 || (round && b <= 16))
+        return (x * ((1u << b) - 1u) + 127u) / 255u;
+    uint32_t maxv = b == 32 ? 0xffffffffu : (1u << b) - 1u;
+    uint32_t v = x * (maxv / 255u);
+    if (b % 8)
+        v += x >> (8 - b % 8);
+    return v;
+}
+
+/* Writes component k of a pixel of an unpacked type (4.3.2 final
+ * conversion).  Floats are x times the float 1/255, as Mesa computes them. */
+static void put_component(uint8_t *p, int k, GLenum type, uint8_t x)
+{
+    switch (type) {
+    case GL_UNSIGNED_BYTE: p[k] = x; break;
+    case GL_BYTE: p[k] = (uint8_t)unorm8_to_bits(x, 7, false); break;
+    case GL_UNSIGNED_SHORT: case GL_SHORT: {
+        uint16_t v = (uint16_t)unorm8_to_bits(x, type == GL_SHORT ? 15 : 16, false);
+        memcpy(p + 2 * k, &v, 2);
+        break;
+    }
+    case GL_UNSIGNED_INT: case GL_INT: {
+        uint32_t v = unorm8_to_bits(x, type == GL_INT ? 31 : 32, false);
+        memcpy(p + 4 * k, &v, 4);
+        break;
+    }
+    default: { float v = (float)x * (1.0f / 255.0f); memcpy(p + 4 * k, &v, 4); break; }
+    }
+}
+
+void fs_exec_GetTexImage(fs_context *c, GLenum target, GLint level, GLenum format, GLenum type, GLvoid *pixels)
+{
+    if (!query_target_ok(c, target, false, "glGetTexImage on a 1D/3D texture"))
+        return;
+    if (level < 0 || level >= FS_TEX_MAX_LEVELS) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    GLenum err = get_image_format_error(format, type);
+    if (err != GL_NO_ERROR) {
+        fs_error(c, err);
+        return;
+    }
+    const fs_tex_image *img = &c->texture->bound->level[level];
+    if (!img->texels || !pixels)
+        return; /* an undefined level writes nothing */
+    int idx[4];
+    int n = format_order(format, idx);
+    packed_layout pl = packed_type(type);
+    int64_t bpp = pl.bytes ? pl.bytes : (int64_t)n * component_type_bytes(type);
+    int64_t stride = fs_readpixels_bytes(c, img->width, 2, format, type) - img->width * bpp;
+    for (int y = 0; y < img->height; y++) {
+        uint8_t *row = (uint8_t *)pixels + stride * y;
+        for (int x = 0; x < img->width; x++) {
+            uint8_t rgba[4];
+            texel_for_get(img->texels + ((size_t)y * (size_t)img->width + (size_t)x) * 4, img->base_format, rgba);
+            uint8_t *out = row + bpp * x;
+            if (!pl.bytes) {
+                for (int k = 0; k < n; k++)
+                    put_component(out, k, type, rgba[idx[k]]);
+                continue;
+            }
+            /* Packed: the first component in the high bits unless _REV. */
+            uint32_t word = 0;
+            int shift = 0;
+            for (int k = 0; k < pl.n; k++) {
+                int comp = pl.rev ? k : pl.n - 1 - k;
+                word |= unorm8_to_bits(rgba[idx[comp]], pl.bits[comp], img->base_format != GL_RGBA) << shift;
+                shift += pl.bits[comp];
+            }
+            if (pl.bytes == 1) {
+                out[0] = (uint8_t)word;
+            } else if (pl.bytes == 2) {
+                uint16_t h = (uint16_t)word;
+                memcpy(out, &h, 2);
+            } else {
+                memcpy(out, &word, 4);
+            }
+        }
+    }
+}

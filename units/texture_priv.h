@@ -48,4 +48,8 @@ struct fs_texture_state {
 
 /* Completeness of an object, cached (3.8.10). */
 bool fs_tex_complete(fs_tex_object *t);
+
+/* The name of the bound 2D texture, for glGet(GL_TEXTURE_BINDING_2D)
+ * (driver/gl_state.c). */
+GLuint fs_texture_binding_2d(const fs_context *c);
 #endif
