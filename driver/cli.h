@@ -9,4 +9,6 @@
 #define FS_CLI_H
 /* fragsim sweep SPEC.ini: parameter grids run as jobs (driver/cli_sweep.c) */
 int fs_cli_sweep(int argc, char **argv);
+/* fragsim rom: Table 4.3 of Huettner 1999 next to fragsim's weighting ROMs (driver/cli_rom.c) */
+int fs_cli_rom(int argc, char **argv);
 #endif

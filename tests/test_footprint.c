@@ -10,7 +10,10 @@
 #include <stdlib.h>
 #include <string.h>
 #include "check.h"
+#include "../pipeline/context.h"
 #include "../units/footprint.h"
+#include "../units/texture_priv.h"
+#include "../glext/GL_FRAGSIM_footprint_filter.h"
 
 static double shoelace(const double x[3], const double y[3])
 {
@@ -488,6 +491,138 @@ TEST(table_4_3_counts)
     CHECK_EQ_INT(c.weights, 29568);
 }
 
+
+/* ---- GL_FRAGSIM_footprint_filter ---- */
+
+TEST(gl_parameters_and_errors)
+{
+    fs_context *c = fs_context_create(NULL, 16, 16);
+    REQUIRE(c);
+    CHECK(strstr((const char *)fsglGetString(c, GL_EXTENSIONS), "GL_FRAGSIM_footprint_filter") != NULL);
+    fsglBindTexture(c, GL_TEXTURE_2D, 1);
+    const fs_tex_object *t = c->texture->bound;
+    CHECK_EQ_INT(t->footprint_budget, 16);
+    CHECK_EQ_INT(t->footprint_snap, GL_FOOTPRINT_SNAP_INTEGER_FRAGSIM);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_FOOTPRINT_BUDGET_FRAGSIM, 32);
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    CHECK_EQ_INT(t->footprint_budget, 32);
+    static const GLint bad[] = {0, 1, 12, 33, -16, 128, 4, 65536};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_FOOTPRINT_BUDGET_FRAGSIM, bad[i]);
+        CHECK_EQ_INT(fsglGetError(c), GL_INVALID_VALUE);
+        CHECK_EQ_INT(t->footprint_budget, 32);
+    }
+    fsglTexParameterf(c, GL_TEXTURE_2D, GL_TEXTURE_FOOTPRINT_BUDGET_FRAGSIM, 16.5f);
+    CHECK_EQ_INT(fsglGetError(c), GL_INVALID_VALUE);
+    CHECK_EQ_INT(t->footprint_budget, 32);
+    fsglTexParameterf(c, GL_TEXTURE_2D, GL_TEXTURE_FOOTPRINT_BUDGET_FRAGSIM, 64.0f);
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    CHECK_EQ_INT(t->footprint_budget, 64);
+    GLint q = 0;
+    fsglGetTexParameteriv(c, GL_TEXTURE_2D, GL_TEXTURE_FOOTPRINT_BUDGET_FRAGSIM, &q);
+    CHECK_EQ_INT(q, 64);
+    fsglGetTexParameteriv(c, GL_TEXTURE_2D, GL_TEXTURE_FOOTPRINT_SNAP_FRAGSIM, &q);
+    CHECK_EQ_INT(q, GL_FOOTPRINT_SNAP_INTEGER_FRAGSIM);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_FOOTPRINT_SNAP_FRAGSIM, GL_FOOTPRINT_SNAP_MIDPOINT_FRAGSIM);
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    CHECK_EQ_INT(t->footprint_snap, GL_FOOTPRINT_SNAP_MIDPOINT_FRAGSIM);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_FOOTPRINT_SNAP_FRAGSIM, GL_LINEAR);
+    CHECK_EQ_INT(fsglGetError(c), GL_INVALID_ENUM);
+    CHECK_EQ_INT(t->footprint_snap, GL_FOOTPRINT_SNAP_MIDPOINT_FRAGSIM);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_FOOTPRINT_HYBRID_FRAGSIM);
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    CHECK_EQ_INT(t->min_filter, GL_FOOTPRINT_HYBRID_FRAGSIM);
+    /* Not a magnification filter (the footprint filters minify only). */
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_FOOTPRINT_FRAGSIM);
+    CHECK_EQ_INT(fsglGetError(c), GL_INVALID_ENUM);
+    CHECK_EQ_INT(t->mag_filter, GL_LINEAR);
+    /* A bad min filter leaves the footprint filter selected. */
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_FOOTPRINT_FRAGSIM + 15);
+    CHECK_EQ_INT(fsglGetError(c), GL_INVALID_ENUM);
+    CHECK_EQ_INT(t->min_filter, GL_FOOTPRINT_HYBRID_FRAGSIM);
+    fs_context_destroy(c);
+}
+
+/* A tilted, minified quad with a constant-colour MIPmapped texture: every
+ * textured pixel has that colour, and every pixel went through one of the
+ * filter's classes. */
+static void draw_plane(fs_context *c, GLenum minf, int M, GLenum snap, const uint8_t col[4])
+{
+    fsglViewport(c, 0, 0, 64, 48);
+    fsglClearColor(c, 0.0f, 0.0f, 1.0f, 1.0f);
+    fsglClear(c, GL_COLOR_BUFFER_BIT);
+    fsglMatrixMode(c, GL_PROJECTION);
+    fsglLoadIdentity(c);
+    fsglFrustum(c, -1.0, 1.0, -0.75, 0.75, 1.0, 100.0);
+    fsglMatrixMode(c, GL_MODELVIEW);
+    fsglLoadIdentity(c);
+    fsglTranslatef(c, 0, -1, -3);
+    fsglRotatef(c, -75, 1, 0, 0);
+    fsglRotatef(c, 30, 0, 0, 1);
+    fsglBindTexture(c, GL_TEXTURE_2D, 5);
+    uint8_t *px = malloc(64 * 64 * 4);
+    for (int i = 0; i < 64 * 64; i++)
+        memcpy(px + 4 * i, col, 4);
+    for (int l = 0, s = 64; s >= 1; l++, s /= 2)
+        fsglTexImage2D(c, GL_TEXTURE_2D, l, GL_RGBA, s, s, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    free(px);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)minf);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_FOOTPRINT_BUDGET_FRAGSIM, M);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_FOOTPRINT_SNAP_FRAGSIM, (GLint)snap);
+    fsglTexEnvi(c, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    fsglEnable(c, GL_TEXTURE_2D);
+    fsglBegin(c, GL_QUADS);
+    fsglTexCoord2f(c, 0, 0);
+    fsglVertex3f(c, -20, -20, 0);
+    fsglTexCoord2f(c, 40, 0);
+    fsglVertex3f(c, 20, -20, 0);
+    fsglTexCoord2f(c, 40, 40);
+    fsglVertex3f(c, 20, 20, 0);
+    fsglTexCoord2f(c, 0, 40);
+    fsglVertex3f(c, -20, 20, 0);
+    fsglEnd(c);
+}
+
+TEST(gl_constant_texture_renders_its_colour)
+{
+    static const uint8_t col[4] = {200, 120, 40, 255};
+    static const GLenum filters[2] = {GL_FOOTPRINT_FRAGSIM, GL_FOOTPRINT_HYBRID_FRAGSIM};
+    static const GLenum snaps[2] = {GL_FOOTPRINT_SNAP_INTEGER_FRAGSIM, GL_FOOTPRINT_SNAP_MIDPOINT_FRAGSIM};
+    for (int fi = 0; fi < 2; fi++)
+        for (int M = 8; M <= 64; M *= 2)
+            for (int si = 0; si < 2; si++) {
+                fs_context *c = fs_context_create(NULL, 64, 48);
+                REQUIRE(c);
+                draw_plane(c, filters[fi], M, snaps[si], col);
+                CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+                long textured = 0, wrong = 0;
+                for (int i = 0; i < 64 * 48; i++) {
+                    const uint8_t *p = c->fb.color + 4 * i;
+                    if (p[0] == 0 && p[1] == 0 && p[2] == 255)
+                        continue; /* background */
+                    textured++;
+                    wrong += memcmp(p, col, 4) != 0;
+                }
+                const fs_stats *st = &c->stats;
+                uint64_t classes = st->tex_fp_bilinear0 + st->tex_fp_trilinear + st->tex_fp_footprint +
+                                   st->tex_fp_footprint_2m;
+                CHECK(textured > 1000);
+                CHECK_EQ_INT(wrong, 0);
+                /* Minified pixels go through the filter, magnified ones
+                 * (near the viewer) through the mag filter. */
+                CHECK(classes > 0 && classes <= (uint64_t)textured);
+                CHECK(st->tex_fp_footprint + st->tex_fp_footprint_2m > 0);
+                CHECK(st->tex_fp_rom_lookups > 0);
+                CHECK(st->tex_fp_texels >= 4 * classes);
+                if (wrong || !(st->tex_fp_footprint > 0))
+                    fprintf(stderr, "  filter %d M %d snap %d: %ld textured, %ld wrong, classes %llu/%llu/%llu/%llu\n", fi,
+                            M, si, textured, wrong, (unsigned long long)st->tex_fp_bilinear0,
+                            (unsigned long long)st->tex_fp_trilinear, (unsigned long long)st->tex_fp_footprint,
+                            (unsigned long long)st->tex_fp_footprint_2m);
+                fs_context_destroy(c);
+            }
+}
+
 TEST_LIST = {
     TEST_ENTRY(rom_vectors_sum_to_triangle_area),
     TEST_ENTRY(rom_weights_match_point_sampling),
@@ -498,6 +633,8 @@ TEST_LIST = {
     TEST_ENTRY(degenerate_footprints_are_defined),
     TEST_ENTRY(hybrid_selects_by_shape),
     TEST_ENTRY(table_4_3_counts),
+    TEST_ENTRY(gl_parameters_and_errors),
+    TEST_ENTRY(gl_constant_texture_renders_its_colour),
     TEST_END,
 };
 

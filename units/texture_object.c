@@ -8,7 +8,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include "texture_priv.h"
+#include "footprint.h"
 #include "../pipeline/context.h"
+#include "../glext/GL_FRAGSIM_footprint_filter.h"
 
 static void object_defaults(fs_tex_object *t, GLuint name)
 {
@@ -19,6 +21,8 @@ static void object_defaults(fs_tex_object *t, GLuint name)
     t->mag_filter = GL_LINEAR;
     t->wrap_s = t->wrap_t = GL_REPEAT;
     t->priority = 1.0f;
+    t->footprint_budget = 16;
+    t->footprint_snap = GL_FOOTPRINT_SNAP_INTEGER_FRAGSIM;
     t->complete = -1;
 }
 
@@ -53,6 +57,9 @@ void fs_texture_free(fs_context *c)
         free(s->objects[i]);
     }
     free(s->objects);
+    for (int m = 0; m < 4; m++)
+        for (int k = 0; k < 4; k++)
+            fs_footprint_filter_destroy(s->footprint[m][k / 2][k % 2]);
     free(s);
     c->texture = NULL;
 }
@@ -560,6 +567,7 @@ static bool is_min_filter(GLenum f)
     switch (f) {
     case GL_NEAREST: case GL_LINEAR: case GL_NEAREST_MIPMAP_NEAREST: case GL_LINEAR_MIPMAP_NEAREST:
     case GL_NEAREST_MIPMAP_LINEAR: case GL_LINEAR_MIPMAP_LINEAR:
+    case GL_FOOTPRINT_FRAGSIM: case GL_FOOTPRINT_HYBRID_FRAGSIM:
         return true;
     default:
         return false;
@@ -613,6 +621,19 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
         return;
     case GL_TEXTURE_PRIORITY:
         t->priority = vals[0] < 0.0f ? 0.0f : vals[0] > 1.0f ? 1.0f : vals[0];
+        return;
+    case GL_TEXTURE_FOOTPRINT_BUDGET_FRAGSIM:
+        /* GL_FRAGSIM_footprint_filter: ROMs exist for these M only. */
+        if (vals[0] != 8.0f && vals[0] != 16.0f && vals[0] != 32.0f && vals[0] != 64.0f) {
+            fs_error(c, GL_INVALID_VALUE);
+            return;
+        }
+        t->footprint_budget = (int)vals[0];
+        return;
+    case GL_TEXTURE_FOOTPRINT_SNAP_FRAGSIM:
+        if (e != GL_FOOTPRINT_SNAP_INTEGER_FRAGSIM && e != GL_FOOTPRINT_SNAP_MIDPOINT_FRAGSIM)
+            break;
+        t->footprint_snap = e;
         return;
     case GL_TEXTURE_MIN_LOD: case GL_TEXTURE_MAX_LOD: case GL_TEXTURE_BASE_LEVEL: case GL_TEXTURE_MAX_LEVEL:
     case GL_GENERATE_MIPMAP:
@@ -795,6 +816,9 @@ static int tex_parameter_value(const fs_tex_object *t, GLenum pname, float v[4],
     case GL_TEXTURE_BASE_LEVEL: v[0] = 0.0f; return 1;
     case GL_TEXTURE_MAX_LEVEL: v[0] = 1000.0f; return 1;
     case GL_GENERATE_MIPMAP: v[0] = 0.0f; return 1;
+    /* GL_FRAGSIM_footprint_filter */
+    case GL_TEXTURE_FOOTPRINT_BUDGET_FRAGSIM: v[0] = (float)t->footprint_budget; return 1;
+    case GL_TEXTURE_FOOTPRINT_SNAP_FRAGSIM: v[0] = (float)t->footprint_snap; return 1;
     default: return 0;
     }
 }

@@ -25,6 +25,9 @@ typedef struct fs_tex_object {
     GLenum min_filter, mag_filter, wrap_s, wrap_t;
     float border[4];
     float priority;
+    /* GL_FRAGSIM_footprint_filter: the budget M and the corner snapping. */
+    int footprint_budget;
+    GLenum footprint_snap;
     fs_tex_image level[FS_TEX_MAX_LEVELS];
     /* Completeness (3.8.10), recomputed when images or filters change:
      * -1 unknown, 0 incomplete, 1 complete.  last_level is the highest
@@ -44,6 +47,10 @@ struct fs_texture_state {
     GLenum env_mode;
     float env_color[4];
     uint64_t quads_sampled, quads_incomplete;
+    /* Footprint filters (units/footprint.h) by M (8, 16, 32, 64), snapping
+     * (integer, mid-point) and hybrid, created on first use: each holds
+     * its weighting ROMs. */
+    struct fs_footprint_filter *footprint[4][2][2];
 };
 
 /* Completeness of an object, cached (3.8.10). */

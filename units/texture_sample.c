@@ -29,7 +29,9 @@
 #include <math.h>
 #include <string.h>
 #include "texture_priv.h"
+#include "footprint.h"
 #include "../pipeline/context.h"
+#include "../glext/GL_FRAGSIM_footprint_filter.h"
 
 #ifdef __clang__
 /* Every float operation must round separately, as llvmpipe's do. */
@@ -326,6 +328,75 @@ static void apply_env(const struct fs_texture_state *st, GLenum base, const floa
     }
 }
 
+/* ---- GL_FRAGSIM_footprint_filter (units/footprint.h) ---- */
+
+/* The bound object's complete pyramid, read-only (texture_filter.h). */
+static void tex_mip_view(const fs_tex_object *t, fs_mip_view *v)
+{
+    memset(v, 0, sizeof *v);
+    v->levels = t->last_level + 1;
+    for (int l = 0; l < v->levels; l++) {
+        v->width[l] = t->level[l].width;
+        v->height[l] = t->level[l].height;
+        v->texels[l] = t->level[l].texels;
+    }
+    /* GL_CLAMP has no border colour in the footprint filters (edge texels,
+     * see the extension's Issues). */
+    v->wrap_s = t->wrap_s == GL_REPEAT ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+    v->wrap_t = t->wrap_t == GL_REPEAT ? GL_REPEAT : GL_CLAMP_TO_EDGE;
+}
+
+/* Samples the covered pixels of a minified quad with the footprint filter:
+ * each pixel's footprint is the parallelogram of the quad's differences
+ * along its own row and column (the affine footprint, texture_filter.h). */
+static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const float s[4], const float tt[4])
+{
+    struct fs_texture_state *st = c->texture;
+    int mi = t->footprint_budget == 8 ? 0 : t->footprint_budget == 16 ? 1 : t->footprint_budget == 32 ? 2 : 3;
+    int snap = t->footprint_snap == GL_FOOTPRINT_SNAP_MIDPOINT_FRAGSIM;
+    int hybrid = t->min_filter == GL_FOOTPRINT_HYBRID_FRAGSIM;
+    fs_footprint_filter **fp = &st->footprint[mi][snap][hybrid];
+    if (!*fp) {
+        *fp = fs_footprint_filter_create(t->footprint_budget, snap, hybrid);
+        if (!*fp)
+            fs_error(c, GL_OUT_OF_MEMORY); /* the pixels are sampled trilinearly below */
+    }
+    fs_mip_view mv;
+    tex_mip_view(t, &mv);
+    double w = t->level[0].width, h = t->level[0].height;
+    GLenum base = t->level[0].base_format;
+    for (int i = 0; i < 4; i++) {
+        if (!(q->mask & (1u << i)))
+            continue;
+        /* fs_quad pixels: 0 (x,y), 1 (x+1,y), 2 (x,y+1), 3 (x+1,y+1). */
+        int row = i & 2, col = i & 1;
+        fs_footprint f;
+        memset(&f, 0, sizeof f);
+        f.u = (double)s[i] * w;
+        f.v = (double)tt[i] * h;
+        f.dudx = ((double)s[row + 1] - s[row]) * w;
+        f.dvdx = ((double)tt[row + 1] - tt[row]) * h;
+        f.dudy = ((double)s[col + 2] - s[col]) * w;
+        f.dvdy = ((double)tt[col + 2] - tt[col]) * h;
+        fs_footprint_affine_corners(&f);
+        fs_filter_out o;
+        int lookups = 0;
+        if (*fp)
+            fs_footprint_filter_run(*fp, &mv, &f, &o, &lookups);
+        else
+            fs_filter_footprint(&mv, &f, NULL, &o);
+        switch (o.cls) {
+        case FS_FP_CLASS_BILINEAR0: c->stats.tex_fp_bilinear0++; break;
+        case FS_FP_CLASS_TRILINEAR: c->stats.tex_fp_trilinear++; break;
+        case FS_FP_CLASS_FOOTPRINT: c->stats.tex_fp_footprint++; break;
+        default: c->stats.tex_fp_footprint_2m++; break;
+        }
+        c->stats.tex_fp_texels += (uint64_t)o.texels;
+        c->stats.tex_fp_rom_lookups += (uint64_t)lookups;
+        apply_env(st, base, o.rgba, q->color[i]);
+    }
+}
+
 /* ---- per quad ---- */
 
 void fs_texture_quad(fs_context *c, fs_quad *q)
@@ -349,6 +420,10 @@ void fs_texture_quad(fs_context *c, fs_quad *q)
     lod_result lr;
     select_lod(t, s, tt, &lr);
     GLenum mf = t->min_filter;
+    if ((mf == GL_FOOTPRINT_FRAGSIM || mf == GL_FOOTPRINT_HYBRID_FRAGSIM) && lr.minified) {
+        footprint_quad(c, t, q, s, tt);
+        return;
+    }
     GLenum img_filter = (mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR)
                             ? GL_LINEAR : GL_NEAREST;
     bool mip_linear = mf == GL_NEAREST_MIPMAP_LINEAR || mf == GL_LINEAR_MIPMAP_LINEAR;
