@@ -11,12 +11,14 @@
  *
  * The spec (paths relative to the working directory):
  *   [sweep]   name, mode (functional|cycle|sampled), base_config, out, jobs
- *   [traces]  trace = FILE (repeatable); scene = NAME[:SCALE] (generated
+ *   [traces]  trace = FILE (repeatable; the CSV names it by its file name
+ *             without directory and .trace); scene = NAME[:SCALE] (generated
  *             with scenegen into OUT/traces/ when missing or older than it)
  *   [axis.SECTION.KEY] values = v1, v2, ...   (a key of `fragsim config --list`)
  *   [axis.config]      values = a.ini, b.ini  (the --config file itself)
  *   [output]  stats = totals.NAME, ... (JSON paths in the statistics file);
- *             cycles = JSON path of the cycle count (default totals.cycles)
+ *             cycles = JSON path of the cycle count (default
+ *             cycle.totals.cycles, what --mode cycle|sampled writes)
  *   [plot.NAME] x, y (CSV column names), series (optional column), title,
  *             xlabel, ylabel, logx, logy; y is the mean over rows sharing
  *             (series, x)
@@ -101,6 +103,8 @@ static void usage(FILE *f)
             "  -j N               parallel jobs (default: [sweep] jobs, else 2)\n"
             "  --out DIR          output directory (default: [sweep] out, else out/sweeps/NAME)\n"
             "  --runner R         auto (default), parallel or builtin\n"
+            "  --mode M           replay mode of every job, over [sweep] mode:\n"
+            "                     functional, cycle or sampled\n"
             "  --no-run           write the job list and cluster scripts only\n"
             "  --gather           gather and plot results already in OUT, run nothing\n"
             "  --run-job JOBS N   run job N of a job list (what every runner calls)\n"
@@ -293,7 +297,13 @@ static int on_spec_value(void *user, const char *section, const char *name, cons
         if (strlen(value) >= CELL_LEN - 16)
             return SPEC_ERR("traces.%s: longer than %d characters", name, CELL_LEN - 17);
         if (!strcmp(name, "trace")) {
-            fmt(t->label, sizeof t->label, "%s", value);
+            /* The CSV names a file trace by its name without directory and
+             * ".trace", short enough for tables and plot keys. */
+            const char *base = strrchr(value, '/');
+            fmt(t->label, sizeof t->label, "%s", base ? base + 1 : value);
+            size_t ll = strlen(t->label);
+            if (ll > 6 && !strcmp(t->label + ll - 6, ".trace"))
+                t->label[ll - 6] = '\0';
             absolute(value, t->path, sizeof t->path);
         } else if (!strcmp(name, "scene")) {
             const char *colon = strchr(value, ':');
@@ -404,7 +414,7 @@ static int load_spec(spec *s, const char *path)
     memset(s, 0, sizeof *s);
     s->path = path;
     fmt(s->mode, sizeof s->mode, "functional");
-    fmt(s->cycles_path, sizeof s->cycles_path, "totals.cycles");
+    fmt(s->cycles_path, sizeof s->cycles_path, "cycle.totals.cycles");
     fmt(s->fragments_path, sizeof s->fragments_path, "totals.fragments_generated");
     int line = ini_parse(path, on_spec_value, s);
     if (line == -1) {
@@ -1090,7 +1100,8 @@ static int draw_plot(const spec *s, const plot *p, const char *out, row *rows, l
     f = fopen(gp, "w");
     if (!f)
         return -1;
-    fprintf(f, "set terminal pngcairo size 640,400 font 'sans,10'\nset output '%s'\n", png);
+    /* noenhanced: names such as occlusion_t16 are text, not subscripts */
+    fprintf(f, "set terminal pngcairo size 720,400 font 'sans,10' noenhanced\nset output '%s'\n", png);
     fprintf(f, "set title \"%s\"\nset xlabel \"%s\"\nset ylabel \"%s\"\nset grid\nset key outside right\n",
             p->title[0] ? p->title : p->name, p->xlabel[0] ? p->xlabel : p->x, p->ylabel[0] ? p->ylabel : p->y);
     if (p->logx)
@@ -1102,13 +1113,15 @@ static int draw_plot(const spec *s, const plot *p, const char *out, row *rows, l
     fprintf(f, "plot ");
     for (int si = 0; si < nseries; si++) {
         char label[2 * NAME_LEN + 4];
-        if (cs >= 0)
+        if (cs >= 0 && !strcmp(p->series, "trace"))
+            fmt(label, sizeof label, "%s", series[si]);
+        else if (cs >= 0)
             fmt(label, sizeof label, "%s=%s", p->series, series[si]);
         else
             fmt(label, sizeof label, "%s", p->y);
         for (char *c = label; *c; c++)
-            if (*c == '"' || *c == '_')
-                *c = *c == '"' ? '\'' : ' ';
+            if (*c == '"')
+                *c = '\'';
         fprintf(f, "%s'%s' index %d using 1:2%s with linespoints title \"%s\"", si ? ", \\\n     " : "", dat,
                 si, numeric_x ? "" : ":xtic(3)", label);
     }
@@ -1182,23 +1195,24 @@ static int make_scenes(spec *s, const char *out)
 
 int fs_cli_sweep(int argc, char **argv)
 {
-    const char *spec_path = NULL, *out_opt = NULL, *runner = "auto";
+    const char *spec_path = NULL, *out_opt = NULL, *runner = "auto", *mode_opt = NULL;
     int jobs = 0;
     bool no_run = false, gather_only = false;
-    for (int i = 0; i < argc; i++) {
+    for (int i = 0; i < argc;) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
+        i++; /* past the option; past its value too where it takes one */
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
             usage(stdout);
             return 0;
         } else if (!strcmp(a, "--run-job")) {
             char *end;
-            long n = i + 2 < argc ? strtol(argv[i + 2], &end, 10) : -1;
+            long n = i + 1 < argc ? strtol(argv[i + 1], &end, 10) : -1;
             if (!v || n < 0 || *end) {
                 fprintf(stderr, "%s: --run-job needs JOBS.tsv and a job number\n", prog);
                 return 2;
             }
             return run_job(v, n);
-        } else if (!strcmp(a, "-j") || !strcmp(a, "--out") || !strcmp(a, "--runner")) {
+        } else if (!strcmp(a, "-j") || !strcmp(a, "--out") || !strcmp(a, "--runner") || !strcmp(a, "--mode")) {
             if (!v) {
                 fprintf(stderr, "%s: %s needs a value\n", prog, a);
                 return 2;
@@ -1214,6 +1228,13 @@ int fs_cli_sweep(int argc, char **argv)
                 jobs = (int)j;
             } else if (!strcmp(a, "--out"))
                 out_opt = v;
+            else if (!strcmp(a, "--mode")) {
+                if (strcmp(v, "functional") && strcmp(v, "cycle") && strcmp(v, "sampled")) {
+                    fprintf(stderr, "%s: --mode '%s': expected functional, cycle or sampled\n", prog, v);
+                    return 2;
+                }
+                mode_opt = v;
+            }
             else if (strcmp(v, "auto") && strcmp(v, "parallel") && strcmp(v, "builtin")) {
                 fprintf(stderr, "%s: --runner '%s': expected auto, parallel or builtin\n", prog, v);
                 return 2;
@@ -1242,6 +1263,8 @@ int fs_cli_sweep(int argc, char **argv)
         free(s);
         return 2;
     }
+    if (mode_opt)
+        fmt(s->mode, sizeof s->mode, "%s", mode_opt);
     long n = job_count(s);
     int rc = 2;
     row *rows = NULL;

@@ -110,7 +110,7 @@ values = 2
 EOF
     "$FRAGSIM" sweep "$WORK/f.ini" >"$WORK/o" 2>"$WORK/e"
     [ $? -eq 1 ] || fail "expected exit 1"
-    grep -qF "job 1 failed (exit 1): trace=$WORK/broken.trace occlusion.engines=2; log: $WORK/f/jobs/1/log.txt" "$WORK/e" ||
+    grep -qF "job 1 failed (exit 1): trace=broken occlusion.engines=2; log: $WORK/f/jobs/1/log.txt" "$WORK/e" ||
         fail "report: $(cat "$WORK/e")"
     [ -s "$WORK/f/jobs/1/log.txt" ] || fail "empty log"
     [ "$(sed -n 2p "$WORK/f/results.csv" | cut -d, -f1,2,4)" = "0,demo:small,ok" ] || fail "job 0: $(cat "$WORK/f/results.csv")"
