@@ -41,7 +41,7 @@ FRAGSIM := $(BUILD)/fragsim
 # Link the archive whole so that every executor overrides its weak fallback.
 WHOLE_LIB = -Wl,--whole-archive $(LIB) -Wl,--no-whole-archive
 
-.PHONY: all deps test run sanitize bench golden docs clean scenes tests shim
+.PHONY: all deps test run sanitize bench golden docs clean scenes tests shim study-filters
 all: $(LIB) $(FRAGSIM) tests scenes shim
 
 deps:
@@ -91,6 +91,11 @@ sanitize:
 
 bench: deps all
 	@scripts/bench.sh $(BUILD)
+
+# The texture filter quality/cost study: regenerates docs/texture_filtering.md
+# (large outputs in out/study-filters).
+study-filters: $(FRAGSIM)
+	@scripts/study_filters.sh $(BUILD)
 
 golden: all
 	@scripts/golden.sh $(BUILD)

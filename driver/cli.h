@@ -11,4 +11,6 @@
 int fs_cli_sweep(int argc, char **argv);
 /* fragsim rom: Table 4.3 of Huettner 1999 next to fragsim's weighting ROMs (driver/cli_rom.c) */
 int fs_cli_rom(int argc, char **argv);
+/* fragsim study-filters: texture filter quality/cost study (driver/cli_study_filters.c) */
+int fs_cli_study_filters(int argc, char **argv);
 #endif

@@ -710,6 +710,7 @@ static const struct cli_command {
     {"bench", "TRACE", "time a replay on the model or on OSMesa (used by `make bench`)", run_bench},
     {"config", "--list", "list every configuration key with its default and meaning", run_config},
     {"stats", "--list", "list every statistic with its unit and meaning", run_stats},
+    {"study-filters", "[--out DIR]", "texture filter quality/cost study (used by `make study-filters`)", fs_cli_study_filters},
     {"rom", "[--markdown]", "fast-footprint weighting ROM sizes: Table 4.3 of Huettner 1999 next to fragsim's", fs_cli_rom},
     {"sweep", "SPEC.ini", "run a grid of configurations x traces as jobs; CSV and plots", fs_cli_sweep},
 };
