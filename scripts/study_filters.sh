@@ -180,9 +180,10 @@ Every filter's full image, composites, crops, the level data and plots are in
 
 ## Notes
 
-- The hybrid's pixel classes are counted from the filter's own classification
+- The pixel classes are counted from the fast footprint filter's own classification
   (`FS_FP_CLASS_*`): "MIPmapped" is bilinear on level 0 plus trilinear, "footprint-filtered"
-  both footprint classes, "T between M and 2M" the two-step class.  The dissertation's
+  both footprint classes, "T between M and 2M" the two-step class.  The pure filter's rows
+  show the pixels for which even the non-hybrid filter falls back to MIPmapping.  The dissertation's
   counts (Figure 4.35) come from its own scene and its own isotropy threshold, neither of
   which is given; the comparison shows the order of magnitude only.
 - The ground truth integrates the bilinearly reconstructed level 0 with a box over the
