@@ -9,7 +9,9 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "check.h"
+#include "../driver/cli.h"
 #include "../pipeline/context.h"
 #include "../units/footprint.h"
 #include "../units/texture_priv.h"
@@ -623,6 +625,57 @@ TEST(gl_constant_texture_renders_its_colour)
             }
 }
 
+/* docs/footprint_rom.md is what `fragsim rom --markdown` prints now. */
+static char *slurp(FILE *f, long *n)
+{
+    fseek(f, 0, SEEK_END);
+    *n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *b = malloc((size_t)*n + 1);
+    if (b && fread(b, 1, (size_t)*n, f) != (size_t)*n) {
+        free(b);
+        b = NULL;
+    }
+    return b;
+}
+
+TEST(rom_doc_is_current)
+{
+    char bad[] = "--bogus";
+    char *bargv[] = {bad, NULL};
+    CHECK_EQ_INT(fs_cli_rom(1, bargv), 2);
+    FILE *doc = fopen("docs/footprint_rom.md", "rb");
+    if (!doc)
+        SKIP("docs/footprint_rom.md not found (run from the repository root)");
+    long nd = 0, nt = 0;
+    char *want = slurp(doc, &nd);
+    fclose(doc);
+    char path[] = "/tmp/fs_rom_XXXXXX";
+    int fd = mkstemp(path);
+    REQUIRE(fd >= 0 && want);
+    fflush(stdout);
+    int saved = dup(1);
+    dup2(fd, 1);
+    char md[] = "--markdown";
+    char *argv[] = {md, NULL};
+    int rc = fs_cli_rom(1, argv);
+    fflush(stdout);
+    dup2(saved, 1);
+    close(saved);
+    close(fd);
+    FILE *f = fopen(path, "rb");
+    char *got = f ? slurp(f, &nt) : NULL;
+    if (f)
+        fclose(f);
+    unlink(path);
+    CHECK_EQ_INT(rc, 0);
+    REQUIRE(got);
+    if (nd != nt || memcmp(want, got, (size_t)nd) != 0)
+        CHECK_FAIL_("%s", "docs/footprint_rom.md is stale: regenerate with build/fragsim rom --markdown > docs/footprint_rom.md");
+    free(want);
+    free(got);
+}
+
 TEST_LIST = {
     TEST_ENTRY(rom_vectors_sum_to_triangle_area),
     TEST_ENTRY(rom_weights_match_point_sampling),
@@ -633,6 +686,7 @@ TEST_LIST = {
     TEST_ENTRY(degenerate_footprints_are_defined),
     TEST_ENTRY(hybrid_selects_by_shape),
     TEST_ENTRY(table_4_3_counts),
+    TEST_ENTRY(rom_doc_is_current),
     TEST_ENTRY(gl_parameters_and_errors),
     TEST_ENTRY(gl_constant_texture_renders_its_colour),
     TEST_END,
