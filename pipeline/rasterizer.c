@@ -158,6 +158,18 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
                 for (int k = 0; k < 4; k++)                                       \
                     q->tex[i][k] = PLANE_AT(&s->tex[k], px, py);                  \
             }                                                                     \
+        }                                                                         \
+    /* Odd heights: the rows that complete llvmpipe's quads (fs_quad). */     \
+    if (s->use_tex && (s->height & 1))                                            \
+        for (int i = 0; i < 4; i++) {                                             \
+            float px = (float)(q->x + (i & 1));                                   \
+            int gy = i < 2 ? q->y - 1 : q->y + 2;                                 \
+            float py = (float)fs_raster_row_to_gl(s->height, gy);                 \
+            float *out = i < 2 ? q->tex_below[i & 1] : q->tex_above[i & 1];       \
+            float oow = s->perspective ? 1.0f / PLANE_AT(&s->w, px, py) : 1.0f;   \
+            for (int k = 0; k < 4; k++)                                           \
+                out[k] = s->perspective ? PLANE_AT(&s->tex[k], px, py) * oow      \
+                                        : PLANE_AT(&s->tex[k], px, py);           \
         }
 
 static void emit_pixels(const fs_prim_setup *s, fs_quad *q, unsigned m, int depth_bits)

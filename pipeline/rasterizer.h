@@ -42,6 +42,12 @@ typedef struct fs_quad {
     uint32_t z[4];      /* depth in the depth buffer's fixed-point units */
     float color[4][4];  /* [pixel][rgba] in [0,1] */
     float tex[4][4];    /* [pixel][strq], interpolated perspective-correctly (not divided by q) */
+    /* Only when the framebuffer height is odd: strq of the two pixels of
+     * the row below the quad (y - 1) and above it (y + 2).  llvmpipe's 2x2
+     * quads are aligned in its y-down frame, so with an odd height they
+     * pair row y with y - 1 and row y + 1 with y + 2; lambda comes from
+     * those pairs (units/texture_sample.c). */
+    float tex_below[2][4], tex_above[2][4];
 } fs_quad;
 
 /* Rasterizer state set by glCullFace, glFrontFace, glPolygonOffset,

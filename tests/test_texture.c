@@ -812,6 +812,92 @@ TEST(queries_vs_osmesa)
     ref.data = mine.data = NULL;
 }
 
+TEST(odd_framebuffer_sizes)
+{
+    /* Lambda comes from 2x2 quads; the model's quads must line up with
+     * llvmpipe's (y-down raster) also when the window height is odd. */
+    static const struct { int w, h; } sizes[] = {{63, 37}, {101, 99}, {1, 1}, {2, 3}, {3, 2}, {17, 64}};
+    static const tex_case base[] = {
+        {"odd_lml_tilt", 64, 1, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_MODULATE, 1.5f, 70, 4, 0, 10, 0},
+        {"odd_nmn_tilt", 64, 1, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.5f, 70, 4, 0, 10, 0},
+        {"odd_nml_rot", 128, 2, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.0f, 30, 3, 0, 33, 0},
+        {"odd_lmn_checker", 256, 0, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_DECAL, 1.5f, 75, 8, 0, 0, 0},
+        {"odd_nmn_small", 16, 1, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 0.3f, 40, 9, 0, 5, 0},
+    };
+    for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++) {
+        printf("  %dx%d:\n", sizes[i].w, sizes[i].h);
+        /* Tiny windows: only the large quads are sure to cover a pixel. */
+        int n = sizes[i].w * sizes[i].h < 64 ? 3 : (int)(sizeof base / sizeof base[0]);
+        run_cases(check_st_, base, n, sizes[i].w, sizes[i].h);
+    }
+}
+
+/* GL 1.5 spec 5.4: glTexImage2D and glTexSubImage2D in a display list take
+ * their pixels by the unpack state at compile time; changing it before
+ * glCallList changes nothing.  Same sequence on OSMesa and the model; the
+ * texels (glGetTexImage) and the drawn image must be identical. */
+static void list_sequence(fs_context *c, uint8_t *texels, size_t tbytes)
+{
+    uint8_t src[8 * 8 * 4];
+    for (size_t i = 0; i < sizeof src; i++)
+        src[i] = (uint8_t)(i * 37u + 11u);
+    G(PixelStorei, GL_UNPACK_ALIGNMENT, 1);
+    G(PixelStorei, GL_UNPACK_ROW_LENGTH, 6);
+    G(NewList, 5, GL_COMPILE);
+    G(BindTexture, GL_TEXTURE_2D, 9);
+    G(TexImage2D, GL_TEXTURE_2D, 0, GL_RGB, 4, 4, 0, GL_RGB, GL_UNSIGNED_BYTE, src);
+    G(PixelStorei, GL_UNPACK_ALIGNMENT, 4); /* not compiled: executes now (5.4) */
+    G(PixelStorei, GL_UNPACK_ROW_LENGTH, 3);
+    G(TexSubImage2D, GL_TEXTURE_2D, 0, 1, 1, 2, 3, GL_LUMINANCE, GL_UNSIGNED_BYTE, src + 100);
+    G0(EndList);
+    /* Another unpack state at execution time. */
+    G(PixelStorei, GL_UNPACK_ALIGNMENT, 8);
+    G(PixelStorei, GL_UNPACK_ROW_LENGTH, 0);
+    G(CallList, 5);
+    G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    G(TexEnvi, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    G(Enable, GL_TEXTURE_2D);
+    G(MatrixMode, GL_PROJECTION);
+    G(Ortho, 0, 8, 0, 8, -1, 1);
+    G(Begin, GL_QUADS);
+    G(TexCoord2f, 0, 0); G(Vertex2f, 0, 0);
+    G(TexCoord2f, 1, 0); G(Vertex2f, 8, 0);
+    G(TexCoord2f, 1, 1); G(Vertex2f, 8, 8);
+    G(TexCoord2f, 0, 1); G(Vertex2f, 0, 8);
+    G0(End);
+    G(PixelStorei, GL_PACK_ALIGNMENT, 1);
+    memset(texels, 0xA5, tbytes);
+    G(GetTexImage, GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, texels);
+}
+
+TEST(display_list_unpack_state)
+{
+    uint8_t ref[8 * 8 * 4], ref_tex[4 * 4 * 4 + 16], mine_tex[4 * 4 * 4 + 16];
+    memset(ref, 0, sizeof ref);
+    OSMesaContext oc = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
+    REQUIRE(oc && OSMesaMakeCurrent(oc, ref, GL_UNSIGNED_BYTE, 8, 8));
+    list_sequence(NULL, ref_tex, sizeof ref_tex);
+    GLenum ref_err = glGetError();
+    glFinish();
+    OSMesaDestroyContext(oc);
+    fs_context *c = fs_context_create(NULL, 8, 8);
+    REQUIRE(c);
+    list_sequence(c, mine_tex, sizeof mine_tex);
+    CHECK_EQ_INT(fsglGetError(c), ref_err);
+    CHECK_EQ_INT(ref_err, GL_NO_ERROR);
+    CHECK(memcmp(ref_tex, mine_tex, sizeof ref_tex) == 0);
+    CHECK(memcmp(ref, c->fb.color, sizeof ref) == 0);
+    /* And against the closed form: texel (1, 0) of the RGB image is bytes
+     * 3..5 of row 0, texel (0, 1) starts at 6 * 3 (row length 6, alignment 1);
+     * the luminance sub-image row 1 starts 4 bytes after row 0 (row length
+     * 3 bytes, padded to the alignment 4). */
+    CHECK_EQ_INT(mine_tex[4 * 1 + 0], (uint8_t)(3 * 37 + 11));
+    CHECK_EQ_INT(mine_tex[4 * 4 + 0], (uint8_t)(18 * 37 + 11));
+    CHECK_EQ_INT(mine_tex[(2 * 4 + 1) * 4 + 0], (uint8_t)((100 + 4) * 37 + 11));
+    fs_context_destroy(c);
+}
+
 TEST(luminance_uint_readback)
 {
     /* 6.1.4 with table 6.1 and 4.3.2: L = R, and an 8-bit value x becomes
@@ -859,6 +945,8 @@ TEST_LIST = {
     TEST_ENTRY(unpack_and_subimage),
     TEST_ENTRY(queries_vs_osmesa),
     TEST_ENTRY(luminance_uint_readback),
+    TEST_ENTRY(odd_framebuffer_sizes),
+    TEST_ENTRY(display_list_unpack_state),
     TEST_ENTRY(query_errors_change_nothing),
     TEST_END,
 };

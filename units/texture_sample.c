@@ -399,7 +399,7 @@ static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const fl
 
 /* ---- per quad ---- */
 
-void fs_texture_quad(fs_context *c, fs_quad *q)
+static void texture_quad_aligned(fs_context *c, fs_quad *q)
 {
     struct fs_texture_state *st = c->texture;
     fs_tex_object *t = st->bound;
@@ -465,5 +465,39 @@ void fs_texture_quad(fs_context *c, fs_quad *q)
                 tex[k] = (float)v[k] * (1.0f / 255.0f);
         }
         apply_env(st, base, tex, q->color[i]);
+    }
+}
+
+/* llvmpipe's 2x2 quads are aligned in its y-down frame (rasterizer_priv.h):
+ * with an odd framebuffer height they are one row off the model's.  Each
+ * row of the model's quad is then textured as part of the quad llvmpipe
+ * puts it in, completed by the row the rasterizer evaluated next to it
+ * (fs_quad.tex_below/tex_above), so lambda (3.8.8) comes from the same
+ * differences.  quads_sampled then counts llvmpipe's quads. */
+void fs_texture_quad(fs_context *c, fs_quad *q)
+{
+    if (!(c->fb.height & 1) || !c->texture->enabled_2d) {
+        texture_quad_aligned(c, q);
+        return;
+    }
+    for (int half = 0; half < 2; half++) {
+        /* half 0: row y is the upper row of the quad over rows y-1, y;
+         * half 1: row y+1 is the lower row of the quad over y+1, y+2. */
+        unsigned row_mask = half ? (q->mask >> 2) & 3u : q->mask & 3u;
+        if (!row_mask)
+            continue;
+        int own = half ? 0 : 2, other = half ? 2 : 0, src = half ? 2 : 0;
+        fs_quad h = *q;
+        for (int j = 0; j < 2; j++) {
+            memcpy(h.tex[own + j], q->tex[src + j], sizeof h.tex[0]);
+            memcpy(h.tex[other + j], half ? q->tex_above[j] : q->tex_below[j], sizeof h.tex[0]);
+            memcpy(h.color[own + j], q->color[src + j], sizeof h.color[0]);
+            h.z[own + j] = q->z[src + j];
+        }
+        h.y = half ? q->y + 1 : q->y - 1;
+        h.mask = row_mask << own;
+        texture_quad_aligned(c, &h);
+        for (int j = 0; j < 2; j++)
+            memcpy(q->color[src + j], h.color[own + j], sizeof h.color[0]);
     }
 }
