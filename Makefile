@@ -42,6 +42,7 @@ FRAGSIM := $(BUILD)/fragsim
 WHOLE_LIB = -Wl,--whole-archive $(LIB) -Wl,--no-whole-archive
 
 .PHONY: all deps test run sanitize bench golden docs clean scenes tests shim study-filters
+.PHONY: studies study-occlusion study-query-cost study-texture-cache
 all: $(LIB) $(FRAGSIM) tests scenes shim
 
 deps:
@@ -99,6 +100,16 @@ study-filters: $(FRAGSIM)
 
 golden: all
 	@scripts/golden.sh $(BUILD)
+
+# Studies: sweeps of configs/sweeps/NAME.ini into docs/studies/NAME.md and
+# its plots (big outputs in out/studies/).
+studies: study-occlusion study-query-cost study-texture-cache
+study-occlusion: deps all
+	@scripts/sweep_study.sh occlusion $(BUILD)
+study-query-cost: deps all
+	@scripts/sweep_study.sh query_cost $(BUILD)
+study-texture-cache: deps all
+	@scripts/sweep_study.sh texture_cache $(BUILD)
 
 # Reference pages generated from the config and statistics tables.
 docs: all
