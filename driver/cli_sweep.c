@@ -16,7 +16,8 @@
  *             with scenegen into OUT/traces/ when missing or older than it)
  *   [axis.SECTION.KEY] values = v1, v2, ...   (a key of `fragsim config --list`)
  *   [axis.config]      values = a.ini, b.ini  (the --config file itself)
- *   [output]  stats = totals.NAME, ... (JSON paths in the statistics file);
+ *   [output]  stats = totals.NAME, ... (JSON paths in the statistics file;
+ *             the column is the last name); ratio.NAME = COLUMN / COLUMN;
  *             cycles = JSON path of the cycle count (default
  *             cycle.totals.cycles, what --mode cycle|sampled writes)
  *   [plot.NAME] x, y (CSV column names), series (optional column), title,
@@ -44,6 +45,7 @@
 #define MAX_VALUES 64
 #define MAX_TRACES 32
 #define MAX_STATS 32
+#define MAX_RATIOS 8
 #define MAX_PLOTS 8
 #define NAME_LEN 128
 #define PATH_LEN 4096
@@ -79,6 +81,9 @@ typedef struct spec {
     int ntraces;
     char stats[MAX_STATS][NAME_LEN];
     int nstats;
+    /* ratio columns: name = numerator column / denominator column */
+    char ratio_name[MAX_RATIOS][NAME_LEN], ratio_num[MAX_RATIOS][NAME_LEN], ratio_den[MAX_RATIOS][NAME_LEN];
+    int nratios;
     char cycles_path[NAME_LEN], fragments_path[NAME_LEN];
     plot plots[MAX_PLOTS];
     int nplots;
@@ -362,12 +367,27 @@ static int on_spec_value(void *user, const char *section, const char *name, cons
             s->nstats = split_list(value, s->stats, MAX_STATS);
             if (s->nstats < 0)
                 return SPEC_ERR("output.stats: expected 1 to %d comma-separated names", MAX_STATS);
+        } else if (!strncmp(name, "ratio.", 6)) {
+            if (s->nratios == MAX_RATIOS)
+                return SPEC_ERR("more than %d ratio columns", MAX_RATIOS);
+            const char *slash = strchr(value, '/');
+            size_t ln = slash ? (size_t)(slash - value) : 0;
+            int k = s->nratios;
+            if (!slash || ln >= NAME_LEN || strlen(slash + 1) >= NAME_LEN || strlen(name + 6) >= NAME_LEN || !name[6])
+                return SPEC_ERR("output.%s: expected ratio.NAME = COLUMN / COLUMN", name);
+            fmt(s->ratio_name[k], NAME_LEN, "%s", name + 6);
+            memcpy(s->ratio_num[k], value, ln);
+            s->ratio_num[k][ln] = '\0';
+            trim(s->ratio_num[k]);
+            fmt(s->ratio_den[k], NAME_LEN, "%s", slash + 1);
+            trim(s->ratio_den[k]);
+            s->nratios++;
         } else if (!strcmp(name, "cycles"))
             fmt(s->cycles_path, sizeof s->cycles_path, "%s", value);
         else if (!strcmp(name, "fragments"))
             fmt(s->fragments_path, sizeof s->fragments_path, "%s", value);
         else
-            return SPEC_ERR("unknown key output.%s (stats, cycles, fragments)", name);
+            return SPEC_ERR("unknown key output.%s (stats, ratio.NAME, cycles, fragments)", name);
         return 1;
     }
     if (!strncmp(section, "plot.", 5)) {
@@ -440,6 +460,26 @@ static int load_spec(spec *s, const char *path)
         if (!s->plots[i].x[0] || !s->plots[i].y[0]) {
             fprintf(stderr, "%s: %s: [plot.%s] needs x and y\n", prog, path, s->plots[i].name);
             return -1;
+        }
+    }
+    for (int i = 0; i < s->nratios; i++) {
+        const char *need[2] = {s->ratio_num[i], s->ratio_den[i]};
+        for (int k = 0; k < 2; k++) {
+            bool found = !strcmp(need[k], "cycles") || !strcmp(need[k], "fragments") ||
+                         !strcmp(need[k], "run_time_s");
+            for (int a = 0; a < s->naxes && !found; a++)
+                found = !strcmp(need[k], s->axes[a].name);
+            for (int a = 0; a < s->nstats && !found; a++) {
+                const char *b = strrchr(s->stats[a], '.');
+                found = !strcmp(need[k], b ? b + 1 : s->stats[a]);
+            }
+            for (int a = 0; a < i && !found; a++)
+                found = !strcmp(need[k], s->ratio_name[a]);
+            if (!found) {
+                fprintf(stderr, "%s: %s: [output] ratio.%s: no column '%s' (cycles, fragments, run_time_s, an axis, "
+                                "a stat's last name or an earlier ratio)\n", prog, path, s->ratio_name[i], need[k]);
+                return -1;
+            }
         }
     }
     if (s->base_config[0]) {
@@ -903,7 +943,7 @@ static void csv_field(FILE *f, const char *v, bool last)
 }
 
 typedef struct row {
-    char cells[MAX_AXES + MAX_STATS + 8][CELL_LEN];
+    char cells[MAX_AXES + MAX_STATS + MAX_RATIOS + 8][CELL_LEN];
 } row;
 
 /* Gathers every job into OUT/results.csv; rows[] receives the cells for the
@@ -923,6 +963,18 @@ static long gather(const spec *s, const char *out, row *rows, char (*cols)[NAME_
     for (int i = 0; i < s->nstats; i++) {
         const char *b = strrchr(s->stats[i], '.');
         fmt(cols[nc++], NAME_LEN, "%s", b ? b + 1 : s->stats[i]);
+    }
+    int rnum[MAX_RATIOS], rden[MAX_RATIOS];
+    for (int i = 0; i < s->nratios; i++) {
+        /* load_spec checked that both name earlier columns */
+        rnum[i] = rden[i] = 0;
+        for (int k = 0; k < nc; k++) {
+            if (!strcmp(cols[k], s->ratio_num[i]))
+                rnum[i] = k;
+            if (!strcmp(cols[k], s->ratio_den[i]))
+                rden[i] = k;
+        }
+        fmt(cols[nc++], NAME_LEN, "%s", s->ratio_name[i]);
     }
     *ncols = nc;
     char path[PATH_LEN];
@@ -976,6 +1028,17 @@ static long gather(const spec *s, const char *out, row *rows, char (*cols)[NAME_
             r->cells[c++][0] = '\0';
         for (int i = 0; i < s->nstats; i++)
             fmt(r->cells[c++], sizeof r->cells[0], "%s", json && json_get(json, s->stats[i], v, sizeof v) == 0 ? v : "");
+        for (int i = 0; i < s->nratios; i++) {
+            /* empty unless both are numbers and the denominator is not 0;
+             * %.4g keeps the CSV short and the same on every run */
+            char *e1, *e2;
+            const char *a = r->cells[rnum[i]], *b = r->cells[rden[i]];
+            double x = strtod(a, &e1), y = strtod(b, &e2);
+            if (*a && *b && !*e1 && !*e2 && y != 0)
+                fmt(r->cells[c++], sizeof r->cells[0], "%.4g", x / y);
+            else
+                r->cells[c++][0] = '\0';
+        }
         free(json);
         for (int k = 0; k < c; k++)
             csv_field(f, r->cells[k], k == c - 1);
@@ -1332,7 +1395,7 @@ int fs_cli_sweep(int argc, char **argv)
     rows = calloc((size_t)n, sizeof *rows);
     if (!rows)
         goto done;
-    char cols[MAX_AXES + MAX_STATS + 8][NAME_LEN];
+    char cols[MAX_AXES + MAX_STATS + MAX_RATIOS + 8][NAME_LEN];
     int ncols;
     long failed = gather(s, out, rows, cols, &ncols);
     printf("%s: results in %s/results.csv (%ld rows, %ld failed)\n", s->name, out, n, failed);

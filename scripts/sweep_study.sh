@@ -34,8 +34,18 @@ occlusion | query_cost)
 esac
 
 CMD="$BUILD/fragsim sweep $SPEC"
+# Every job runs one snapshot of the programs, even if build/ is relinked
+# while the sweep runs (the sweep finds scenegen next to fragsim).
+mkdir -p out/studies/bin
+for try in 1 2 3 4 5; do # a copy taken while another make relinks is retried
+    cp "$BUILD/fragsim" "$BUILD/scenegen" out/studies/bin/
+    out/studies/bin/fragsim --help >/dev/null 2>&1 && out/studies/bin/scenegen --help >/dev/null 2>&1 && break
+    [ $try -lt 5 ] || { echo "sweep_study: $BUILD/fragsim or scenegen does not run" >&2; exit 1; }
+    sleep 3
+done
+rm -f "$OUT/results.csv"
 set +e
-"$BUILD/fragsim" sweep "$SPEC" >"$OUT.log" 2>&1
+out/studies/bin/fragsim sweep "$SPEC" >"$OUT.log" 2>&1
 rc=$?
 set -e
 cat "$OUT.log"

@@ -8,6 +8,10 @@
 # Slurm script covers every job.
 . "$(dirname "$0")/lib_cli.sh"
 : "${FRAGSIM:?}" "${SCENEGEN:?}"
+# A private copy: other builds relinking build/ must not change the program
+# between the jobs of one sweep (scenegen is found next to fragsim).
+mkdir -p "$WORK/bin" && cp "$FRAGSIM" "$SCENEGEN" "$WORK/bin/" || exit 1
+FRAGSIM=$WORK/bin/fragsim SCENEGEN=$WORK/bin/scenegen
 
 grid_spec() { # OUT -> spec path
     cat >"$WORK/grid.ini" <<EOF
@@ -26,6 +30,7 @@ values = 16,100
 
 [output]
 stats = totals.triangles_rasterized
+ratio.frags_per_tri = fragments / triangles_rasterized
 EOF
     echo "$WORK/grid.ini"
 }
@@ -64,6 +69,10 @@ test_grid_2x2() {
     local f0
     f0=$(grep -A 40 '"totals"' "$out/jobs/0/stats.json" | grep -m1 '"fragments_generated"' | tr -dc 0-9)
     [ "$(sed -n 2p "$out/results.csv" | cut -d, -f7)" = "$f0" ] || fail "fragments column != stats.json ($f0)"
+    # The ratio column, recomputed here from the two columns it divides.
+    tail -n +2 "$out/results.csv" | awk -F, '{ r = sprintf("%.4g", $7 / $9); if (r != $10) { print "row " NR ": " r " != " $10; exit 1 } }' ||
+        fail "ratio column"
+    head -n 1 "$out/results.csv" | grep -q ',triangles_rasterized,frags_per_tri$' || fail "ratio header"
     grep -q -- '--array=0-3$' "$out/slurm.sh" || fail "slurm.sh: $(cat "$out/slurm.sh")"
     grep -q -- '--sshlogin' "$out/parallel_ssh.sh" || fail "no --sshlogin line"
     [ "$(wc -l <"$out/jobs.tsv")" -eq 4 ] || fail "jobs.tsv lines"
