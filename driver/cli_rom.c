@@ -19,6 +19,26 @@ static void usage(FILE *f)
 
 static const char *label(bool ms) { return ms ? "MS" : "I"; }
 
+/* Names the other row of the table whose own grid gives the factors r
+ * prints (border pair or third factor), the likely origin of a copy. */
+static int copied_from(const fs_fp_paper_row *r, bool border, char *buf, size_t n)
+{
+    int len = 0, found = 0;
+    for (int i = 0; i < fs_fp_paper_table_rows; i++) {
+        const fs_fp_paper_row *o = &fs_fp_paper_table[i];
+        if (o == r)
+            continue;
+        int a, b;
+        fs_fp_paper_shape(o, &a, &b);
+        fs_fp_count c;
+        fs_fp_count_shape(a, b, o->midpoint, &c);
+        if ((border && c.pb == r->f1 && c.pb - 1 == r->f2) || (!border && c.p - 2 == r->f3))
+            len += snprintf(buf + len, n - (size_t)len, "%s%s %dx%d", found++ ? ", " : " (the grid of ",
+                            o->midpoint ? "MS" : "I", o->gx, o->gy);
+    }
+    return len + snprintf(buf + len, n - (size_t)len, "%s;", found ? ")" : "");
+}
+
 /* Why a row's factors differ from its own grid (the numbers are computed,
  * the sentences name the pattern). */
 static void explain_w(const fs_fp_paper_row *r, const fs_fp_count *c, char *buf, size_t n)
@@ -28,12 +48,16 @@ static void explain_w(const fs_fp_paper_row *r, const fs_fp_count *c, char *buf,
         return;
     }
     int len = snprintf(buf, n, "no:");
-    if (r->f1 != c->pb || r->f2 != c->pb - 1)
-        len += snprintf(buf + len, n - (size_t)len, " %lld*%lld border factors where the grid has %lld border positions;",
+    if (r->f1 != c->pb || r->f2 != c->pb - 1) {
+        len += snprintf(buf + len, n - (size_t)len, " %lld*%lld border factors where the grid has %lld border positions",
                         r->f1, r->f2, c->pb);
-    if (r->f3 != c->p - 2)
-        snprintf(buf + len, n - (size_t)len, " third factor %lld = %lld-2, the grid has %lld positions;", r->f3, r->f3 + 2,
-                 c->p);
+        len += copied_from(r, true, buf + len, n - (size_t)len);
+    }
+    if (r->f3 != c->p - 2) {
+        len += snprintf(buf + len, n - (size_t)len, " third factor %lld = %lld-2 where the grid has %lld positions", r->f3,
+                        r->f3 + 2, c->p);
+        copied_from(r, false, buf + len, n - (size_t)len);
+    }
 }
 
 int fs_cli_rom(int argc, char **argv)
@@ -69,7 +93,7 @@ int fs_cli_rom(int argc, char **argv)
         printf("%-3s %-9s %-32s %-32s %-8s %10s %12s %-7s %12s\n", "M", "table", "paper: size of W", "fragsim: size of W",
                "W agrees", "paper ptrs", "p+p(p-1)+..", "agrees", "fragsim ptrs");
     }
-    char why[6][320];
+    char why[6][400];
     int nwhy = 0;
     for (int i = 0; i < fs_fp_paper_table_rows; i++) {
         const fs_fp_paper_row *r = &fs_fp_paper_table[i];
@@ -77,7 +101,7 @@ int fs_cli_rom(int argc, char **argv)
         fs_fp_paper_shape(r, &a, &b);
         fs_fp_count c;
         fs_fp_count_shape(a, b, r->midpoint, &c);
-        char tab[32], pw[64], ow[64], agree[256];
+        char tab[32], pw[64], ow[64], agree[360];
         snprintf(tab, sizeof tab, "%s %dx%d", label(r->midpoint), r->gx, r->gy);
         snprintf(pw, sizeof pw, "%lld*%lld*%lld*%d = %lld", r->f1, r->f2, r->f3, r->M, r->weights);
         snprintf(ow, sizeof ow, "%lld*%lld*%lld*%d = %lld", c.pb, c.pb - 1, c.p - 2, r->M, c.weights);
@@ -111,6 +135,13 @@ int fs_cli_rom(int argc, char **argv)
            "bytes.\n",
            item, i99.weights, i99.pointers_full, i99.weights + 4 * i99.pointers_full);
 
+    printf("%sThe border reduction itself (4.3.4: \"two corners always lie on the border\") holds for the\n"
+           "  quadrilateral, not for both triangles: they share the splitting diagonal, and T can be placed\n"
+           "  so that an x-extreme and a y-extreme corner lie on its border, but these need not be the\n"
+           "  diagonal's ends (a diamond-shaped footprint).  fragsim then filters each triangle in its own\n"
+           "  array, two steps and up to 2M texels (docs/extensions/footprint_filter.txt, Issue 2); the\n"
+           "  statistic tex_fp_footprint_2m and the filter study count those pixels.\n",
+           item);
     printf("\n%sThe ROMs fragsim generates (8-bit weights, 4-byte pointers)\n\n", h1);
     if (md)
         printf("Arrays a x b = M with a <= b (b x a reads the same ROM transposed); one texel wide only\n"

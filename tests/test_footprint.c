@@ -9,7 +9,9 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "check.h"
+#include "../driver/cli.h"
 #include "../pipeline/context.h"
 #include "../units/footprint.h"
 #include "../units/texture_priv.h"
@@ -623,6 +625,124 @@ TEST(gl_constant_texture_renders_its_colour)
             }
 }
 
+/* docs/footprint_rom.md is what `fragsim rom --markdown` prints now. */
+static char *slurp(FILE *f, long *n)
+{
+    fseek(f, 0, SEEK_END);
+    *n = ftell(f);
+    fseek(f, 0, SEEK_SET);
+    char *b = malloc((size_t)*n + 1);
+    if (b && fread(b, 1, (size_t)*n, f) != (size_t)*n) {
+        free(b);
+        b = NULL;
+    }
+    return b;
+}
+
+TEST(rom_doc_is_current)
+{
+    char bad[] = "--bogus";
+    char *bargv[] = {bad, NULL};
+    CHECK_EQ_INT(fs_cli_rom(1, bargv), 2);
+    FILE *doc = fopen("docs/footprint_rom.md", "rb");
+    if (!doc)
+        SKIP("docs/footprint_rom.md not found (run from the repository root)");
+    long nd = 0, nt = 0;
+    char *want = slurp(doc, &nd);
+    fclose(doc);
+    char path[] = "/tmp/fs_rom_XXXXXX";
+    int fd = mkstemp(path);
+    REQUIRE(fd >= 0 && want);
+    fflush(stdout);
+    int saved = dup(1);
+    dup2(fd, 1);
+    char md[] = "--markdown";
+    char *argv[] = {md, NULL};
+    int rc = fs_cli_rom(1, argv);
+    fflush(stdout);
+    dup2(saved, 1);
+    close(saved);
+    close(fd);
+    FILE *f = fopen(path, "rb");
+    char *got = f ? slurp(f, &nt) : NULL;
+    if (f)
+        fclose(f);
+    unlink(path);
+    CHECK_EQ_INT(rc, 0);
+    REQUIRE(got);
+    if (nd != nt || memcmp(want, got, (size_t)nd) != 0)
+        CHECK_FAIL_("%s", "docs/footprint_rom.md is stale: regenerate with build/fragsim rom --markdown > docs/footprint_rom.md");
+    free(want);
+    free(got);
+}
+
+/* Through GL: an orthographic quad whose pixels each cover exactly 4 x 1
+ * level-0 texels (u = 4x + 2, v = y + 0.5 at pixel centres) renders the
+ * brute-force box average of those texels, within the 8-bit weights and
+ * the colour buffer's rounding. */
+TEST(gl_whole_texel_footprints_are_box_averages)
+{
+    enum { TW = 128, TH = 16, VW = 32, VH = 16 };
+    uint8_t *img = malloc(TW * TH * 4);
+    REQUIRE(img);
+    uint32_t seed = 4242;
+    for (int i = 0; i < TW * TH * 4; i++) {
+        seed = seed * 1664525u + 1013904223u;
+        img[i] = (uint8_t)(seed >> 24);
+    }
+    fs_mip_owned mip;
+    REQUIRE(fs_mip_build_box(&mip, img, TW, TH, GL_REPEAT) == 0);
+    static const GLenum filters[2] = {GL_FOOTPRINT_FRAGSIM, GL_FOOTPRINT_HYBRID_FRAGSIM};
+    for (int fi = 0; fi < 2; fi++)
+        for (int M = 8; M <= 32; M *= 2) {
+            fs_context *c = fs_context_create(NULL, VW, VH);
+            REQUIRE(c);
+            fsglViewport(c, 0, 0, VW, VH);
+            fsglMatrixMode(c, GL_PROJECTION);
+            fsglLoadIdentity(c);
+            fsglOrtho(c, 0, VW, 0, VH, -1, 1);
+            fsglMatrixMode(c, GL_MODELVIEW);
+            fsglLoadIdentity(c);
+            fsglBindTexture(c, GL_TEXTURE_2D, 1);
+            for (int l = 0; l < mip.view.levels; l++)
+                fsglTexImage2D(c, GL_TEXTURE_2D, l, GL_RGBA, mip.view.width[l], mip.view.height[l], 0, GL_RGBA,
+                               GL_UNSIGNED_BYTE, mip.view.texels[l]);
+            fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)filters[fi]);
+            fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_FOOTPRINT_BUDGET_FRAGSIM, M);
+            fsglTexEnvi(c, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+            fsglEnable(c, GL_TEXTURE_2D);
+            fsglBegin(c, GL_QUADS);
+            fsglTexCoord2f(c, 0, 0);
+            fsglVertex2f(c, 0, 0);
+            fsglTexCoord2f(c, 1, 0);
+            fsglVertex2f(c, VW, 0);
+            fsglTexCoord2f(c, 1, 1);
+            fsglVertex2f(c, VW, VH);
+            fsglTexCoord2f(c, 0, 1);
+            fsglVertex2f(c, 0, VH);
+            fsglEnd(c);
+            CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+            int worst = 0;
+            for (int y = 0; y < VH; y++)
+                for (int x = 0; x < VW; x++)
+                    for (int ch = 0; ch < 4; ch++) {
+                        int sum = 0;
+                        for (int k = 0; k < 4; k++)
+                            sum += img[(y * TW + 4 * x + k) * 4 + ch];
+                        int d = abs((int)c->fb.color[(y * VW + x) * 4 + ch] - (int)lround(sum / 4.0));
+                        worst = d > worst ? d : worst;
+                    }
+            CHECK(worst <= 1);
+            CHECK_EQ_INT(c->stats.tex_fp_footprint, VW * VH);
+            CHECK_EQ_INT(c->stats.tex_fp_texels, (uint64_t)VW * VH * M);
+            if (worst > 1)
+                fprintf(stderr, "  filter %d M %d: largest difference %d\n", fi, M, worst);
+            fs_context_destroy(c);
+        }
+    fs_mip_free(&mip);
+    free(img);
+}
+
 TEST_LIST = {
     TEST_ENTRY(rom_vectors_sum_to_triangle_area),
     TEST_ENTRY(rom_weights_match_point_sampling),
@@ -633,8 +753,10 @@ TEST_LIST = {
     TEST_ENTRY(degenerate_footprints_are_defined),
     TEST_ENTRY(hybrid_selects_by_shape),
     TEST_ENTRY(table_4_3_counts),
+    TEST_ENTRY(rom_doc_is_current),
     TEST_ENTRY(gl_parameters_and_errors),
     TEST_ENTRY(gl_constant_texture_renders_its_colour),
+    TEST_ENTRY(gl_whole_texel_footprints_are_box_averages),
     TEST_END,
 };
 

@@ -28,8 +28,10 @@
  *   diagonal (both triangles with the same orientation); either diagonal of
  *   a convex one gives the same coverage.
  * - Collapse.  A footprint thinner than a texel of level lambda may snap to
- *   zero area; then finer levels are tried while the corners still fit,
- *   and failing that the pixel is filtered trilinearly (class TRILINEAR).
+ *   zero area; then its corners are snapped outward (away from its centre,
+ *   so the snapped quadrilateral contains it, at least a texel thick) at
+ *   the first level from lambda on where that fits; failing that the pixel
+ *   is filtered trilinearly (class TRILINEAR).
  * - Bad input (NaN/Inf corners, huge coordinates) is filtered trilinearly
  *   at GL's isotropic level, which fs_mip_trilinear defines for any input.
  */
@@ -205,20 +207,36 @@ static bool tri_degenerate(const int *X, const int *Y, const int t[3])
     return orient(X, Y, t[0], t[1], t[2]) == 0;
 }
 
+/* Snaps one coordinate.  Outward snapping (the collapse fallback) moves
+ * the corner to the nearest position away from the footprint's centre c,
+ * so that the snapped quadrilateral contains the footprint. */
+static int snap(double x, double c, bool midpoint, bool outward)
+{
+    /* 4.3.4: integer positions by rounding; mid-points of the texel a
+     * corner lies in, a corner on a grid line going up and right (floor
+     * does both). */
+    if (!outward)
+        return (int)(midpoint ? floor(x) : floor(x + 0.5));
+    double o = midpoint ? 0.5 : 0.0;
+    return (int)(x >= c ? ceil(x - o) : floor(x - o));
+}
+
 static int try_level(const fs_footprint_filter *f, const fs_mip_view *m, const fs_footprint *fp, int lam,
-                     level_result *res)
+                     bool outward, level_result *res)
 {
     double sx = (double)m->width[lam] / m->width[0], sy = (double)m->height[lam] / m->height[0];
     int X[4], Y[4];
+    double cx = 0.0, cy = 0.0;
+    for (int k = 0; k < 4; k++) {
+        cx += 0.25 * fp->corner_u[k] * sx;
+        cy += 0.25 * fp->corner_v[k] * sy;
+    }
     for (int k = 0; k < 4; k++) {
         double x = fp->corner_u[k] * sx, y = fp->corner_v[k] * sy;
         if (!(fabs(x) < 1e8) || !(fabs(y) < 1e8))
             return LEVEL_NOFIT;
-        /* 4.3.4: integer positions by rounding; mid-points of the texel a
-         * corner lies in, a corner on a grid line going up and right
-         * (floor does both). */
-        X[k] = (int)(f->midpoint ? floor(x) : floor(x + 0.5));
-        Y[k] = (int)(f->midpoint ? floor(y) : floor(y + 0.5));
+        X[k] = snap(x, cx, f->midpoint, outward);
+        Y[k] = snap(y, cy, f->midpoint, outward);
     }
     int x0 = X[0], x1 = X[0], y0 = Y[0], y1 = Y[0];
     for (int k = 1; k < 4; k++) {
@@ -418,18 +436,23 @@ void fs_footprint_filter_run(const fs_footprint_filter *f, const fs_mip_view *m,
     level_result res;
     int used = -1;
     for (int lam = lam0; lam <= top && used < 0; lam++) {
-        int r = try_level(f, m, fp, lam, &res);
+        int r = try_level(f, m, fp, lam, false, &res);
         if (r == LEVEL_OK && evaluate(f, m, lam, &res, out->rgba, &out->texels)) {
             used = lam;
         } else if (r != LEVEL_NOFIT) {
-            /* Collapsed: thicker at finer levels, while it still fits. */
+            /* Collapsed: thicker at finer levels, while it still fits;
+             * else snapped outward (at least a texel thick) at this or the
+             * next levels where that fits. */
             for (int l = lam - 1; l >= 0 && used < 0; l--) {
-                int r2 = try_level(f, m, fp, l, &res);
+                int r2 = try_level(f, m, fp, l, false, &res);
                 if (r2 == LEVEL_NOFIT)
                     break;
                 if (r2 == LEVEL_OK && evaluate(f, m, l, &res, out->rgba, &out->texels))
                     used = l;
             }
+            for (int l = lam; l <= top && used < 0; l++)
+                if (try_level(f, m, fp, l, true, &res) == LEVEL_OK && evaluate(f, m, l, &res, out->rgba, &out->texels))
+                    used = l;
             break;
         }
     }
