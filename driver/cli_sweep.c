@@ -273,6 +273,8 @@ static int on_spec_value(void *user, const char *section, const char *name, cons
         return 0;
     if (strlen(value) >= VALUE_LEN)
         return SPEC_ERR("%s.%s: value longer than %d characters", section, name, VALUE_LEN - 1);
+    if (strchr(value, '\t'))
+        return SPEC_ERR("%s.%s: a tab in a value (the job list is tab-separated)", section, name);
     if (!strcmp(section, "sweep")) {
         if (!strcmp(name, "name"))
             fmt(s->name, sizeof s->name, "%s", value);

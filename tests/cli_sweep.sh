@@ -141,7 +141,34 @@ test_plot_and_no_run() {
     [ "$(head -c 4 "$out/frags.png" | od -An -c | tr -d ' ')" = '211PNG' ] || fail "not a PNG"
 }
 
+test_config_axis_and_mode() {
+    printf '[occlusion]\nengines = 3\n' >"$WORK/a.ini"
+    printf '[occlusion]\nengines = 5\nmax_tiles = 7\n' >"$WORK/b.ini"
+    cat >"$WORK/cf.ini" <<EOF
+[sweep]
+out = $WORK/cf
+mode = sampled
+[traces]
+scene = demo
+[axis.config]
+values = $WORK/a.ini, $WORK/b.ini
+EOF
+    "$FRAGSIM" sweep --mode functional "$WORK/cf.ini" >/dev/null 2>"$WORK/e" || fail "sweep: $(cat "$WORK/e")"
+    ! grep -q -- '--mode' "$WORK/cf/jobs.tsv" || fail "--mode functional must override the spec's mode"
+    grep -q '"occlusion.engines": 3,' "$WORK/cf/jobs/0/stats.json" || fail "job 0 did not read a.ini"
+    grep -q '"occlusion.engines": 5,' "$WORK/cf/jobs/1/stats.json" || fail "job 1 did not read b.ini"
+    grep -q '"occlusion.max_tiles": 7' "$WORK/cf/jobs/1/stats.json" || fail "job 1 did not read b.ini"
+    [ "$(tail -n +2 "$WORK/cf/results.csv" | cut -d, -f3)" = "$WORK/a.ini
+$WORK/b.ini" ] || fail "config column: $(cat "$WORK/cf/results.csv")"
+    "$FRAGSIM" sweep --no-run --out "$WORK/cf2" "$WORK/cf.ini" >/dev/null 2>&1 || fail "--no-run"
+    grep -qP '\t--mode\tsampled\t' "$WORK/cf2/jobs.tsv" || fail "spec mode not passed: $(cat "$WORK/cf2/jobs.tsv")"
+    printf '[traces]\nscene = demo\n[axis.config]\nvalues = %s/none.ini\n' "$WORK" >"$WORK/cf3.ini"
+    "$FRAGSIM" sweep --out "$WORK/cf3" "$WORK/cf3.ini" 2>"$WORK/e"
+    [ $? -eq 2 ] && grep -q "none.ini: cannot open" "$WORK/e" || fail "missing config file: $(cat "$WORK/e")"
+}
+
 run_test test_grid_2x2
+run_test test_config_axis_and_mode
 run_test test_deterministic_across_runs_and_runners
 run_test test_bad_axis_key
 run_test test_failing_job_reported_others_gathered
