@@ -13,4 +13,6 @@ int fs_cli_sweep(int argc, char **argv);
 int fs_cli_rom(int argc, char **argv);
 /* fragsim study-filters: texture filter quality/cost study (driver/cli_study_filters.c) */
 int fs_cli_study_filters(int argc, char **argv);
+/* fragsim mpgrid: the MP-Grid memory example of Huettner 1999, 4.1.2 (driver/cli_mpgrid.c) */
+int fs_cli_mpgrid(int argc, char **argv);
 #endif

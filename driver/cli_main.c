@@ -713,6 +713,7 @@ static const struct cli_command {
     {"study-filters", "[--out DIR]", "texture filter quality/cost study (used by `make study-filters`)", fs_cli_study_filters},
     {"rom", "[--markdown]", "fast-footprint weighting ROM sizes: Table 4.3 of Huettner 1999 next to fragsim's", fs_cli_rom},
     {"sweep", "SPEC.ini", "run a grid of configurations x traces as jobs; CSV and plots", fs_cli_sweep},
+    {"mpgrid", "[--markdown]", "MP-Grid vs MIPmap vs Clip-Map memory example (Huettner 1999, 4.1.2)", fs_cli_mpgrid},
 };
 
 static void usage_main(FILE *f)

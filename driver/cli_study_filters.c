@@ -221,7 +221,7 @@ static double now_s(void)
 typedef struct result {
     float *rgba, *level;
     int *cls, *texels;
-    double seconds, psnr, texels_mean;
+    double seconds, psnr, psnr_mag, psnr_min, texels_mean;
     int texels_max;
 } result;
 
@@ -333,6 +333,15 @@ static int write_strip(const char *path, uint8_t *const *imgs, int count, int w,
 }
 
 /* ---- the study ------------------------------------------------------------- */
+
+/* A PSNR for the table: "-" when no pixel was compared. */
+static const char *db(char buf[24], double v)
+{
+    if (isnan(v))
+        return "-";
+    snprintf(buf, 24, "%.2f", v);
+    return buf;
+}
 
 typedef struct texture_case {
     const char *name, *title;
@@ -481,7 +490,8 @@ int fs_cli_study_filters(int argc, char **argv)
         fprintf(stderr, "fragsim study-filters: cannot write in %s\n", out);
         return 1;
     }
-    fprintf(csv, "texture,filter,psnr_db,texels_mean,texels_max,seconds,ns_per_pixel,pixels,label\n");
+    fprintf(csv, "texture,filter,psnr_db,texels_mean,texels_max,seconds,ns_per_pixel,pixels,psnr_magnified_db,"
+                 "psnr_minified_db,label\n");
     int rc = 0;
     for (int c = 0; c < 2 && rc == 0; c++) {
         const texture_case *tc = &cases[c];
@@ -505,16 +515,31 @@ int fs_cli_study_filters(int argc, char **argv)
         }
         size_t n = (size_t)size * size;
         fs_footprint *fps = calloc(n, sizeof *fps);
-        uint8_t *mask = calloc(n, 1);
+        uint8_t *mask = calloc(n, 1), *mask_mag = calloc(n, 1), *mask_min = calloc(n, 1);
         result res[MAX_FILTERS];
         memset(res, 0, sizeof res);
         uint8_t *imgs[MAX_FILTERS] = {0};
-        long long visible = 0;
+        long long visible = 0, magnified = 0;
+        if (!fps || !mask || !mask_mag || !mask_min) {
+            fprintf(stderr, "fragsim study-filters: out of memory\n");
+            free(fps);
+            free(mask);
+            free(mask_mag);
+            free(mask_min);
+            fs_mip_free(&tex);
+            rc = 1;
+            break;
+        }
         for (int y = 0; y < size; y++)
             for (int x = 0; x < size; x++) {
                 size_t i = (size_t)y * size + x;
                 mask[i] = fs_ground_footprint(&sc, x, y, &fps[i]);
                 visible += mask[i];
+                /* Split for the diagnosis: magnified (GL's lambda <= 0, the
+                 * texture is interpolated) and minified pixels. */
+                mask_mag[i] = mask[i] && fs_footprint_lambda_iso(&fps[i]) <= 0;
+                mask_min[i] = mask[i] && !mask_mag[i];
+                magnified += mask_mag[i];
             }
         /* Ground truth first: everything is compared with it. */
         int order[MAX_FILTERS], no = 0;
@@ -530,6 +555,8 @@ int fs_cli_study_filters(int argc, char **argv)
                 break;
             }
             res[f].psnr = fs_psnr_rgb(res[f].rgba, res[truth_index].rgba, mask, n);
+            res[f].psnr_mag = fs_psnr_rgb(res[f].rgba, res[truth_index].rgba, mask_mag, n);
+            res[f].psnr_min = fs_psnr_rgb(res[f].rgba, res[truth_index].rgba, mask_min, n);
             imgs[f] = malloc(n * 4);
             if (!imgs[f]) {
                 rc = 1;
@@ -544,41 +571,50 @@ int fs_cli_study_filters(int argc, char **argv)
         }
         if (rc == 0) {
             /* Table. */
-            fprintf(md, "\n### %s (%lld visible pixels of %dx%d)\n\n", tc->title, visible, size, size);
-            fprintf(md, "| filter | PSNR vs ground truth (dB) | texels per pixel (mean) | texels (max) | time (s, %d thread%s) | ns per pixel |\n",
+            fprintf(md, "\n### %s (%lld visible pixels of %dx%d: %lld magnified, %lld minified)\n\n", tc->title,
+                    visible, size, size, magnified, visible - magnified);
+            fprintf(md, "| filter | PSNR vs ground truth (dB) | PSNR, magnified pixels | PSNR, minified pixels | texels per pixel (mean) | texels (max) | time (s, %d thread%s) | ns per pixel |\n",
                     threads, threads > 1 ? "s" : "");
-            fprintf(md, "|---|---|---|---|---|---|\n");
+            fprintf(md, "|---|---|---|---|---|---|---|---|\n");
             for (int f = 0; f < nf; f++) {
                 const result *r = &res[f];
                 double ns = r->seconds * 1e9 * threads / (double)visible;
                 /* The label goes last: it may contain commas. */
-                fprintf(csv, "%s,%s,%.3f,%.2f,%d,%.3f,%.1f,%lld,\"%s\"\n", tc->name, filters[f].name,
-                        f == truth_index ? INFINITY : r->psnr, r->texels_mean, r->texels_max, r->seconds, ns, visible,
-                        filters[f].label);
-                if (f == truth_index)
-                    fprintf(md, "| %s (%s) | reference | %.0f (reads) | %d | %.2f | %.0f |\n", filters[f].label,
+                bool t = f == truth_index;
+                fprintf(csv, "%s,%s,%.3f,%.2f,%d,%.3f,%.1f,%lld,%.3f,%.3f,\"%s\"\n", tc->name, filters[f].name,
+                        t ? INFINITY : r->psnr, r->texels_mean, r->texels_max, r->seconds, ns, visible,
+                        t ? INFINITY : r->psnr_mag, t ? INFINITY : r->psnr_min, filters[f].label);
+                if (t)
+                    fprintf(md, "| %s (%s) | reference | | | %.0f (reads) | %d | %.2f | %.0f |\n", filters[f].label,
                             filters[f].name, r->texels_mean, r->texels_max, r->seconds, ns);
-                else
-                    fprintf(md, "| %s (%s) | %.2f | %.1f | %d | %.2f | %.0f |\n", filters[f].label, filters[f].name,
-                            r->psnr, r->texels_mean, r->texels_max, r->seconds, ns);
+                else {
+                    char b0[24], b1[24], b2[24];
+                    fprintf(md, "| %s (%s) | %s | %s | %s | %.1f | %d | %.2f | %.0f |\n", filters[f].label,
+                            filters[f].name, db(b0, r->psnr), db(b1, r->psnr_mag), db(b2, r->psnr_min),
+                            r->texels_mean, r->texels_max, r->seconds, ns);
+                }
             }
-            /* The hybrid's pixel classes (paper: Figure 4.35, checkerboard, M = 16). */
+            /* The fast footprint filter's pixel classes, as it reports them
+             * (paper: Figure 4.35, checkerboard, M = 16, hybrid); the pure
+             * filter's rows show where it still falls back to MIPmapping. */
             int any = 0;
             for (int f = 0; f < nf; f++) {
-                if (!filters[f].ffp_hybrid)
+                if (!filters[f].ffp_m)
                     continue;
                 long long cnt[4] = {0, 0, 0, 0};
                 for (size_t i = 0; i < n; i++)
                     if (mask[i] && res[f].cls[i] >= 0 && res[f].cls[i] < 4)
                         cnt[res[f].cls[i]]++;
                 if (!any++) {
-                    fprintf(md, "\nHybrid fast footprint filtering, pixel classes (%s):\n\n", tc->title);
+                    fprintf(md, "\nFast footprint filtering, pixel classes as the filter reports them (%s):\n\n",
+                            tc->title);
                     fprintf(md, "| | pixels filtered | MIPmapped (bilinear level 0 + trilinear) | footprint-filtered | of these with T between M and 2M |\n");
                     fprintf(md, "|---|---|---|---|---|\n");
                     if (c == 0)
-                        fprintf(md, "| dissertation, Fig. 4.35 (M = 16) | 275,334 | 246,678 | 28,656 | 8,836 |\n");
+                        fprintf(md, "| dissertation, Fig. 4.35 (M = 16, hybrid) | 275,334 | 246,678 | 28,656 | 8,836 |\n");
                 }
-                fprintf(md, "| fragsim, M = %d | %lld | %lld (%lld + %lld) | %lld | %lld |\n", filters[f].ffp_m, visible,
+                fprintf(md, "| fragsim, M = %d, %s | %lld | %lld (%lld + %lld) | %lld | %lld |\n", filters[f].ffp_m,
+                        filters[f].ffp_hybrid ? "hybrid" : "pure", visible,
                         cnt[FS_FP_CLASS_BILINEAR0] + cnt[FS_FP_CLASS_TRILINEAR], cnt[FS_FP_CLASS_BILINEAR0],
                         cnt[FS_FP_CLASS_TRILINEAR], cnt[FS_FP_CLASS_FOOTPRINT] + cnt[FS_FP_CLASS_FOOTPRINT_2M],
                         cnt[FS_FP_CLASS_FOOTPRINT_2M]);
@@ -664,6 +700,8 @@ int fs_cli_study_filters(int argc, char **argv)
         }
         free(fps);
         free(mask);
+        free(mask_mag);
+        free(mask_min);
         fs_mip_free(&tex);
     }
     fclose(csv);

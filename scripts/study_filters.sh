@@ -101,7 +101,8 @@ Both repeat (GL_REPEAT) and are MIPmapped by 2x2 box averaging (\`fs_mip_build_b
 filter gets each visible pixel's exact footprint from \`fs_ground_footprint\`
 (units/texture_reference.c): the centre, the analytic Jacobian and the four exactly
 projected corners.  PSNR is over RGB of the visible pixels only (peak 1.0, float colours,
-\`fs_psnr_rgb\`), against the ground truth.
+\`fs_psnr_rgb\`), against the ground truth; the tables also split it into magnified pixels
+(GL's isotropic lambda <= 0: the texture is interpolated) and minified ones.
 
 The filters:
 
@@ -170,8 +171,9 @@ truth:
 ![checkerboard overview](texture_filtering/checker_overview.png)
 
 MIPmap level used per pixel along the scan order (like the dissertation's Figures
-4.42-4.44; the fast footprint rows are the pure filter, whose level is eq. 4.17's integer
-lambda; trilinear and footprint assembly show their fractional level):
+4.42-4.44; the fast footprint points are the pure filter's level as it reports it: eq.
+4.17's integer lambda where it filters, GL's fractional level where it falls back to
+MIPmapping; trilinear and footprint assembly show their fractional level):
 
 ![levels](texture_filtering/checker_levels.png)
 
@@ -180,9 +182,10 @@ Every filter's full image, composites, crops, the level data and plots are in
 
 ## Notes
 
-- The hybrid's pixel classes are counted from the filter's own classification
+- The pixel classes are counted from the fast footprint filter's own classification
   (`FS_FP_CLASS_*`): "MIPmapped" is bilinear on level 0 plus trilinear, "footprint-filtered"
-  both footprint classes, "T between M and 2M" the two-step class.  The dissertation's
+  both footprint classes, "T between M and 2M" the two-step class.  The pure filter's rows
+  show the pixels for which even the non-hybrid filter falls back to MIPmapping.  The dissertation's
   counts (Figure 4.35) come from its own scene and its own isotropy threshold, neither of
   which is given; the comparison shows the order of magnitude only.
 - The ground truth integrates the bilinearly reconstructed level 0 with a box over the

@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "texture_priv.h"
+#include "mpgrid_gl.h"
 #include "footprint.h"
 #include "../pipeline/context.h"
 #include "../glext/GL_FRAGSIM_footprint_filter.h"
@@ -28,6 +29,7 @@ static void object_defaults(fs_tex_object *t, GLuint name)
 
 static void object_release(fs_tex_object *t)
 {
+    fs_mpgrid_gl_release(t);
     for (int i = 0; i < FS_TEX_MAX_LEVELS; i++)
         free(t->level[i].texels);
 }
@@ -369,6 +371,22 @@ static void unpack_image(fs_context *c, fs_tex_image *img, int x0, int y0, int w
     }
 }
 
+GLenum fs_tex_base_format(GLint internalformat) { return base_format(internalformat); }
+
+GLenum fs_tex_unpack_rgba8(fs_context *c, uint8_t *dst, int w, int h, GLenum base, GLenum format, GLenum type,
+                           const void *pixels)
+{
+    /* GL_FRAGSIM_mp_grid refuses what glTexImage2D cannot convert with
+     * INVALID_ENUM (docs/extensions/mp_grid.txt). */
+    if (format_components(format) == 0 || type_bytes(type) == 0)
+        return GL_INVALID_ENUM;
+    if (dst && pixels && w > 0 && h > 0) {
+        fs_tex_image img = {.width = w, .height = h, .base_format = base, .texels = dst};
+        unpack_image(c, &img, 0, 0, w, h, format, type, pixels);
+    }
+    return GL_NO_ERROR;
+}
+
 static bool is_pow2_or_zero(GLsizei v) { return (v & (v - 1)) == 0; }
 
 /* Checks shared by glTexImage2D and glCopyTexImage2D (3.8.1): returns the
@@ -697,6 +715,8 @@ void fs_exec_TexParameterfv(fs_context *c, GLenum target, GLenum pname, const GL
 
 bool fs_tex_complete(fs_tex_object *t)
 {
+    if (t->mpgrid)
+        return fs_mpgrid_gl_complete(t);
     if (t->complete >= 0)
         return t->complete != 0;
     const fs_tex_image *b = &t->level[0];

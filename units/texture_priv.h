@@ -34,6 +34,9 @@ typedef struct fs_tex_object {
      * level sampling may use. */
     int complete;
     int last_level;
+    /* GL_FRAGSIM_mp_grid: non-NULL for an MP-Grid texture, whose texels
+     * come through the CTR (units/mpgrid_gl.h). */
+    struct fs_mpgrid_tex *mpgrid;
 } fs_tex_object;
 
 struct fs_texture_state {
@@ -59,4 +62,12 @@ bool fs_tex_complete(fs_tex_object *t);
 /* The name of the bound 2D texture, for glGet(GL_TEXTURE_BINDING_2D)
  * (driver/gl_state.c). */
 GLuint fs_texture_binding_2d(const fs_context *c);
+
+/* For GL_FRAGSIM_mp_grid (units/mpgrid_gl.c): the base format of an
+ * internalformat (0 if none), and a client image unpacked as glTexImage2D
+ * does into w x h RGBA8 texels of base format `base` (dst NULL: only
+ * checks).  Returns GL_NO_ERROR or glTexImage2D's error for format/type. */
+GLenum fs_tex_base_format(GLint internalformat);
+GLenum fs_tex_unpack_rgba8(fs_context *c, uint8_t *dst, int w, int h, GLenum base, GLenum format, GLenum type,
+                           const void *pixels);
 #endif

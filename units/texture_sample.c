@@ -30,6 +30,7 @@
 #include <string.h>
 #include "texture_priv.h"
 #include "footprint.h"
+#include "mpgrid_gl.h"
 #include "../pipeline/context.h"
 #include "../glext/GL_FRAGSIM_footprint_filter.h"
 
@@ -154,11 +155,22 @@ static inline int wrap_nearest(int x, int len, GLenum wrap)
     return x < 0 ? 0 : x > len - 1 ? len - 1 : x;
 }
 
+/* Address of texel (x, y) of a level.  GL_FRAGSIM_mp_grid: an MP-Grid
+ * object has no texels of its own; they come through its CTR and pointer
+ * table (units/mpgrid_gl.h) into tmp. */
+static inline const uint8_t *texel_at(const fs_tex_object *t, const fs_tex_image *img, int x, int y, uint8_t tmp[4])
+{
+    if (t->mpgrid)
+        return fs_mpgrid_gl_texel(t, (int)(img - t->level), x, y, tmp);
+    return img->texels + ((size_t)y * (size_t)img->width + (size_t)x) * 4;
+}
+
 static void sample_nearest8(const fs_tex_object *t, const fs_tex_image *img, float s, float tt, uint8_t out[4])
 {
     int x = wrap_nearest(to_int_floor(s * (float)img->width), img->width, t->wrap_s);
     int y = wrap_nearest(to_int_floor(tt * (float)img->height), img->height, t->wrap_t);
-    memcpy(out, img->texels + ((size_t)y * (size_t)img->width + (size_t)x) * 4, 4);
+    uint8_t tmp[4];
+    memcpy(out, texel_at(t, img, x, y, tmp), 4);
 }
 
 static void linear_coord8(float s, int len, GLenum wrap, int *i0, int *i1, int *frac)
@@ -182,11 +194,12 @@ static void sample_linear8(const fs_tex_object *t, const fs_tex_image *img, floa
     int x0, x1, y0, y1, fx, fy;
     linear_coord8(s, img->width, t->wrap_s, &x0, &x1, &fx);
     linear_coord8(tt, img->height, t->wrap_t, &y0, &y1, &fy);
-    const uint8_t *r0 = img->texels + (size_t)y0 * (size_t)img->width * 4;
-    const uint8_t *r1 = img->texels + (size_t)y1 * (size_t)img->width * 4;
+    uint8_t m00[4], m10[4], m01[4], m11[4];
+    const uint8_t *t00 = texel_at(t, img, x0, y0, m00), *t10 = texel_at(t, img, x1, y0, m10);
+    const uint8_t *t01 = texel_at(t, img, x0, y1, m01), *t11 = texel_at(t, img, x1, y1, m11);
     for (int k = 0; k < 4; k++) {
-        int a = lerp8(fx, r0[4 * x0 + k], r0[4 * x1 + k]);
-        int b = lerp8(fx, r1[4 * x0 + k], r1[4 * x1 + k]);
+        int a = lerp8(fx, t00[k], t10[k]);
+        int b = lerp8(fx, t01[k], t11[k]);
         out[k] = (uint8_t)lerp8(fy, a, b);
     }
 }
@@ -207,7 +220,8 @@ static void fetch_f(const fs_tex_object *t, const fs_tex_image *img, int x, int 
         memcpy(out, t->border, 4 * sizeof(float));
         return;
     }
-    const uint8_t *p = img->texels + ((size_t)y * (size_t)img->width + (size_t)x) * 4;
+    uint8_t tmp[4];
+    const uint8_t *p = texel_at(t, img, x, y, tmp);
     for (int k = 0; k < 4; k++)
         out[k] = (float)p[k] * (1.0f / 255.0f);
 }
