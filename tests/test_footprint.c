@@ -76,6 +76,30 @@ static void check_rom_sums(check_state *check_st_, int a, int b, bool ms)
     fs_fp_count_shape(a, b, ms, &c);
     CHECK_EQ_INT(seen, c.vectors);
     CHECK_EQ_INT((long long)r.vectors, c.vectors);
+    /* The pointer structure: stage 1 has one entry per border position,
+     * stage 2 one per ordered border pair, stage 3 one per stored triangle;
+     * every pointer stays inside the next stage and stage 3 reaches every
+     * vector exactly once. */
+    long long pb = 0;
+    for (int k = 0; k < r.p; k++)
+        pb += border(&r, k % r.px, k / r.px);
+    CHECK_EQ_INT(r.pb, pb);
+    CHECK_EQ_INT(c.pointers, pb + pb * (pb - 1) + (long long)r.vectors);
+    char *hit = calloc(r.vectors, 1);
+    REQUIRE(hit);
+    long bad_ptr = 0;
+    for (long long i = 0; i < pb; i++)
+        bad_ptr += (long long)r.stage1[i] + (pb - 1) > pb * (pb - 1);
+    for (long long i = 0; i < pb * (pb - 1); i++)
+        bad_ptr += r.stage2[i] + (uint64_t)(r.p - 2) > (uint64_t)r.vectors;
+    for (size_t i = 0; i < r.vectors; i++) {
+        if (r.stage3[i] >= r.vectors || hit[r.stage3[i]])
+            bad_ptr++;
+        else
+            hit[r.stage3[i]] = 1;
+    }
+    CHECK_EQ_INT(bad_ptr, 0);
+    free(hit);
     fs_fp_rom_free(&r);
 }
 
