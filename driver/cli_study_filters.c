@@ -390,7 +390,8 @@ int fs_cli_study_filters(int argc, char **argv)
     const char *out = "out/study-filters", *figs = NULL;
     int threads = 2, size = 600, truth_max = 64;
     double rotate = 20;
-    for (int i = 0; i < argc; i++) {
+    /* Every option takes a value: step over both. */
+    for (int i = 0; i < argc; i += 2) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
             usage(stdout);
@@ -426,7 +427,6 @@ int fs_cli_study_filters(int argc, char **argv)
             usage(stderr);
             return 2;
         }
-        i++;
     }
     if (strlen(out) > 1000 || (figs && strlen(figs) > 1000)) {
         fprintf(stderr, "fragsim study-filters: directory name too long\n");
