@@ -1078,7 +1078,15 @@ static int cmp_double(const void *a, const void *b)
 /* Plot p: one line per series value (first-appearance order), y the mean
  * over the rows sharing (series, x).  Writes OUT/NAME.dat, OUT/NAME.gp and
  * runs gnuplot for OUT/NAME.png. */
-static int draw_plot(const spec *s, const plot *p, const char *out, row *rows, long n,
+/* Distinct series and x values of one plot, on the heap (they are large). */
+#define PLOT_MAX (MAX_VALUES * MAX_TRACES)
+typedef struct plot_scratch {
+    char series[PLOT_MAX][NAME_LEN], xs[PLOT_MAX][NAME_LEN];
+    double xv[PLOT_MAX], tmp[PLOT_MAX][2];
+    int order[PLOT_MAX];
+} plot_scratch;
+
+static int draw_plot_with(plot_scratch *sc, const spec *s, const plot *p, const char *out, row *rows, long n,
                      char (*cols)[NAME_LEN], int ncols)
 {
     int cx = col_index(cols, ncols, p->x), cy = col_index(cols, ncols, p->y);
@@ -1091,7 +1099,7 @@ static int draw_plot(const spec *s, const plot *p, const char *out, row *rows, l
         return -1;
     }
     /* Distinct series and x values in grid order. */
-    static char series[MAX_VALUES * MAX_TRACES][NAME_LEN], xs[MAX_VALUES * MAX_TRACES][NAME_LEN];
+    char (*series)[NAME_LEN] = sc->series, (*xs)[NAME_LEN] = sc->xs;
     int nseries = 0, nx = 0;
     bool numeric_x = true;
     for (long j = 0; j < n; j++) {
@@ -1099,11 +1107,11 @@ static int draw_plot(const spec *s, const plot *p, const char *out, row *rows, l
         int k;
         for (k = 0; k < nseries && strcmp(series[k], sv); k++)
             ;
-        if (k == nseries && nseries < MAX_VALUES * MAX_TRACES)
+        if (k == nseries && nseries < PLOT_MAX)
             fmt(series[nseries++], NAME_LEN, "%s", sv);
         for (k = 0; k < nx && strcmp(xs[k], xv); k++)
             ;
-        if (k == nx && nx < MAX_VALUES * MAX_TRACES) {
+        if (k == nx && nx < PLOT_MAX) {
             double d;
             numeric_x &= is_number(xv, &d);
             fmt(xs[nx++], NAME_LEN, "%s", xv);
@@ -1119,8 +1127,8 @@ static int draw_plot(const spec *s, const plot *p, const char *out, row *rows, l
     int points = 0;
     for (int si = 0; si < nseries; si++) {
         fprintf(f, "# series %s\n", series[si]);
-        double xv[MAX_VALUES * MAX_TRACES];
-        int order[MAX_VALUES * MAX_TRACES], m = 0;
+        double *xv = sc->xv;
+        int *order = sc->order, m = 0;
         for (int xi = 0; xi < nx; xi++) {
             double d;
             xv[m] = numeric_x && is_number(xs[xi], &d) ? d : xi;
@@ -1128,7 +1136,7 @@ static int draw_plot(const spec *s, const plot *p, const char *out, row *rows, l
         }
         /* sort x positions (numeric x); categorical x keeps grid order */
         if (numeric_x) {
-            double tmp[MAX_VALUES * MAX_TRACES][2];
+            double (*tmp)[2] = sc->tmp;
             for (int k = 0; k < m; k++) {
                 tmp[k][0] = xv[k];
                 tmp[k][1] = order[k];
@@ -1205,6 +1213,19 @@ static int draw_plot(const spec *s, const plot *p, const char *out, row *rows, l
         return -1;
     }
     return 0;
+}
+
+static int draw_plot(const spec *s, const plot *p, const char *out, row *rows, long n,
+                     char (*cols)[NAME_LEN], int ncols)
+{
+    plot_scratch *sc = malloc(sizeof *sc);
+    if (!sc) {
+        fprintf(stderr, "%s: plot %s: out of memory\n", prog, p->name);
+        return -1;
+    }
+    int rc = draw_plot_with(sc, s, p, out, rows, n, cols, ncols);
+    free(sc);
+    return rc;
 }
 
 /* ---------- traces ---------- */
