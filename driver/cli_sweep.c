@@ -778,6 +778,10 @@ static int write_cluster_scripts(const spec *s, const char *out, const char *spe
     char self[PATH_LEN], path[PATH_LEN], cwd[PATH_LEN];
     if (self_path(self, sizeof self) != 0 || !getcwd(cwd, sizeof cwd))
         return -1;
+    /* Slurm does not create the directory of --output itself. */
+    fmt(path, sizeof path, "%s/jobs", out);
+    if (make_dirs(path) != 0)
+        return -1;
     fmt(path, sizeof path, "%s/slurm.sh", out);
     FILE *f = fopen(path, "w");
     if (!f)

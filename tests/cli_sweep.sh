@@ -133,6 +133,8 @@ test_plot_and_no_run() {
     printf '[plot.frags]\nx = occlusion.engines\ny = fragments\nseries = occlusion.max_tiles\n' >>"$spec"
     "$FRAGSIM" sweep --no-run "$spec" >/dev/null 2>&1 || fail "--no-run"
     [ -f "$out/jobs.tsv" ] && [ ! -e "$out/results.csv" ] || fail "--no-run ran jobs"
+    [ -d "$out/jobs" ] || fail "no jobs/ directory for Slurm's --output"
+    bash -n "$out/slurm.sh" && bash -n "$out/parallel_ssh.sh" || fail "cluster scripts are not valid shell"
     # a cluster would run each job so; then --gather collects them
     for j in 0 1 2 3; do "$FRAGSIM" sweep --run-job "$out/jobs.tsv" $j 2>"$WORK/e" || fail "run-job $j: $(cat "$WORK/e" "$out/jobs/$j/log.txt")"; done
     "$FRAGSIM" sweep --gather "$spec" >/dev/null 2>"$WORK/e" || fail "gather: $(cat "$WORK/e")"
