@@ -9,10 +9,27 @@
 #define FS_CLI_H
 /* fragsim sweep SPEC.ini: parameter grids run as jobs (driver/cli_sweep.c) */
 int fs_cli_sweep(int argc, char **argv);
-/* fragsim rom: Table 4.3 of Huettner 1999 next to fragsim's weighting ROMs (driver/cli_rom.c) */
-int fs_cli_rom(int argc, char **argv);
 /* fragsim study-filters: texture filter quality/cost study (driver/cli_study_filters.c) */
 int fs_cli_study_filters(int argc, char **argv);
 /* fragsim mpgrid: the MP-Grid memory example of Huettner 1999, 4.1.2 (driver/cli_mpgrid.c) */
 int fs_cli_mpgrid(int argc, char **argv);
+/* fragsim rom: Table 4.3 of Huettner 1999 next to fragsim's weighting ROMs (driver/cli_rom.c) */
+int fs_cli_rom(int argc, char **argv);
+
+/* driver/cli_cycle.c: the cycle-level model behind `fragsim replay --mode`. */
+#include <stdio.h>
+#include "../pipeline/context.h"
+typedef struct fs_cli_cycle fs_cli_cycle;
+/* "functional" -> -1, "cycle", "sampled" -> an fs_cycle_mode; returns -1 for
+ * an unknown name. */
+int fs_cli_cycle_mode(const char *name, int *mode);
+fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_config *cfg, fs_context *c, const char *csv_path,
+                                 uint64_t trace_frames, char *err, size_t errlen);
+/* Sampled mode: true for a call the replay skips (see fs_cycle_skip_call). */
+bool fs_cli_cycle_skip(const fs_cli_cycle *h, const fs_context *c, int cmd);
+void fs_cli_cycle_frame(fs_cli_cycle *h, long frame);
+/* Writes the "cycle" member (with a trailing comma) into the statistics JSON. */
+void fs_cli_cycle_write_json(fs_cli_cycle *h, FILE *f);
+void fs_cli_cycle_summary(fs_cli_cycle *h, FILE *f, double seconds);
+void fs_cli_cycle_end(fs_cli_cycle *h);
 #endif

@@ -31,6 +31,9 @@ typedef struct cli_opts {
     const char *trace;
     int tolerance;
     bool quiet;
+    int mode;                 /* -1 functional, else fs_cycle_mode (--mode) */
+    const char *csv_file;     /* --csv: cycle statistics as CSV */
+    fs_cli_cycle *cycle;      /* the cycle model of the run, NULL in functional mode */
 } cli_opts;
 
 static const char *prog = "fragsim";
@@ -50,6 +53,12 @@ static void usage_replay(FILE *f, bool check)
             "  --out DIR          output directory (default: out)\n"
             "  --stats FILE       statistics JSON (default: DIR/%s.json)\n"
             "%s"
+            "  --mode M           functional (default), cycle (the cycle-level model, rtl_model/:\n"
+            "                     cycles per frame, draw and query; same images and counters) or\n"
+            "                     sampled (draws of a kind simulated one in sampling.every, the\n"
+            "                     others estimated and NOT rendered: images and functional\n"
+            "                     counters are then incomplete; cycles come with an error estimate)\n"
+            "  --csv FILE         cycle statistics, one row per frame, draw and query (with --mode)\n"
             "  --quiet            no progress line\n",
             check ? "check" : "replay",
             check ? "Replays TRACE on the model and on OSMesa (llvmpipe, in this process) and\n"
@@ -95,6 +104,7 @@ static int parse_opts(int argc, char **argv, cli_opts *o, bool check)
     o->frame_last = -1;
     o->out_dir = "out";
     o->tolerance = DEFAULT_TOLERANCE;
+    o->mode = -1;
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -155,6 +165,15 @@ static int parse_opts(int argc, char **argv, cli_opts *o, bool check)
                 return -1;
             }
             o->tolerance = (int)t;
+        } else if (!strcmp(a, "--mode")) {
+            NEEDV();
+            if (fs_cli_cycle_mode(v, &o->mode) != 0) {
+                fprintf(stderr, "%s: --mode '%s': expected functional, cycle or sampled\n", prog, v);
+                return -1;
+            }
+        } else if (!strcmp(a, "--csv")) {
+            NEEDV();
+            o->csv_file = v;
         } else if (!strcmp(a, "--quiet")) {
             o->quiet = true;
         } else if (a[0] == '-' && a[1]) {
@@ -286,8 +305,11 @@ static int write_stats(const char *path, const cli_opts *o, const fs_replay_info
     write_unsupported_json(f, c);
     fprintf(f, ",\n  \"skipped_trace_calls\": ");
     fs_replay_write_skipped_json(r, f, "  ");
+    fprintf(f, ",\n");
+    if (o->cycle)
+        fs_cli_cycle_write_json(o->cycle, f);
     /* The effective configuration, so any run can be reproduced. */
-    fprintf(f, ",\n  \"config\": {\n");
+    fprintf(f, "  \"config\": {\n");
     fs_config_write_json(f, &c->cfg, "    ");
     fprintf(f, "  }\n}\n");
     if (fclose(f) != 0) {
@@ -404,6 +426,13 @@ static int run_replay(int argc, char **argv, bool check)
         fs_replay_close(r);
         return 1;
     }
+    if (o.mode >= 0 && !(o.cycle = fs_cli_cycle_begin(o.mode, &cfg, c, o.csv_file, info->frames, err, sizeof err))) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        fs_osmesa_destroy(ref);
+        fs_context_destroy(c);
+        fs_replay_close(r);
+        return 2;
+    }
     char stats_path[4096];
     if (o.stats_file)
         snprintf(stats_path, sizeof stats_path, "%s", o.stats_file);
@@ -439,6 +468,8 @@ static int run_replay(int argc, char **argv, bool check)
         if (ev == FS_REPLAY_EOF)
             break;
         if (ev == FS_REPLAY_CALL) {
+            if (fs_cli_cycle_skip(o.cycle, c, call.cmd))
+                continue; /* sampled mode: a frame that is interpolated */
             if (fs_submit(c, &call) != 0) {
                 fprintf(stderr, "%s: %s: malformed arguments to %s\n", prog, o.trace,
                         fs_cmd_table[call.cmd].name);
@@ -464,6 +495,8 @@ static int run_replay(int argc, char **argv, bool check)
             }
             frame_record *fr = &frames[nframes++];
             memset(fr, 0, sizeof *fr);
+            if (o.cycle)
+                fs_cli_cycle_frame(o.cycle, frame);
             fr->frame = frame;
             fr->stats = c->stats;
             if (ref) {
@@ -524,6 +557,9 @@ static int run_replay(int argc, char **argv, bool check)
                 check ? "compared with OSMesa" : "images in ", check ? "" : o.out_dir, stats_path);
     if (nframes == 0 && rc == 0)
         fprintf(stderr, "%s: warning: no frame in the selected range\n", prog);
+    if (o.cycle)
+        fs_cli_cycle_summary(o.cycle, stderr, now_seconds() - t0);
+    fs_cli_cycle_end(o.cycle);
     free(frames);
     fs_osmesa_destroy(ref);
     fs_context_destroy(c);
@@ -576,12 +612,14 @@ static int run_diff(int argc, char **argv)
  * processes (Mesa picks its driver once per process from GALLIUM_DRIVER). */
 static int run_bench(int argc, char **argv)
 {
-    const char *engine = "model", *trace = NULL;
+    const char *engine = "model", *trace = NULL, *config_file = NULL;
+    int cycle_mode = -1; /* --mode: as `fragsim replay --mode` */
     long repeat = 1;
     int width = 0, height = 0;
     for (int i = 0; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
-            printf("usage: fragsim bench [--engine model|osmesa] [--repeat N] [--size WxH] TRACE\n\n"
+            printf("usage: fragsim bench [--engine model|osmesa] [--repeat N] [--size WxH]\n"
+                   "                     [--mode functional|cycle|sampled] [--config FILE] TRACE\n\n"
                    "Replays TRACE once untimed, then N times on one engine, and prints one JSON\nline: seconds of"
                    " rendering (trace decoding included, the same for every engine), frames,\n"
                    "and the model's fragment count.  `make bench` compares the engines.\n");
@@ -590,6 +628,13 @@ static int run_bench(int argc, char **argv)
             engine = argv[++i];
         } else if (!strcmp(argv[i], "--repeat") && i + 1 < argc) {
             repeat = strtol(argv[++i], NULL, 10);
+        } else if (!strcmp(argv[i], "--mode") && i + 1 < argc) {
+            if (fs_cli_cycle_mode(argv[++i], &cycle_mode) != 0) {
+                fprintf(stderr, "%s: bench: --mode: expected functional, cycle or sampled\n", prog);
+                return 2;
+            }
+        } else if (!strcmp(argv[i], "--config") && i + 1 < argc) {
+            config_file = argv[++i];
         } else if (!strcmp(argv[i], "--size") && i + 1 < argc) {
             if (sscanf(argv[++i], "%dx%d", &width, &height) != 2 || width <= 0 || height <= 0) {
                 fprintf(stderr, "%s: --size: expected WxH\n", prog);
@@ -608,6 +653,17 @@ static int run_bench(int argc, char **argv)
         return 2;
     }
     char err[1024];
+    fs_config cfg;
+    fs_config_defaults(&cfg);
+    if (config_file && (fs_config_load(&cfg, config_file, err, sizeof err) != 0 ||
+                        fs_config_check(&cfg, err, sizeof err) != 0)) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        return 2;
+    }
+    fs_cycle *cy = NULL;
+    fs_cycle_stats cstats, cframe;
+    memset(&cstats, 0, sizeof cstats);
+    double cerror = 0;
     fs_replay_opts ro = {NULL, width, height};
     double seconds = 0;
     uint64_t fragments = 0, frames = 0;
@@ -624,7 +680,19 @@ static int run_bench(int argc, char **argv)
         }
         const fs_replay_info *info = fs_replay_info_get(r);
         if (!c && model)
-            c = fs_context_create(NULL, info->width, info->height);
+            c = fs_context_create(&cfg, info->width, info->height);
+        if (c && cycle_mode >= 0) {
+            /* A fresh model per repetition: each reports the same cycles. */
+            fs_cycle_destroy(cy);
+            cy = fs_cycle_create(&cfg, (fs_cycle_mode)cycle_mode, err, sizeof err);
+            if (!cy) {
+                fprintf(stderr, "%s: %s\n", prog, err);
+                fs_replay_close(r);
+                return 1;
+            }
+            fs_cycle_attach(cy, c);
+            fs_cycle_set_frames(cy, info->frames);
+        }
         if (!ref && !model) {
             ref = fs_osmesa_create(info->width, info->height, 24, 8, err, sizeof err);
             if (ref)
@@ -647,13 +715,21 @@ static int run_bench(int argc, char **argv)
             if (ev == FS_REPLAY_FRAME_END) {
                 if (!model)
                     (void)fs_osmesa_color(ref); /* glFinish: llvmpipe renders lazily */
+                if (cy)
+                    fs_cycle_frame_end(cy, &cframe);
                 frames++;
                 continue;
             }
-            if (model)
-                fs_submit(c, &call);
-            else
+            if (model) {
+                if (!cy || !fs_cycle_skip_call(cy, c, call.cmd))
+                    fs_submit(c, &call);
+            } else
                 fs_osmesa_dispatch(ref, &call);
+        }
+        if (cy) {
+            fs_cycle_finish(cy);
+            fs_cycle_totals(cy, &cstats);
+            cerror = fs_cycle_error_estimate(cy);
         }
         if (rep >= 0) {
             seconds += now_seconds() - t0;
@@ -667,8 +743,10 @@ static int run_bench(int argc, char **argv)
     if (model)
         fragments = c->stats.fragments_generated; /* counted over every frame: stats reset only by replay */
     printf("{\"engine\": \"%s\", \"renderer\": \"%s\", \"seconds\": %.6f, \"frames\": %llu, "
-           "\"fragments\": %llu}\n",
-           engine, renderer, seconds, (unsigned long long)frames, (unsigned long long)fragments);
+           "\"fragments\": %llu, \"cycles\": %llu, \"estimated_cycles\": %llu, \"error_estimate\": %.6f}\n",
+           engine, renderer, seconds, (unsigned long long)frames, (unsigned long long)fragments,
+           (unsigned long long)cstats.cycles, (unsigned long long)cstats.estimated_cycles, cerror);
+    fs_cycle_destroy(cy);
     fs_context_destroy(c);
     fs_osmesa_destroy(ref);
     return 0;
@@ -680,7 +758,11 @@ static int run_config(int argc, char **argv)
         fs_config_list(stdout);
         return 0;
     }
-    printf("usage: fragsim config --list\n");
+    if (argc == 1 && !strcmp(argv[0], "--defaults")) {
+        fs_config_write_defaults_ini(stdout);
+        return 0;
+    }
+    printf("usage: fragsim config --list | --defaults (every key as an INI file: configs/default.ini)\n");
     return argc == 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h")) ? 0 : 2;
 }
 
@@ -688,6 +770,8 @@ static int run_stats(int argc, char **argv)
 {
     if (argc == 1 && !strcmp(argv[0], "--list")) {
         fs_stats_list(stdout);
+        printf("\ncycle-level model (`replay --mode cycle|sampled`), per frame, draw and query:\n");
+        fs_cycle_stats_list(stdout);
         return 0;
     }
     printf("usage: fragsim stats --list\n");

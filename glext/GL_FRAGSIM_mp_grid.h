@@ -38,6 +38,7 @@ extern "C" {
 #define GL_MPGRID_MERGE_SIDE          0x6F2D /* levels of at most this side are stored merged (0: off) */
 #define GL_MPGRID_MERGE_BLOCK         0x6F2E /* pyramids per side of a merged block (4) */
 #define GL_MAX_MPGRID_PYRAMIDS        0x6F2F /* glGetMPGridiv: largest n and m */
+#define GL_MPGRID_AUTO_ADAPT          0x6F30 /* adapt when the camera changed, before texturing (FALSE) */
 
 typedef void (APIENTRYP PFNGLMPGRIDTEXTUREPROC)(GLenum target, GLsizei n, GLsizei m, GLsizei tileWidth,
                                                 GLsizei tileHeight, GLint internalformat);

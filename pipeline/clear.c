@@ -58,6 +58,8 @@ void fs_exec_Clear(fs_context *c, GLbitfield mask)
     fs_framebuffer *fb = &c->fb;
     const fs_fragment_state *f = &c->frag;
     size_t w = (size_t)fb->width;
+    if (c->cycle)
+        fs_cycle_clear(c->cycle, c, mask, x1 - x0, y1 - y0);
 
     if ((mask & GL_COLOR_BUFFER_BIT) &&
         (f->color_mask[0] || f->color_mask[1] || f->color_mask[2] || f->color_mask[3])) {

@@ -19,6 +19,9 @@ int fs_config_set(fs_config *cfg, const char *assignment, char *err, size_t errl
  * Returns 0, or -1 with one message naming the key. */
 int fs_config_check(const fs_config *cfg, char *err, size_t errlen);
 void fs_config_list(FILE *f);
+/* Writes every key with its default and meaning as an INI file
+ * (configs/default.ini). */
+void fs_config_write_defaults_ini(FILE *f);
 /* Writes the keys as JSON members ("section.key": value, ...), one per line. */
 void fs_config_write_json(FILE *f, const fs_config *cfg, const char *indent);
 #endif

@@ -17,6 +17,7 @@
 #include "fragment_ops.h"
 #include "vertex_stage.h"
 #include "../driver/gl_call.h"
+#include "../rtl_model/cycle_model.h"
 
 struct fs_dlist_state;      /* driver/display_list.c */
 struct fs_capture;          /* driver/capture.c */
@@ -49,6 +50,9 @@ struct fs_context {
     struct fs_occlusion *occlusion;
     /* The texture unit's state (units/texture_unit.h). */
     struct fs_texture_state *texture;
+    /* The cycle-level model observing the work (rtl_model/cycle_model.h);
+     * NULL in functional mode, where each hook costs one branch. */
+    struct fs_cycle *cycle;
 
     fs_stats stats;               /* counters of the current frame */
     uint64_t unsupported[FS_CMD_COUNT]; /* by command: executor missing or mode unsupported */

@@ -151,6 +151,8 @@ void fs_exec_End(fs_context *c)
         return;
     size_t n = v->iv_n;
     v->iv_n = 0;
+    if (c->cycle && !fs_cycle_draw(c->cycle, c, c->prim.mode, n))
+        return; /* sampled mode: this draw is estimated, not executed */
     c->stats.vertices += n;
     if (!fs_vs_reserve_pv(c, n)) {
         fs_error(c, GL_OUT_OF_MEMORY);

@@ -44,6 +44,8 @@ static void tri(const prim_ctx *p, size_t a, size_t b, size_t cc)
     fs_context *c = p->c;
     const fs_pvert *v0 = V(p, a), *v1 = V(p, b), *v2 = V(p, cc);
     c->stats.triangles_in++;
+    if (c->cycle)
+        fs_cycle_triangle(c->cycle);
     if ((v0->mask | v1->mask | v2->mask) == 0) {
         fs_emit_triangle(c, p->s, v0, v1, v2, p->prov);
     } else if (v0->mask & v1->mask & v2->mask) {

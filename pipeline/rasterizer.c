@@ -204,6 +204,8 @@ void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
         if (s->use_tex)
             fs_texture_quad(c, q); /* texturing (GL 1.5 spec 3.8) precedes 4.1 */
         fs_fragment_quad(c, q);
+        if (c->cycle)
+            fs_cycle_quad(c->cycle, c, q);
         return;
     }
 #endif
@@ -211,6 +213,8 @@ void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
     if (s->use_tex)
         fs_texture_quad(c, q);
     fs_fragment_quad(c, q);
+    if (c->cycle)
+        fs_cycle_quad(c->cycle, c, q);
 }
 
 /* ---- generic plane regions (lines, points) ---- */

@@ -126,6 +126,8 @@ void fs_exec_ReadPixels(fs_context *c, GLint x, GLint y, GLsizei width, GLsizei 
     const fs_framebuffer *fb = &c->fb;
     int64_t bpp = pixel_bytes(format, type);
     int64_t stride = row_stride(c, width, bpp);
+    if (c->cycle)
+        fs_cycle_read_pixels(c->cycle, c, (uint64_t)width * (uint64_t)height * (uint64_t)bpp);
     /* Pixels outside the window are undefined in GL; they are left as they
      * were in the caller's buffer. */
     int64_t cx0 = x < 0 ? 0 : x, cy0 = y < 0 ? 0 : y;

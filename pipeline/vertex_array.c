@@ -290,6 +290,8 @@ void fs_exec_ArrayElement(fs_context *c, GLint i)
 static void draw_batch(fs_context *c, GLenum mode, size_t n, const uint32_t *idx, size_t count, bool elements)
 {
     fs_vs_impl *v = fs_vs(c);
+    if (c->cycle && !fs_cycle_draw(c->cycle, c, mode, count))
+        return; /* sampled mode: this draw is estimated, not executed */
     if (!fs_vs_reserve_pv(c, n)) {
         fs_error(c, GL_OUT_OF_MEMORY);
         return;

@@ -13,7 +13,9 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "check.h"
+#include "../driver/cli.h"
 #include "../pipeline/context.h"
 #include "../units/mpgrid.h"
 #include "../units/texture_filter.h"
@@ -501,6 +503,51 @@ TEST(memory_example_adapted)
     CHECK(bytes > 6198605ull * 95 / 100 && bytes < 6198605ull * 115 / 100);
 }
 
+/* docs/mp_grid.md carries `fragsim mpgrid --markdown` verbatim: every line
+ * the command prints must be in the page (numbers are never hand-edited). */
+TEST(doc_is_current)
+{
+    char bad[] = "--fov", badv[] = "nan";
+    char *bargv[] = {bad, badv, NULL};
+    CHECK_EQ_INT(fs_cli_mpgrid(2, bargv), 2);
+    FILE *doc = fopen("docs/mp_grid.md", "rb");
+    if (!doc)
+        SKIP("docs/mp_grid.md not found (run from the repository root)");
+    static char page[1 << 16], out[1 << 14];
+    size_t np = fread(page, 1, sizeof page - 1, doc);
+    fclose(doc);
+    page[np] = 0;
+    char path[] = "/tmp/fs_mpgrid_XXXXXX";
+    int fd = mkstemp(path);
+    REQUIRE(fd >= 0);
+    fflush(stdout);
+    int saved = dup(1);
+    dup2(fd, 1);
+    char md[] = "--markdown";
+    char *argv[] = {md, NULL};
+    int rc = fs_cli_mpgrid(1, argv);
+    fflush(stdout);
+    dup2(saved, 1);
+    close(saved);
+    close(fd);
+    FILE *f = fopen(path, "rb");
+    size_t no = f ? fread(out, 1, sizeof out - 1, f) : 0;
+    if (f)
+        fclose(f);
+    unlink(path);
+    out[no] = 0;
+    CHECK_EQ_INT(rc, 0);
+    REQUIRE(no > 0);
+    int lines = 0;
+    for (char *line = strtok(out, "\n"); line; line = strtok(NULL, "\n")) {
+        lines++;
+        if (!strstr(page, line))
+            CHECK_FAIL_("docs/mp_grid.md is stale (regenerate with build/fragsim mpgrid --markdown): missing \"%s\"",
+                        line);
+    }
+    CHECK(lines > 10);
+}
+
 /* ---- the GL extension ---- */
 
 static GLenum err(fs_context *c) { return fsglGetError(c); }
@@ -537,7 +584,7 @@ static int upload_grid(fs_context *c, const uint8_t *big, int n, int m, int tw, 
     return 0;
 }
 
-static void draw_quad(fs_context *c, GLenum min_filter, float tilt)
+static void draw_quad_mag(fs_context *c, GLenum min_filter, GLenum mag_filter, float tilt)
 {
     fsglViewport(c, 0, 0, 96, 96);
     fsglClearColor(c, 0.2f, 0.1f, 0.3f, 1);
@@ -550,7 +597,7 @@ static void draw_quad(fs_context *c, GLenum min_filter, float tilt)
     fsglTranslatef(c, 0, 0, -4);
     fsglRotatef(c, -tilt, 1, 0, 0);
     fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)min_filter);
-    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, (GLint)mag_filter);
     fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     fsglTexEnvi(c, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
@@ -568,17 +615,23 @@ static void draw_quad(fs_context *c, GLenum min_filter, float tilt)
     fsglDisable(c, GL_TEXTURE_2D);
 }
 
+static void draw_quad(fs_context *c, GLenum min_filter, float tilt)
+{
+    draw_quad_mag(c, min_filter, min_filter == GL_LINEAR_MIPMAP_LINEAR ? GL_LINEAR : GL_NEAREST, tilt);
+}
+
 /* An MP-Grid-textured quad renders exactly like the same image uploaded as
- * one ordinary texture (NEAREST filters; levels resident). */
+ * one ordinary texture (levels resident): NEAREST filters, and also
+ * trilinear, whose bilinear footprints straddle pyramid borders. */
 TEST(gl_quad_matches_ordinary_texture)
 {
     const int n = 2, m = 2, tw = 32, th = 32, W = n * tw, H = m * th;
     uint8_t *big = random_rgba(W, H, 123);
     fs_mip_owned mo;
     REQUIRE(big && fs_mip_build_box(&mo, big, W, H, GL_CLAMP_TO_EDGE) == 0);
-    GLenum filters[2] = {GL_NEAREST, GL_NEAREST_MIPMAP_NEAREST};
+    GLenum filters[3] = {GL_NEAREST, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_LINEAR};
     float tilts[3] = {0.0f, 60.0f, 60.0f};
-    for (int fi = 0; fi < 2; fi++)
+    for (int fi = 0; fi < 3; fi++)
         for (int ti = 0; ti < 3; ti++) {
             int merge = ti == 2 ? 8 : 0; /* levels of 8x8 and less merged */
             fs_context *a = fs_context_create(NULL, 96, 96), *b = fs_context_create(NULL, 96, 96);
@@ -676,6 +729,78 @@ TEST(gl_adapt_and_substitute)
     CHECK(v > 0);
     CHECK_EQ_UINT(c->stats.mpgrid_substitutions, (uint64_t)v);
     CHECK(strstr((const char *)fsglGetString(c, GL_EXTENSIONS), "GL_FRAGSIM_mp_grid") != NULL);
+    fs_context_destroy(c);
+    free(big);
+}
+
+static void unit_quad(fs_context *c)
+{
+    fsglBegin(c, GL_QUADS);
+    fsglTexCoord2f(c, 0, 0);
+    fsglVertex3f(c, 0, 0, 0);
+    fsglTexCoord2f(c, 1, 0);
+    fsglVertex3f(c, 2, 0, 0);
+    fsglTexCoord2f(c, 1, 1);
+    fsglVertex3f(c, 2, 2, 0);
+    fsglTexCoord2f(c, 0, 1);
+    fsglVertex3f(c, 0, 2, 0);
+    fsglEnd(c);
+}
+
+/* GL_MPGRID_AUTO_ADAPT: the grid adapts before texturing when the camera
+ * changed, and only then; a NaN camera leaves it as it is. */
+TEST(gl_auto_adapt)
+{
+    fs_context *c = fs_context_create(NULL, 96, 96);
+    REQUIRE(c);
+    uint8_t *big = random_rgba(64, 64, 11);
+    fsglPixelStorei(c, GL_UNPACK_ALIGNMENT, 1);
+    fsglBindTexture(c, GL_TEXTURE_2D, 4);
+    REQUIRE(upload_grid(c, big, 2, 2, 32, 32, 0) == 0);
+    for (int j = 0; j < 2; j++)
+        for (int i = 0; i < 2; i++) {
+            GLfloat box[6] = {(GLfloat)i, (GLfloat)j, 0, (GLfloat)i + 1, (GLfloat)j + 1, 0};
+            fsglMPGridBoundingBox(c, GL_TEXTURE_2D, i, j, box, GL_FALSE);
+        }
+    fsglMPGridParameteri(c, GL_TEXTURE_2D, GL_MPGRID_AUTO_ADAPT, 2);
+    CHECK_EQ_INT(err(c), GL_INVALID_VALUE);
+    fsglMPGridParameteri(c, GL_TEXTURE_2D, GL_MPGRID_AUTO_ADAPT, GL_TRUE);
+    GLint v = 0;
+    fsglGetMPGridiv(c, GL_TEXTURE_2D, GL_MPGRID_AUTO_ADAPT, &v);
+    CHECK_EQ_INT(v, GL_TRUE);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
+    fsglEnable(c, GL_TEXTURE_2D);
+    fsglViewport(c, 0, 0, 96, 96);
+    fsglMatrixMode(c, GL_PROJECTION);
+    fsglLoadIdentity(c);
+    fsglFrustum(c, -1, 1, -1, 1, 2, 400);
+    fsglMatrixMode(c, GL_MODELVIEW);
+    fsglLoadIdentity(c);
+    fsglTranslatef(c, -1, -1, -96); /* unit square ~1 px: only 1x1 levels */
+    unit_quad(c);
+    fsglGetMPGridiv(c, GL_TEXTURE_2D, GL_MPGRID_BYTES_RESIDENT, &v);
+    CHECK_EQ_INT(v, 4 * 4);
+    GLint loaded0 = 0, freed0 = 0;
+    fsglGetMPGridiv(c, GL_TEXTURE_2D, GL_MPGRID_LEVELS_LOADED, &loaded0);
+    fsglGetMPGridiv(c, GL_TEXTURE_2D, GL_MPGRID_LEVELS_FREED, &freed0);
+    unit_quad(c); /* same camera: no adaptation */
+    fsglGetMPGridiv(c, GL_TEXTURE_2D, GL_MPGRID_LEVELS_FREED, &v);
+    CHECK_EQ_INT(v, freed0);
+    /* Closer: each unit square 96 * 2 / 6 / 2 = 16 px -> 16x16 levels. */
+    fsglLoadIdentity(c);
+    fsglTranslatef(c, -1, -1, -6);
+    unit_quad(c);
+    fsglGetMPGridiv(c, GL_TEXTURE_2D, GL_MPGRID_BYTES_RESIDENT, &v);
+    CHECK_EQ_INT(v, 4 * 4 * ((4 * 16 * 16 - 1) / 3));
+    fsglGetMPGridiv(c, GL_TEXTURE_2D, GL_MPGRID_LEVELS_LOADED, &v);
+    CHECK_EQ_INT(v - loaded0, 4 * 4);
+    /* A NaN camera: no adaptation, no crash, the grid as it was. */
+    fsglLoadIdentity(c);
+    fsglTranslatef(c, NAN, 0, -6);
+    unit_quad(c);
+    fsglGetMPGridiv(c, GL_TEXTURE_2D, GL_MPGRID_BYTES_RESIDENT, &v);
+    CHECK_EQ_INT(v, 4 * 4 * ((4 * 16 * 16 - 1) / 3));
+    CHECK_EQ_INT(err(c), GL_NO_ERROR);
     fs_context_destroy(c);
     free(big);
 }
@@ -804,8 +929,10 @@ TEST_LIST = {
     TEST_ENTRY(bad_camera_and_boxes),
     TEST_ENTRY(memory_example_closed_forms),
     TEST_ENTRY(memory_example_adapted),
+    TEST_ENTRY(doc_is_current),
     TEST_ENTRY(gl_quad_matches_ordinary_texture),
     TEST_ENTRY(gl_adapt_and_substitute),
+    TEST_ENTRY(gl_auto_adapt),
     TEST_ENTRY(gl_errors),
     TEST_END,
 };

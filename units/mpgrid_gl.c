@@ -29,6 +29,12 @@ struct fs_mpgrid_tex {
     int merge_block;            /* GL_MPGRID_MERGE_BLOCK as set (4) */
     int64_t images_missing;     /* level images not yet supplied */
     fs_stats *stats;            /* the context's per-frame counters */
+    /* GL_MPGRID_AUTO_ADAPT: the context whose camera drives adaptation,
+     * and the camera (projection, modelview, viewport size) last adapted to. */
+    fs_context *ctx;
+    bool auto_adapt, adapted_once;
+    float last_p[16], last_mv[16];
+    GLint last_vp[2];
 };
 
 static void tex_free(struct fs_mpgrid_tex *g)
@@ -115,6 +121,7 @@ void fs_exec_MPGridTexture(fs_context *c, GLenum target, GLsizei n, GLsizei m, G
     g->internal_format = internalformat;
     g->base_format = base;
     g->stats = &c->stats;
+    g->ctx = c;
     fs_mpgrid_gl_release(t);
     t->mpgrid = g;
     /* The level descriptors describe the whole grid (n*tile >> level), with
@@ -188,7 +195,8 @@ void fs_exec_MPGridParameteri(fs_context *c, GLenum target, GLenum pname, GLint 
     fs_tex_object *t = bound_grid(c, target, false);
     if (!t)
         return;
-    if (pname != GL_MPGRID_KEEP_SIDE && pname != GL_MPGRID_MERGE_SIDE && pname != GL_MPGRID_MERGE_BLOCK) {
+    if (pname != GL_MPGRID_KEEP_SIDE && pname != GL_MPGRID_MERGE_SIDE && pname != GL_MPGRID_MERGE_BLOCK &&
+        pname != GL_MPGRID_AUTO_ADAPT) {
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
@@ -198,6 +206,15 @@ void fs_exec_MPGridParameteri(fs_context *c, GLenum target, GLenum pname, GLint 
     }
     struct fs_mpgrid_tex *g = t->mpgrid;
     const fs_mpgrid_layout *L = &g->grid.L;
+    if (pname == GL_MPGRID_AUTO_ADAPT) {
+        if (param != GL_TRUE && param != GL_FALSE) {
+            fs_error(c, GL_INVALID_VALUE);
+            return;
+        }
+        g->auto_adapt = param == GL_TRUE;
+        g->adapted_once = false;
+        return;
+    }
     if (pname == GL_MPGRID_KEEP_SIDE) {
         if (param < 0 || param > FS_TEX_MAX_SIZE) {
             fs_error(c, GL_INVALID_VALUE);
@@ -230,6 +247,8 @@ void fs_exec_MPGridParameteri(fs_context *c, GLenum target, GLenum pname, GLint 
     ng->keep_side = g->keep_side;
     ng->stats = g->stats;
     ng->merge_block = block;
+    ng->ctx = g->ctx;
+    ng->auto_adapt = g->auto_adapt;
     memcpy(ng->boxes, g->boxes, (size_t)L->n * L->m * sizeof *ng->boxes);
     memcpy(ng->want, g->want, (size_t)L->n * L->m * sizeof *ng->want);
     tex_free(g);
@@ -261,12 +280,9 @@ void fs_exec_MPGridBoundingBox(fs_context *c, GLenum target, GLint i, GLint j, c
     b->unbounded = false;
 }
 
-void fs_exec_MPGridAdapt(fs_context *c, GLenum target)
+/* Adapts to the current PROJECTION * MODELVIEW and viewport size. */
+static void adapt_now(fs_context *c, struct fs_mpgrid_tex *g)
 {
-    fs_tex_object *t = bound_grid(c, target, true);
-    if (!t)
-        return;
-    struct fs_mpgrid_tex *g = t->mpgrid;
     /* The camera: current projection * modelview (GL 1.5 spec 2.11) and
      * the viewport's size (2.11.1). */
     const fs_matrix *P = &c->xf.projection[c->xf.projection_top], *M = &c->xf.modelview[c->xf.modelview_top];
@@ -280,18 +296,35 @@ void fs_exec_MPGridAdapt(fs_context *c, GLenum target)
         }
     cam.vp_w = c->xf.viewport[2] > 0 ? c->xf.viewport[2] : 1;
     cam.vp_h = c->xf.viewport[3] > 0 ? c->xf.viewport[3] : 1;
+    /* A camera with Inf or NaN entries projects nothing meaningfully: the
+     * grid stays as it is (docs/extensions/mp_grid.txt, Issue 4). */
+    for (int k = 0; k < 16; k++)
+        if (!isfinite(cam.m[k]))
+            return;
+    memcpy(g->last_p, P->m, sizeof g->last_p);
+    memcpy(g->last_mv, M->m, sizeof g->last_mv);
+    g->last_vp[0] = c->xf.viewport[2];
+    g->last_vp[1] = c->xf.viewport[3];
+    g->adapted_once = true;
     uint64_t loaded = g->grid.levels_loaded, freed = g->grid.levels_freed;
     fs_mpgrid_frame fr;
-    if (fs_mpgrid_adapt(&g->grid, &cam, g->boxes, g->keep_side, &fr) < 0) {
-        /* Only no memory can fail here: the boxes and matrices are finite
-         * (a non-finite matrix makes every box unprojectable: also OOM-free). */
-        fs_error(c, GL_OUT_OF_MEMORY);
-    }
+    /* Boxes and camera are finite here: only memory can fail. */
+    int rc = fs_mpgrid_adapt(&g->grid, &cam, g->boxes, g->keep_side, &fr);
     for (int p = 0; p < g->grid.L.n * g->grid.L.m; p++)
         g->want[p] = g->grid.finest[p];
     g->stats->mpgrid_levels_loaded += g->grid.levels_loaded - loaded;
     g->stats->mpgrid_levels_freed += g->grid.levels_freed - freed;
     g->stats->mpgrid_bytes_resident = g->grid.bytes_resident;
+    if (rc < 0)
+        fs_error(c, GL_OUT_OF_MEMORY);
+}
+
+void fs_exec_MPGridAdapt(fs_context *c, GLenum target)
+{
+    fs_tex_object *t = bound_grid(c, target, true);
+    if (!t)
+        return;
+    adapt_now(c, t->mpgrid);
 }
 
 void fs_exec_GetMPGridiv(fs_context *c, GLenum target, GLenum pname, GLint *params)
@@ -304,7 +337,7 @@ void fs_exec_GetMPGridiv(fs_context *c, GLenum target, GLenum pname, GLint *para
         *params = MAX_PYRAMIDS;
         return;
     }
-    if (pname < GL_MPGRID_PYRAMIDS_S || pname > GL_MPGRID_MERGE_BLOCK) {
+    if ((pname < GL_MPGRID_PYRAMIDS_S || pname > GL_MPGRID_MERGE_BLOCK) && pname != GL_MPGRID_AUTO_ADAPT) {
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
@@ -330,6 +363,7 @@ void fs_exec_GetMPGridiv(fs_context *c, GLenum target, GLenum pname, GLint *para
     case GL_MPGRID_KEEP_SIDE: v = (uint64_t)g->keep_side; break;
     case GL_MPGRID_MERGE_SIDE: v = (uint64_t)g->grid.merge_side; break;
     case GL_MPGRID_MERGE_BLOCK: v = (uint64_t)g->merge_block; break;
+    case GL_MPGRID_AUTO_ADAPT: v = g->auto_adapt ? GL_TRUE : GL_FALSE; break;
     default: break;
     }
     /* Integer queries of larger values saturate (GL 1.5 spec 6.1.2). */
@@ -364,6 +398,18 @@ bool fs_mpgrid_gl_complete(fs_tex_object *t)
     bool mip = t->min_filter != GL_NEAREST && t->min_filter != GL_LINEAR;
     t->last_level = ok && mip ? L->levels - 1 : 0;
     t->complete = ok ? 1 : 0;
+    /* GL_MPGRID_AUTO_ADAPT: the sampler asks for completeness before it
+     * textures a quad; adapt there when the camera changed since the last
+     * adaptation (a few compares per quad otherwise). */
+    if (ok && g->auto_adapt && g->ctx) {
+        const fs_context *c = g->ctx;
+        const fs_matrix *P = &c->xf.projection[c->xf.projection_top];
+        const fs_matrix *M = &c->xf.modelview[c->xf.modelview_top];
+        if (!g->adapted_once || memcmp(P->m, g->last_p, sizeof g->last_p) != 0 ||
+            memcmp(M->m, g->last_mv, sizeof g->last_mv) != 0 || c->xf.viewport[2] != g->last_vp[0] ||
+            c->xf.viewport[3] != g->last_vp[1])
+            adapt_now(g->ctx, g);
+    }
     return ok;
 }
 

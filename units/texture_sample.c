@@ -454,6 +454,8 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
                       t->mag_filter == GL_LINEAR;
     bool float_path = any_linear && (t->wrap_s == GL_CLAMP || t->wrap_t == GL_CLAMP);
     GLenum base = t->level[0].base_format;
+    if (c->cycle)
+        fs_cycle_texture(c->cycle, t, lr.level0, mip_linear && (float_path ? lr.weightf > 0.0f : lr.weight8 > 0) ? lr.level1 : -1, img_filter, q, s, tt);
     for (int i = 0; i < 4; i++) {
         if (!(q->mask & (1u << i)))
             continue;

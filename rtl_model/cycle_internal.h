@@ -1,0 +1,152 @@
+/*
+ * Internals of the cycle-level model shared by its unit files: the event
+ * recurrence over bounded FIFOs (cycle_model.c), memories (memory.c) and the
+ * per-unit service times (front_end.c, triangle_setup.c, rasterizer_stage.c,
+ * texture_stage.c, fragment_stage.c, occlusion_stage.c).
+ */
+#ifndef FS_CYCLE_INTERNAL_H
+#define FS_CYCLE_INTERNAL_H
+#include "cycle_model.h"
+#include "texture_cache.h"
+
+/* The FIFO in front of a stage: the start times of the last `depth` items
+ * the stage took from it (a ring), which is all the recurrence needs: item
+ * i may enter once item i - depth has left. */
+typedef struct fs_cyc_fifo {
+    uint64_t *ring;
+    uint32_t depth;
+    uint64_t count;     /* items taken so far */
+    uint64_t sptr;      /* first item not known to have started (occupancy) */
+    uint64_t hwm;       /* most items ever waiting, since the last reset */
+} fs_cyc_fifo;
+
+/* A memory: bandwidth in bytes per cycle, read latency.  `t` is the time the
+ * memory is busy until, in bytes (cycles * bandwidth), so fractional
+ * bandwidth use carries over exactly. */
+typedef struct fs_cyc_mem {
+    uint64_t bw, t;
+    uint32_t latency;
+} fs_cyc_mem;
+
+typedef struct fs_cyc_stage {
+    uint64_t free;          /* earliest start of the next item */
+    uint64_t busy, stalled;
+    uint32_t latency;
+    fs_cyc_fifo in;
+    fs_cyc_mem *mem;
+} fs_cyc_stage;
+
+/* Unit indices follow FS_CUNIT order in cycle_stats.def. */
+enum {
+#define FS_CUNIT(name, meaning) FS_U_##name,
+#include "cycle_stats.def"
+#undef FS_CUNIT
+    FS_U_COUNT
+};
+
+typedef struct fs_cyc_unit {
+    int n;                  /* instances */
+    fs_cyc_stage *st;
+    bool active;            /* work has reached it: it is in the chain */
+} fs_cyc_unit;
+
+/* Sampled mode: draws of one kind (mode, vertex count, state). */
+typedef struct fs_cyc_kind {
+    uint64_t key, seen, nsamp;
+    uint64_t pending;       /* estimated in this frame, charged at its end */
+    double sum, sumsq;
+} fs_cyc_kind;
+#define FS_CYC_KINDS 8192
+
+struct fs_cycle {
+    fs_config cfg;
+    fs_cycle_mode mode;
+    fs_cyc_unit u[FS_U_COUNT];
+    fs_cyc_stage rtri;        /* setup -> fragment generator FIFO (triangles) */
+    int nmem;
+    fs_cyc_mem *fbmem;        /* one per image engine, or the unified one */
+    fs_cyc_mem *texmem;       /* one per board, or the unified one */
+    fs_tex_cache **cache;     /* one per texture unit, NULL entries: no cache */
+    int engines_total;
+
+    uint64_t cmd;             /* the host's command time: nothing starts before it */
+    uint64_t done;            /* latest completion of any item */
+    uint64_t est;             /* estimated cycles (sampled mode) */
+    fs_cycle_stats acc;       /* cumulative counters (unit fields unused) */
+
+    /* current draw's front end share per triangle (1/256 cycles) */
+    uint64_t fe_per_tri, fe_frac;
+    uint64_t tri_arrival;
+    bool tri_started, tri_open;
+
+    /* functional counters at the last quad (deltas give the quad's outcome) */
+    uint64_t last_written, last_passed, last_early;
+    /* texture work of the quad being processed */
+    bool tex_pending;
+    uint64_t tex_service, tex_bytes, tex_misses;
+    /* occlusion work of the quad being processed */
+    bool occ_pending;
+    uint64_t occ_cycles, occ_cur, occ_writes, occ_arb;
+    int occ_last_engine, occ_last_x, occ_last_y, occ_last_writer;
+    bool occu_hooked;
+
+    /* draws and frames */
+    uint64_t frame, draw_index, query_index;
+    bool draw_open, draw_sampled, draw_estimated;
+    fs_cyc_kind *draw_kind;
+    GLenum draw_mode;
+    uint64_t draw_vertices;
+    fs_cycle_stats draw_snap, frame_snap;
+    uint64_t draw_t0;
+    fs_cycle_record_fn record_fn;
+    void *record_user;
+
+    /* queries */
+    GLuint query_id;
+    uint64_t query_issue;
+    fs_cycle_stats query_snap;
+    struct { GLuint id; uint64_t ready; } qready[64];
+    int nqready;
+
+    fs_cyc_kind *kinds;
+
+    /* sampled mode, frame sampling */
+    uint64_t nframes_trace;
+    bool frame_sampling, frame_skipped, finished;
+    uint64_t *frame_cycles;     /* per frame; skipped frames filled by fs_cycle_finish */
+    bool *frame_was_skipped;
+    uint64_t frame_cap, frames_done;
+    double frame_error;         /* absolute error estimate of the interpolated cycles */
+};
+
+/* ---- the recurrence (cycle_model.c) ---- */
+/* Passes one item through stage st: it arrives at `arr`, takes `service`
+ * cycles and `bytes` of st's memory bandwidth, and leaves when `next`'s
+ * FIFO has room (next NULL: no FIFO after it).  Returns its arrival at the
+ * next stage (departure + latency, + memory latency when it read memory). */
+uint64_t fs_cyc_step(fs_cyc_stage *st, uint64_t arr, uint64_t service, uint64_t bytes, bool reads,
+                     fs_cyc_stage *next);
+int fs_cyc_stage_init(fs_cyc_stage *st, uint32_t latency, uint32_t fifo_depth);
+void fs_cyc_stage_free(fs_cyc_stage *st);
+/* Latest completion time so far (the pipeline drained). */
+static inline uint64_t fs_cyc_time(const fs_cycle *cy) { return cy->done > cy->cmd ? cy->done : cy->cmd; }
+
+/* ---- memory.c ---- */
+void fs_cyc_mem_init(fs_cyc_mem *m, uint64_t bytes_per_cycle, uint32_t latency);
+/* Reserves `bytes` of bandwidth from cycle t on; returns the cycle the
+ * transfer ends (latency not included). */
+uint64_t fs_cyc_mem_reserve(fs_cyc_mem *m, uint64_t t, uint64_t bytes);
+
+/* ---- per-unit service times ---- */
+uint64_t fs_cyc_front_end_per_triangle(const fs_config *cfg, GLenum mode, size_t n); /* 1/256 cycles */
+uint64_t fs_cyc_front_end_cycles(const fs_config *cfg, size_t vertices);
+uint64_t fs_cyc_setup_cycles(const fs_config *cfg);
+uint64_t fs_cyc_raster_cycles(const fs_config *cfg, unsigned fragments);
+int fs_cyc_route(const fs_cycle *cy, int x, int y);     /* image engine of a pixel */
+int fs_cyc_texture_init(fs_cycle *cy, char *err, size_t errlen);
+void fs_cyc_texture_free(fs_cycle *cy);
+void fs_cyc_fragment_work(const fs_context *c, const fs_cycle *cy, unsigned reaching, unsigned passed,
+                          unsigned written, uint64_t *service, uint64_t *bytes, bool *reads);
+void fs_cyc_occlusion_hook(fs_cycle *cy, fs_context *c);
+void fs_cyc_occlusion_quad_end(fs_cycle *cy, uint64_t *service, bool *writes);
+#endif

@@ -1,0 +1,769 @@
+/*
+ * The engine of the cycle-level model: stages connected by bounded FIFOs,
+ * evaluated work item by work item (see cycle_model.h for the recurrence),
+ * the work stream from the functional pipeline, draws, frames, queries,
+ * synchronisation, sampled mode and the statistics records.
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cycle_internal.h"
+#include "../pipeline/context.h"
+#include "../units/occlusion_unit.h"
+#include "../driver/display_list.h"
+
+static bool frame_simulated(const fs_cycle *cy, uint64_t f);
+
+/* ---- statistics table ---- */
+
+const fs_cycle_stat_info fs_cycle_stat_table[] = {
+#define FS_CSTAT(name, unit, meaning) {#name, unit, meaning, offsetof(fs_cycle_stats, name)},
+#define FS_CUNIT(name, meaning)                                                                          \
+    {#name "_busy", "cycles", "cycles the " meaning " worked, summed over its instances",                \
+     offsetof(fs_cycle_stats, name##_busy)},                                                             \
+    {#name "_stalled", "cycles", "cycles the " meaning " held finished work because the next FIFO was "  \
+     "full or memory was busy", offsetof(fs_cycle_stats, name##_stalled)},                               \
+    {#name "_idle", "cycles", "cycles the " meaning " had no work (instances x cycles - busy - stalled)", \
+     offsetof(fs_cycle_stats, name##_idle)},                                                             \
+    {#name "_fifo_hwm", "entries", "most entries waiting in the FIFO feeding the " meaning               \
+     " (in the frame so far)", offsetof(fs_cycle_stats, name##_fifo_hwm)},
+#include "cycle_stats.def"
+#undef FS_CSTAT
+#undef FS_CUNIT
+};
+const int fs_cycle_stat_count = (int)(sizeof fs_cycle_stat_table / sizeof fs_cycle_stat_table[0]);
+
+static inline uint64_t *field(fs_cycle_stats *s, int i)
+{
+    return (uint64_t *)((char *)s + fs_cycle_stat_table[i].offset);
+}
+
+void fs_cycle_stats_list(FILE *f)
+{
+    for (int i = 0; i < fs_cycle_stat_count; i++)
+        fprintf(f, "%-24s %-10s %s\n", fs_cycle_stat_table[i].name, fs_cycle_stat_table[i].unit,
+                fs_cycle_stat_table[i].meaning);
+}
+
+void fs_cycle_stats_write_json(FILE *f, const fs_cycle_stats *s)
+{
+    for (int i = 0; i < fs_cycle_stat_count; i++)
+        fprintf(f, "%s\"%s\": %llu", i ? ", " : "", fs_cycle_stat_table[i].name,
+                (unsigned long long)*field((fs_cycle_stats *)s, i));
+}
+
+void fs_cycle_stats_write_csv_header(FILE *f)
+{
+    for (int i = 0; i < fs_cycle_stat_count; i++)
+        fprintf(f, ",%s", fs_cycle_stat_table[i].name);
+}
+
+void fs_cycle_stats_write_csv(FILE *f, const fs_cycle_stats *s)
+{
+    for (int i = 0; i < fs_cycle_stat_count; i++)
+        fprintf(f, ",%llu", (unsigned long long)*field((fs_cycle_stats *)s, i));
+}
+
+/* ---- stages and the recurrence ---- */
+
+typedef struct fifo_pos {
+    uint32_t head, sptr_pos;
+} fifo_pos;
+
+int fs_cyc_stage_init(fs_cyc_stage *st, uint32_t latency, uint32_t fifo_depth)
+{
+    memset(st, 0, sizeof *st);
+    st->latency = latency;
+    st->in.depth = fifo_depth ? fifo_depth : 1;
+    st->in.ring = calloc(st->in.depth, sizeof *st->in.ring);
+    return st->in.ring ? 0 : -1;
+}
+
+void fs_cyc_stage_free(fs_cyc_stage *st) { free(st->in.ring); }
+
+/* Records that the stage owning fifo started its next item at time t. */
+static inline void fifo_push(fs_cyc_fifo *f, uint64_t t)
+{
+    f->ring[f->count % f->depth] = t;
+    f->count++;
+}
+
+uint64_t fs_cyc_step(fs_cyc_stage *st, uint64_t arr, uint64_t service, uint64_t bytes, bool reads,
+                     fs_cyc_stage *next)
+{
+    uint64_t start = arr > st->free ? arr : st->free;
+    fifo_push(&st->in, start);
+    uint64_t finish = start + service, lat = st->latency;
+    if (bytes && st->mem) {
+        uint64_t m = fs_cyc_mem_reserve(st->mem, start, bytes);
+        if (m > finish)
+            finish = m;
+        if (reads)
+            lat += st->mem->latency;
+    }
+    uint64_t depart = finish;
+    if (next) {
+        fs_cyc_fifo *nf = &next->in;
+        uint32_t d = nf->depth;
+        /* Room when the item `depth` places ahead has left the FIFO. */
+        if (nf->count >= d) {
+            uint64_t slot = nf->ring[nf->count % d];
+            if (slot > depart)
+                depart = slot;
+        }
+        /* Occupancy on entry: earlier items not yet started.  Starts are in
+         * order, so a pointer that only moves forward finds them. */
+        uint64_t lo = nf->count > d ? nf->count - d : 0;
+        if (nf->sptr < lo)
+            nf->sptr = lo;
+        while (nf->sptr < nf->count && nf->ring[nf->sptr % d] <= depart)
+            nf->sptr++;
+        uint64_t occ = nf->count - nf->sptr + 1;
+        if (occ > nf->hwm)
+            nf->hwm = occ;
+    }
+    st->busy += service;
+    st->stalled += depart - start - service;
+    st->free = depart;
+    return depart + lat;
+}
+
+/* ---- creation ---- */
+
+static const long *unit_fifo(const fs_config *g, int u)
+{
+    switch (u) {
+    case FS_U_front_end: return &g->frontend_fifo_depth;
+    case FS_U_setup: return &g->frontend_fifo_depth;  /* the FIFO feeding setup */
+    case FS_U_raster: return &g->setup_fifo_depth;
+    case FS_U_texture: return &g->raster_fifo_depth;
+    case FS_U_fragment: return &g->texture_fifo_depth;
+    default: return &g->fragment_fifo_depth;
+    }
+}
+
+static long unit_latency(const fs_config *g, int u)
+{
+    switch (u) {
+    case FS_U_front_end: return g->frontend_latency;
+    case FS_U_setup: return g->setup_latency;
+    case FS_U_raster: return g->raster_latency;
+    case FS_U_texture: return g->texture_latency;
+    case FS_U_fragment: return g->fragment_latency;
+    default: return g->occlusion_latency;
+    }
+}
+
+fs_cycle *fs_cycle_create(const fs_config *cfg, fs_cycle_mode mode, char *err, size_t errlen)
+{
+    fs_cycle *cy = calloc(1, sizeof *cy);
+    if (!cy) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    cy->cfg = *cfg;
+    cy->mode = mode;
+    const fs_config *g = &cy->cfg;
+    int boards = (int)g->raster_boards, engines = boards * (int)g->fragment_image_engines;
+    cy->engines_total = engines;
+    int count[FS_U_COUNT] = {1, 1, boards, boards, engines, engines};
+    bool ok = true;
+    for (int u = 0; u < FS_U_COUNT; u++) {
+        cy->u[u].n = count[u];
+        cy->u[u].st = calloc((size_t)count[u], sizeof *cy->u[u].st);
+        ok &= cy->u[u].st != NULL;
+        for (int i = 0; ok && i < count[u]; i++)
+            ok &= fs_cyc_stage_init(&cy->u[u].st[i], (uint32_t)unit_latency(g, u), (uint32_t)*unit_fifo(g, u)) == 0;
+    }
+    ok &= fs_cyc_stage_init(&cy->rtri, 0, (uint32_t)g->setup_fifo_depth) == 0;
+    /* Memories: O2 has one for everything; otherwise a framebuffer memory
+     * per image engine and a texture memory per board. */
+    cy->nmem = g->memory_unified ? 1 : engines + boards;
+    fs_cyc_mem *mem = calloc((size_t)cy->nmem, sizeof *mem);
+    cy->kinds = mode == FS_CYCLE_SAMPLED ? calloc(FS_CYC_KINDS, sizeof *cy->kinds) : NULL;
+    if (!ok || !mem || (mode == FS_CYCLE_SAMPLED && !cy->kinds)) {
+        free(mem);
+        fs_cycle_destroy(cy);
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    if (g->memory_unified) {
+        fs_cyc_mem_init(&mem[0], (uint64_t)g->memory_bytes_per_cycle, (uint32_t)g->memory_latency);
+        cy->fbmem = cy->texmem = mem;
+    } else {
+        for (int i = 0; i < engines; i++)
+            fs_cyc_mem_init(&mem[i], (uint64_t)g->memory_bytes_per_cycle, (uint32_t)g->memory_latency);
+        for (int i = 0; i < boards; i++)
+            fs_cyc_mem_init(&mem[engines + i], (uint64_t)g->memory_texture_bytes_per_cycle,
+                            (uint32_t)g->memory_texture_latency);
+        cy->fbmem = mem;
+        cy->texmem = mem + engines;
+    }
+    for (int i = 0; i < engines; i++)
+        cy->u[FS_U_fragment].st[i].mem = g->memory_unified ? mem : &mem[i];
+    for (int i = 0; i < boards; i++)
+        cy->u[FS_U_texture].st[i].mem = g->memory_unified ? mem : &mem[engines + i];
+    if (fs_cyc_texture_init(cy, err, errlen) != 0) {
+        fs_cycle_destroy(cy);
+        return NULL;
+    }
+    cy->occ_last_engine = cy->occ_last_writer = -1;
+    return cy;
+}
+
+void fs_cycle_destroy(fs_cycle *cy)
+{
+    if (!cy)
+        return;
+    fs_cyc_texture_free(cy);
+    for (int u = 0; u < FS_U_COUNT; u++) {
+        for (int i = 0; cy->u[u].st && i < cy->u[u].n; i++)
+            fs_cyc_stage_free(&cy->u[u].st[i]);
+        free(cy->u[u].st);
+    }
+    fs_cyc_stage_free(&cy->rtri);
+    free(cy->frame_cycles);
+    free(cy->frame_was_skipped);
+    free(cy->fbmem);
+    free(cy->kinds);
+    free(cy);
+}
+
+static void resync_counters(fs_cycle *cy, const fs_context *c);
+
+void fs_cycle_attach(fs_cycle *cy, fs_context *c)
+{
+    c->cycle = cy;
+    resync_counters(cy, c);
+}
+
+void fs_cycle_set_record_fn(fs_cycle *cy, fs_cycle_record_fn fn, void *user)
+{
+    cy->record_fn = fn;
+    cy->record_user = user;
+}
+
+/* ---- snapshots ---- */
+
+static void snapshot(const fs_cycle *cy, fs_cycle_stats *s)
+{
+    *s = cy->acc;
+    s->cycles = fs_cyc_time(cy) + cy->est;
+#define FS_CUNIT(name, meaning)                                                     \
+    {                                                                               \
+        const fs_cyc_unit *un = &cy->u[FS_U_##name];                                \
+        s->name##_busy = s->name##_stalled = s->name##_fifo_hwm = 0;                \
+        for (int i = 0; i < un->n; i++) {                                           \
+            s->name##_busy += un->st[i].busy;                                       \
+            s->name##_stalled += un->st[i].stalled;                                 \
+            const fs_cyc_fifo *ff = FS_U_##name == FS_U_raster ? &cy->rtri.in : &un->st[i].in; \
+            if (ff->hwm > s->name##_fifo_hwm)                                       \
+                s->name##_fifo_hwm = ff->hwm;                                       \
+        }                                                                           \
+        s->name##_idle = 0;                                                         \
+    }
+#include "cycle_stats.def"
+#undef FS_CUNIT
+}
+
+/* now - then; the fields that are not sums are fixed up. */
+static void diff(const fs_cycle *cy, const fs_cycle_stats *now, const fs_cycle_stats *then, fs_cycle_stats *out)
+{
+    for (int i = 0; i < fs_cycle_stat_count; i++)
+        *field(out, i) = *field((fs_cycle_stats *)now, i) - *field((fs_cycle_stats *)then, i);
+    out->query_latency_max = now->query_latency_max;
+#define FS_CUNIT(name, meaning)                                                                   \
+    {                                                                                             \
+        uint64_t all = (uint64_t)cy->u[FS_U_##name].n * out->cycles;                              \
+        uint64_t used = out->name##_busy + out->name##_stalled;                                   \
+        out->name##_idle = all > used ? all - used : 0;                                           \
+        out->name##_fifo_hwm = now->name##_fifo_hwm;                                              \
+    }
+#include "cycle_stats.def"
+#undef FS_CUNIT
+    out->tex_cache_hit_permille = out->tex_cache_accesses ? out->tex_cache_hits * 1000 / out->tex_cache_accesses : 0;
+}
+
+void fs_cycle_totals(const fs_cycle *cy, fs_cycle_stats *out)
+{
+    fs_cycle_stats now, zero;
+    snapshot(cy, &now);
+    memset(&zero, 0, sizeof zero);
+    diff(cy, &now, &zero, out);
+}
+
+/* ---- triangles, draws ---- */
+
+/* The rasterizer "starts" a triangle without quads when it reaches it. */
+static inline void close_triangle(fs_cycle *cy)
+{
+    if (cy->tri_open && !cy->tri_started) {
+        uint64_t t = cy->tri_arrival;
+        for (int b = 0; b < cy->u[FS_U_raster].n; b++)
+            if (cy->u[FS_U_raster].st[b].free > t)
+                t = cy->u[FS_U_raster].st[b].free;
+        fifo_push(&cy->rtri.in, t);
+    }
+    cy->tri_open = false;
+}
+
+static uint64_t now_total(const fs_cycle *cy) { return fs_cyc_time(cy) + cy->est; }
+
+static uint64_t mix64(uint64_t h)
+{
+    /* splitmix64 finaliser */
+    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+    h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+    return h ^ (h >> 31);
+}
+
+static fs_cyc_kind *kind_of(fs_cycle *cy, const fs_context *c, GLenum mode, size_t n)
+{
+    const fs_fragment_state *f = &c->frag;
+    uint64_t flags = (uint64_t)f->depth_enabled | (uint64_t)f->depth_write << 1 | (uint64_t)f->blend_enabled << 2 |
+                     (uint64_t)f->alpha_enabled << 3 | (uint64_t)f->stencil_enabled << 4 |
+                     (uint64_t)f->scissor_enabled << 5 | (uint64_t)f->suppress_writes << 6 |
+                     (uint64_t)c->raster.interpolate_tex << 7 | (uint64_t)c->raster.cull_enabled << 8 |
+                     (uint64_t)(c->occlusion_hook != NULL) << 9;
+    uint64_t key = ((uint64_t)n << 16 | flags << 4 | (uint64_t)mode) + 1;
+    uint64_t h = mix64(key);
+    for (uint64_t i = 0; i < 64; i++) {
+        fs_cyc_kind *k = &cy->kinds[(h + i) & (FS_CYC_KINDS - 1)];
+        if (k->key == key)
+            return k;
+        if (k->key == 0) {
+            k->key = key;
+            return k;
+        }
+    }
+    return NULL; /* table crowded: simulate */
+}
+
+static void emit_draw(fs_cycle *cy, bool estimated, uint64_t cycles)
+{
+    fs_cycle_record r;
+    memset(&r, 0, sizeof r);
+    r.kind = FS_CYCLE_DRAW;
+    r.index = cy->draw_index;
+    r.frame = cy->frame;
+    r.id = cy->draw_mode;
+    r.vertices = cy->draw_vertices;
+    r.estimated = estimated;
+    if (estimated) {
+        r.s.cycles = r.s.estimated_cycles = cycles;
+        r.s.draws = r.s.draws_estimated = 1;
+    } else {
+        fs_cycle_stats now;
+        snapshot(cy, &now);
+        diff(cy, &now, &cy->draw_snap, &r.s);
+        r.s.draws = 1;
+    }
+    cy->record_fn(cy->record_user, &r);
+}
+
+static void close_draw(fs_cycle *cy)
+{
+    if (!cy->draw_open)
+        return;
+    close_triangle(cy);
+    cy->draw_open = false;
+    if (cy->draw_kind && cy->draw_sampled) {
+        double t = (double)(now_total(cy) - cy->draw_t0);
+        cy->draw_kind->nsamp++;
+        cy->draw_kind->sum += t;
+        cy->draw_kind->sumsq += t * t;
+    }
+    if (cy->record_fn)
+        emit_draw(cy, false, 0);
+    cy->draw_index++;
+}
+
+static void resync_counters(fs_cycle *cy, const fs_context *c)
+{
+    cy->last_written = c->stats.fragments_written;
+    cy->last_passed = c->stats.fragments_passed_depth;
+    cy->last_early = c->stats.killed_ownership + c->stats.killed_scissor + c->stats.killed_alpha;
+}
+
+bool fs_cycle_draw(fs_cycle *cy, fs_context *c, GLenum mode, size_t n)
+{
+    close_draw(cy);
+    /* The driver may reset the per-frame counters between draws: quads
+     * take their outcome as differences from here. */
+    resync_counters(cy, c);
+    if (!cy->occu_hooked && c->occlusion)
+        fs_cyc_occlusion_hook(cy, c);
+    cy->draw_mode = mode;
+    cy->draw_vertices = n;
+    cy->acc.draws++;
+    cy->draw_kind = NULL;
+    cy->draw_sampled = false;
+    if (cy->mode == FS_CYCLE_SAMPLED && !cy->frame_sampling) {
+        fs_cyc_kind *k = kind_of(cy, c, mode, n);
+        if (k) {
+            k->seen++;
+            if (k->nsamp >= (uint64_t)cy->cfg.sampling_min_samples && k->seen % (uint64_t)cy->cfg.sampling_every != 0) {
+                /* Estimated: charged at the frame end with the mean of the
+                 * kind's simulated draws then (a running mean taken now
+                 * would weigh the first samples too much). */
+                uint64_t e = (uint64_t)llround(k->sum / (double)k->nsamp);
+                k->pending++;
+                cy->acc.draws_estimated++;
+                if (cy->record_fn)
+                    emit_draw(cy, true, e);
+                cy->draw_index++;
+                return false;
+            }
+            cy->draw_kind = k;
+            cy->draw_sampled = true;
+        }
+    }
+    cy->draw_open = true;
+    cy->draw_t0 = now_total(cy);
+    if (cy->record_fn)
+        snapshot(cy, &cy->draw_snap);
+    cy->fe_per_tri = fs_cyc_front_end_per_triangle(&cy->cfg, mode, n);
+    cy->fe_frac = 0;
+    if (cy->fe_per_tri == 0) {
+        /* Points and lines: the front end and setup see the whole draw as
+         * one item; its fragments follow it. */
+        fs_cyc_unit *fe = &cy->u[FS_U_front_end], *su = &cy->u[FS_U_setup];
+        uint64_t a = fs_cyc_step(fe->st, cy->cmd, fs_cyc_front_end_cycles(&cy->cfg, n), 0, false, su->st);
+        a = fs_cyc_step(su->st, a, fs_cyc_setup_cycles(&cy->cfg) * n, 0, false, &cy->rtri);
+        cy->tri_arrival = a;
+        cy->tri_open = true;
+        cy->tri_started = false;
+        if (a > cy->done)
+            cy->done = a;
+    }
+    return true;
+}
+
+void fs_cycle_triangle(fs_cycle *cy)
+{
+    close_triangle(cy);
+    cy->fe_frac += cy->fe_per_tri;
+    uint64_t fe = cy->fe_frac >> 8;
+    cy->fe_frac &= 255u;
+    fs_cyc_stage *fst = cy->u[FS_U_front_end].st, *sst = cy->u[FS_U_setup].st;
+    uint64_t a = fs_cyc_step(fst, cy->cmd, fe, 0, false, sst);
+    a = fs_cyc_step(sst, a, fs_cyc_setup_cycles(&cy->cfg), 0, false, &cy->rtri);
+    cy->tri_arrival = a;
+    cy->tri_open = true;
+    cy->tri_started = false;
+    cy->acc.triangles++;
+    if (a > cy->done)
+        cy->done = a;
+}
+
+/* ---- quads ---- */
+
+void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q)
+{
+    unsigned m = q->mask & 0xfu;
+    unsigned n = (unsigned)((0x4332322132212110ull >> (4 * m)) & 0xfu);
+    const fs_stats *fst = &c->stats;
+    uint64_t early = fst->killed_ownership + fst->killed_scissor + fst->killed_alpha;
+    unsigned written = (unsigned)(fst->fragments_written - cy->last_written);
+    unsigned passed = (unsigned)(fst->fragments_passed_depth - cy->last_passed);
+    unsigned killed = (unsigned)(early - cy->last_early);
+    unsigned reaching = n > killed ? n - killed : 0;
+    cy->last_written = fst->fragments_written;
+    cy->last_passed = fst->fragments_passed_depth;
+    cy->last_early = early;
+
+    int e = fs_cyc_route(cy, q->x, q->y);
+    int b = e / (int)cy->cfg.fragment_image_engines;
+    fs_cyc_stage *rs = &cy->u[FS_U_raster].st[b];
+    fs_cyc_stage *ts = cy->tex_pending ? &cy->u[FS_U_texture].st[b] : NULL;
+    fs_cyc_stage *fs = &cy->u[FS_U_fragment].st[e];
+    fs_cyc_stage *os = cy->occ_pending ? &cy->u[FS_U_occlusion].st[e] : NULL;
+    uint64_t arr = cy->tri_arrival;
+    if (!cy->tri_started) {
+        fifo_push(&cy->rtri.in, arr > rs->free ? arr : rs->free);
+        cy->tri_started = true;
+    }
+    uint64_t a = fs_cyc_step(rs, arr, fs_cyc_raster_cycles(&cy->cfg, n), 0, false, ts ? ts : fs);
+    if (ts) {
+        cy->u[FS_U_texture].active = true;
+        a = fs_cyc_step(ts, a, cy->tex_service, cy->tex_bytes, cy->tex_misses && !cy->cfg.memory_prefetch, fs);
+        cy->tex_pending = false;
+    }
+    uint64_t service, bytes;
+    bool reads;
+    fs_cyc_fragment_work(c, cy, reaching, passed, written, &service, &bytes, &reads);
+    a = fs_cyc_step(fs, a, service, bytes, reads, os);
+    cy->acc.fb_bytes += bytes;
+    if (os) {
+        bool writes;
+        cy->u[FS_U_occlusion].active = true;
+        fs_cyc_occlusion_quad_end(cy, &service, &writes);
+        a = fs_cyc_step(os, a, service, 0, false, NULL);
+        if (writes)
+            a += (uint64_t)cy->cfg.occlusion_write_latency;
+    }
+    if (a > cy->done)
+        cy->done = a;
+    cy->acc.quads++;
+    cy->acc.fragments += n;
+}
+
+/* ---- clears, synchronisation, queries ---- */
+
+void fs_cycle_clear(fs_cycle *cy, fs_context *c, GLbitfield mask, int w, int h)
+{
+    (void)c;
+    close_triangle(cy);
+    uint64_t bpp = ((mask & GL_COLOR_BUFFER_BIT) ? 4u : 0u) +
+                   ((mask & (GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT)) ? 4u : 0u);
+    uint64_t pixels = (uint64_t)(w > 0 ? w : 0) * (uint64_t)(h > 0 ? h : 0);
+    int n = cy->engines_total;
+    uint64_t share = (pixels + (uint64_t)n - 1) / (uint64_t)n;
+    uint64_t rate = (uint64_t)cy->cfg.fragment_clear_pixels_per_cycle;
+    for (int e = 0; e < n; e++) {
+        fs_cyc_stage *fs = &cy->u[FS_U_fragment].st[e];
+        uint64_t a = fs_cyc_step(fs, cy->cmd, (share + rate - 1) / rate, share * bpp, false, NULL);
+        if (a > cy->done)
+            cy->done = a;
+    }
+    cy->acc.fb_bytes += pixels * bpp;
+}
+
+/* The time the host issues a command that waits: after the front end took
+ * everything before it. */
+static uint64_t issue_time(const fs_cycle *cy)
+{
+    uint64_t t = cy->u[FS_U_front_end].st[0].free;
+    return t > cy->cmd ? t : cy->cmd;
+}
+
+/* The front end waits until `ready`; returns the cycles it waited. */
+static uint64_t wait_until(fs_cycle *cy, uint64_t ready)
+{
+    uint64_t issue = issue_time(cy);
+    uint64_t w = ready > issue ? ready - issue : 0;
+    if (ready > cy->cmd)
+        cy->cmd = ready;
+    if (cy->cmd > cy->done)
+        cy->done = cy->cmd;
+    cy->acc.syncs++;
+    cy->acc.sync_cycles += w;
+    return w;
+}
+
+static uint64_t merge_latency(const fs_cycle *cy)
+{
+    return (uint64_t)cy->cfg.occlusion_merge_board_latency + (uint64_t)cy->cfg.occlusion_merge_global_latency;
+}
+
+void fs_cycle_read_pixels(fs_cycle *cy, fs_context *c, uint64_t bytes)
+{
+    (void)c;
+    close_triangle(cy);
+    uint64_t t = fs_cyc_time(cy);
+    fs_cyc_mem *m = cy->fbmem;
+    uint64_t ready = fs_cyc_mem_reserve(m, t, bytes) + m->latency;
+    cy->acc.fb_bytes += bytes;
+    wait_until(cy, ready);
+}
+
+void fs_cycle_render_mode(fs_cycle *cy, fs_context *c, GLenum mode)
+{
+    (void)mode;
+    close_triangle(cy);
+    fs_cyc_occlusion_hook(cy, c);
+    /* glRenderMode returns the pass's results: every fragment before it
+     * must have left the engines and the reports must be merged. */
+    cy->acc.rendermode_sync_cycles += wait_until(cy, fs_cyc_time(cy) + merge_latency(cy));
+}
+
+void fs_cycle_query_begin(fs_cycle *cy, fs_context *c, GLuint id)
+{
+    fs_cyc_occlusion_hook(cy, c);
+    cy->query_id = id;
+    cy->query_issue = now_total(cy);
+    snapshot(cy, &cy->query_snap);
+}
+
+void fs_cycle_query_end(fs_cycle *cy, fs_context *c)
+{
+    (void)c;
+    close_triangle(cy);
+    uint64_t issue = issue_time(cy);
+    uint64_t ready = fs_cyc_time(cy) + merge_latency(cy);
+    uint64_t lat = ready > issue ? ready - issue : 0;
+    cy->acc.queries++;
+    cy->acc.query_latency += lat;
+    if (lat > cy->acc.query_latency_max)
+        cy->acc.query_latency_max = lat;
+    int slot = -1;
+    for (int i = 0; i < cy->nqready; i++)
+        if (cy->qready[i].id == cy->query_id)
+            slot = i;
+    if (slot < 0)
+        slot = cy->nqready < 64 ? cy->nqready++ : (int)(cy->query_index % 64);
+    cy->qready[slot].id = cy->query_id;
+    cy->qready[slot].ready = ready;
+    if (cy->record_fn) {
+        fs_cycle_record r;
+        memset(&r, 0, sizeof r);
+        r.kind = FS_CYCLE_QUERY;
+        r.index = cy->query_index;
+        r.frame = cy->frame;
+        r.id = cy->query_id;
+        fs_cycle_stats now;
+        snapshot(cy, &now);
+        diff(cy, &now, &cy->query_snap, &r.s);
+        r.s.cycles = ready + cy->est - cy->query_issue;
+        r.s.query_latency_max = lat;
+        cy->record_fn(cy->record_user, &r);
+    }
+    cy->query_index++;
+}
+
+void fs_cycle_query_wait(fs_cycle *cy, fs_context *c, GLuint id)
+{
+    (void)c;
+    for (int i = 0; i < cy->nqready; i++)
+        if (cy->qready[i].id == id) {
+            close_triangle(cy);
+            wait_until(cy, cy->qready[i].ready);
+            return;
+        }
+}
+
+/* ---- frames ---- */
+
+void fs_cycle_frame_end(fs_cycle *cy, fs_cycle_stats *out)
+{
+    close_draw(cy);
+    close_triangle(cy);
+    for (int i = 0; cy->kinds && i < FS_CYC_KINDS; i++) {
+        fs_cyc_kind *k = &cy->kinds[i];
+        if (!k->pending)
+            continue;
+        uint64_t e = (uint64_t)llround((double)k->pending * k->sum / (double)k->nsamp);
+        cy->est += e;
+        cy->acc.estimated_cycles += e;
+        k->pending = 0;
+    }
+
+    wait_until(cy, fs_cyc_time(cy)); /* swap: the frame is done when drained */
+    fs_cycle_stats now;
+    snapshot(cy, &now);
+    diff(cy, &now, &cy->frame_snap, out);
+    cy->frame_snap = now;
+    for (int u = 0; u < FS_U_COUNT; u++)
+        for (int i = 0; i < cy->u[u].n; i++)
+            cy->u[u].st[i].in.hwm = 0;
+    cy->rtri.in.hwm = 0;
+    if (cy->frame_sampling) {
+        if (cy->frames_done == cy->frame_cap) {
+            uint64_t cap = cy->frame_cap ? cy->frame_cap * 2 : 64;
+            uint64_t *fc = realloc(cy->frame_cycles, cap * sizeof *fc);
+            if (fc)
+                cy->frame_cycles = fc;
+            bool *fsk = realloc(cy->frame_was_skipped, cap * sizeof *fsk);
+            if (fsk)
+                cy->frame_was_skipped = fsk;
+            if (fc && fsk)
+                cy->frame_cap = cap;
+        }
+        if (cy->frames_done < cy->frame_cap) {
+            cy->frame_cycles[cy->frames_done] = out->cycles;
+            cy->frame_was_skipped[cy->frames_done] = cy->frame_skipped;
+            cy->frames_done++;
+        }
+    }
+    cy->frame++;
+    cy->frame_skipped = cy->frame_sampling && !frame_simulated(cy, cy->frame);
+}
+
+/* ---- sampled mode: frames ---- */
+
+static bool frame_simulated(const fs_cycle *cy, uint64_t f)
+{
+    return f % (uint64_t)cy->cfg.sampling_frames == 0 || f + 1 >= cy->nframes_trace;
+}
+
+void fs_cycle_set_frames(fs_cycle *cy, uint64_t frames)
+{
+    cy->nframes_trace = frames;
+    cy->frame_sampling = cy->mode == FS_CYCLE_SAMPLED && frames >= 3 && cy->cfg.sampling_frames > 1;
+    cy->frame_skipped = cy->frame_sampling && !frame_simulated(cy, cy->frame);
+}
+
+bool fs_cycle_skip_call(const fs_cycle *cy, const fs_context *c, int cmd)
+{
+    if (!cy->frame_skipped)
+        return false;
+    /* Draws and what is allowed between glBegin and glEnd, glBegin itself,
+     * clears and read-backs; never while a display list is compiled (the
+     * call goes into the list). */
+    bool draw = (fs_cmd_table[cmd].flags & (FS_F_PRIM | FS_F_DRAW)) || cmd == FS_CMD_Begin ||
+                cmd == FS_CMD_Clear || cmd == FS_CMD_ReadPixels;
+    return draw && !fs_dlist_compiling(c);
+}
+
+void fs_cycle_finish(fs_cycle *cy)
+{
+    if (!cy->frame_sampling || cy->finished)
+        return;
+    cy->finished = true;
+    uint64_t n = cy->frames_done, add = 0;
+    double err2 = 0;
+    for (uint64_t f = 0; f < n; f++) {
+        if (!cy->frame_was_skipped[f])
+            continue;
+        uint64_t a = f, b = f;
+        while (a > 0 && cy->frame_was_skipped[a])
+            a--;
+        while (b + 1 < n && cy->frame_was_skipped[b])
+            b++;
+        double ca = (double)cy->frame_cycles[a], cb = cy->frame_was_skipped[b] ? ca : (double)cy->frame_cycles[b];
+        double w = b > a ? (double)(f - a) / (double)(b - a) : 0.0;
+        uint64_t e = (uint64_t)llround(ca + w * (cb - ca));
+        cy->frame_cycles[f] = e;
+        add += e;
+        /* Uncertainty of an interpolated frame: a quarter of the step
+         * between the simulated frames around it, independent per frame. */
+        double d = (cb - ca) / 4.0;
+        err2 += d * d;
+    }
+    cy->est += add;
+    cy->acc.estimated_cycles += add;
+    cy->frame_error = sqrt(err2);
+}
+
+uint64_t fs_cycle_frame_cycles(const fs_cycle *cy, uint64_t f, bool *skipped)
+{
+    if (!cy->frame_sampling || f >= cy->frames_done) {
+        *skipped = false;
+        return 0;
+    }
+    *skipped = cy->frame_was_skipped[f];
+    return cy->frame_cycles[f];
+}
+
+double fs_cycle_error_estimate(const fs_cycle *cy)
+{
+    if (cy->mode != FS_CYCLE_SAMPLED)
+        return 0.0;
+    /* Each kind's estimated draws took its sample mean: the error of that
+     * total has variance (draws estimated)^2 * s^2 / samples.  Kinds seen
+     * once or always equal contribute nothing (no spread measured). */
+    double var = 0.0;
+    for (int i = 0; i < FS_CYC_KINDS; i++) {
+        const fs_cyc_kind *k = &cy->kinds[i];
+        if (k->nsamp < 2 || k->seen <= k->nsamp)
+            continue;
+        double n = (double)k->nsamp, mean = k->sum / n;
+        double s2 = (k->sumsq - n * mean * mean) / (n - 1.0);
+        double m = (double)(k->seen - k->nsamp);
+        if (s2 > 0)
+            var += m * m * s2 / n;
+    }
+    var += cy->frame_error * cy->frame_error;
+    double total = (double)now_total(cy);
+    return total > 0 ? sqrt(var) / total : 0.0;
+}

@@ -1,0 +1,117 @@
+/*
+ * The cycle-level model (docs/cycle_model.md).
+ *
+ * The functional pipeline computes every value; while fs_context.cycle is
+ * set it reports the work it does through the fs_cycle_* calls below (one
+ * call per draw, triangle, quad, textured quad, clear, read-back, render
+ * mode change and query), and this model computes when each piece of work
+ * passes each clocked unit.  Units are stages with a service time per work
+ * item, a latency and a bounded FIFO in front; an item's departure is
+ *     depart = max(start + service, memory done, the downstream FIFO has room)
+ *     start  = max(arrival, the stage's previous departure)
+ * evaluated item by item in program order, which gives back-pressure,
+ * busy/stalled/idle cycles and FIFO high-water marks exactly without
+ * ticking empty cycles.  A unit no work has reached is not in the chain.
+ */
+#ifndef FS_CYCLE_MODEL_H
+#define FS_CYCLE_MODEL_H
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <GL/gl.h>
+#include "../pipeline/config.h"
+#include "../pipeline/rasterizer.h"
+
+typedef struct fs_context fs_context;
+typedef struct fs_cycle fs_cycle;
+struct fs_tex_object;
+
+typedef enum fs_cycle_mode {
+    FS_CYCLE_FULL,     /* every draw simulated */
+    FS_CYCLE_SAMPLED   /* some draws simulated, the others estimated and skipped */
+} fs_cycle_mode;
+
+/* Counters of one frame, draw or query (cycle_stats.def). */
+typedef struct fs_cycle_stats {
+#define FS_CSTAT(name, unit, meaning) uint64_t name;
+#define FS_CUNIT(name, meaning) uint64_t name##_busy, name##_stalled, name##_idle, name##_fifo_hwm;
+#include "cycle_stats.def"
+#undef FS_CSTAT
+#undef FS_CUNIT
+} fs_cycle_stats;
+
+typedef struct fs_cycle_stat_info {
+    const char *name, *unit, *meaning;
+    size_t offset;
+} fs_cycle_stat_info;
+extern const fs_cycle_stat_info fs_cycle_stat_table[];
+extern const int fs_cycle_stat_count;
+void fs_cycle_stats_list(FILE *f);
+
+/* Creates the model for a configuration (already checked).  NULL with a
+ * message in err on a configuration the model cannot build. */
+fs_cycle *fs_cycle_create(const fs_config *cfg, fs_cycle_mode mode, char *err, size_t errlen);
+void fs_cycle_destroy(fs_cycle *cy);
+/* Attaches the model to a context (sets c->cycle). */
+void fs_cycle_attach(fs_cycle *cy, fs_context *c);
+
+/* ---- calls from the functional pipeline (only when c->cycle != NULL) ---- */
+/* A draw of n vertices in mode; false in sampled mode when the draw is
+ * estimated: the caller then skips it (no vertices, no fragments). */
+bool fs_cycle_draw(fs_cycle *cy, fs_context *c, GLenum mode, size_t n);
+/* A triangle assembled (before culling and clipping). */
+void fs_cycle_triangle(fs_cycle *cy);
+/* A quad after the per-fragment operations ran on it. */
+void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q);
+/* The texture unit sampled quad q: levels (level1 < 0: one level), filter
+ * (GL_NEAREST or GL_LINEAR) and the pixels' s, t (divided by q). */
+void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, int level0, int level1, GLenum filter,
+                      const fs_quad *q, const float s[4], const float tt[4]);
+/* glClear of w x h pixels with mask. */
+void fs_cycle_clear(fs_cycle *cy, fs_context *c, GLbitfield mask, int w, int h);
+/* glReadPixels of `bytes` bytes: a drain, then the read. */
+void fs_cycle_read_pixels(fs_cycle *cy, fs_context *c, uint64_t bytes);
+/* glRenderMode(mode): a drain (the unit's counters are read or reset). */
+void fs_cycle_render_mode(fs_cycle *cy, fs_context *c, GLenum mode);
+void fs_cycle_query_begin(fs_cycle *cy, fs_context *c, GLuint id);
+void fs_cycle_query_end(fs_cycle *cy, fs_context *c);
+/* Reading a query's result: the front end waits until it is available. */
+void fs_cycle_query_wait(fs_cycle *cy, fs_context *c, GLuint id);
+
+/* ---- calls from the driver ---- */
+/* Sampled mode: the trace's frame count (decides frame or draw sampling). */
+void fs_cycle_set_frames(fs_cycle *cy, uint64_t frames);
+/* Sampled mode: should the driver skip this call (a draw, clear or
+ * read-back in a frame that is interpolated, not simulated)? */
+bool fs_cycle_skip_call(const fs_cycle *cy, const fs_context *c, int cmd);
+/* Sampled mode: after the last frame, fills in the skipped frames' cycles
+ * (linear between the simulated frames around them).  Idempotent. */
+void fs_cycle_finish(fs_cycle *cy);
+/* Cycles of frame f after fs_cycle_finish, and whether it was skipped. */
+uint64_t fs_cycle_frame_cycles(const fs_cycle *cy, uint64_t f, bool *skipped);
+/* Ends a frame: drains the pipeline and returns the frame's counters. */
+void fs_cycle_frame_end(fs_cycle *cy, fs_cycle_stats *out);
+/* Sampled mode's estimate of the relative standard error of the total
+ * cycles so far (0 in full mode). */
+double fs_cycle_error_estimate(const fs_cycle *cy);
+/* A closed draw or query, handed to the record callback as it closes (so
+ * long traces need no memory per draw). */
+typedef enum fs_cycle_kind { FS_CYCLE_DRAW, FS_CYCLE_QUERY } fs_cycle_kind;
+typedef struct fs_cycle_record {
+    fs_cycle_kind kind;
+    uint64_t index, frame;
+    GLuint id;          /* query name (queries) or GL mode (draws) */
+    uint64_t vertices;
+    bool estimated;
+    fs_cycle_stats s;
+} fs_cycle_record;
+typedef void (*fs_cycle_record_fn)(void *user, const fs_cycle_record *r);
+void fs_cycle_set_record_fn(fs_cycle *cy, fs_cycle_record_fn fn, void *user);
+/* Counters since creation (cycles included). */
+void fs_cycle_totals(const fs_cycle *cy, fs_cycle_stats *out);
+/* Writes one JSON object body / CSV line of a stats record. */
+void fs_cycle_stats_write_json(FILE *f, const fs_cycle_stats *s);
+void fs_cycle_stats_write_csv_header(FILE *f);
+void fs_cycle_stats_write_csv(FILE *f, const fs_cycle_stats *s);
+#endif

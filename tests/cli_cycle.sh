@@ -1,0 +1,109 @@
+#!/bin/bash
+# Command-line tests of the cycle-level model (rtl_model/, docs/cycle_model.md):
+# cycle mode gives the same images and functional counters as functional mode
+# on every scene of the corpus and in both architectures; configuration
+# errors name the file and line; configs/default.ini is what the key table
+# says; sampled mode stays within 2% of full cycle mode on the small scenes
+# (21 frames: frame sampling interpolates between simulated frames).
+. "$(dirname "$0")/lib_cli.sh"
+: "${FRAGSIM:?}" "${SCENEGEN:?}"
+ROOT=$(cd "$(dirname "$0")/.." && pwd)
+SCENES="city norwich cathedrals forest garbage terrain demo textured bench8 bench32"
+
+scene_trace() { # NAME [FRAMES] -> path of a small trace of that scene
+    local t="$WORK/$1${2:+_$2}.trace"
+    [ -f "$t" ] || "$SCENEGEN" "$1" --scale small ${2:+--frames $2} -o "$t" >/dev/null || return 1
+    echo "$t"
+}
+
+# The statistics file without the cycle model's member.
+strip_cycle() { awk '/^  "cycle": \{/ {skip = 1} !skip {print} skip && /^  \},$/ {skip = 0}' "$1"; }
+
+identical() { # SCENE CONFIG
+    local s=$1 cfg=$2 t
+    t=$(scene_trace "$s") || fail "scenegen $s failed"
+    local a="$WORK/f_$s" b="$WORK/c_$s"
+    rm -rf "$a" "$b"
+    "$FRAGSIM" replay --quiet --config "$cfg" --out "$a" "$t" 2>/dev/null || fail "$s: functional replay failed"
+    "$FRAGSIM" replay --quiet --mode cycle --config "$cfg" --out "$b" --csv "$b/c.csv" "$t" 2>/dev/null ||
+        fail "$s: cycle replay failed"
+    local n=0
+    for p in "$a"/frame_*.png; do
+        cmp -s "$p" "$b/$(basename "$p")" || fail "$s ($cfg): $(basename "$p") differs"
+        n=$((n + 1))
+    done
+    [ $n -gt 0 ] || fail "$s: no frame"
+    diff <(strip_cycle "$a/stats.json") <(strip_cycle "$b/stats.json") >/dev/null ||
+        fail "$s ($cfg): functional counters differ"
+    grep -q '"cycle": {' "$b/stats.json" || fail "$s: no cycle statistics"
+    # cycles of the frames: positive, and the CSV has one row per frame
+    [ "$(grep -c '^frame,' "$b/c.csv")" -eq $n ] || fail "$s: CSV frame rows"
+    awk -F, '$1 == "frame" && $7 <= 0 {bad = 1} END {exit bad}' "$b/c.csv" || fail "$s: a frame without cycles"
+}
+
+test_cycle_identical_o2() { for s in $SCENES; do identical "$s" "$ROOT/configs/o2.ini"; done; }
+test_cycle_identical_ir() { for s in $SCENES; do identical "$s" "$ROOT/configs/infinite_reality.ini"; done; }
+
+test_config_errors() {
+    local t; t=$(scene_trace demo) || fail "scenegen failed"
+    printf '[texture]\ncache_bytes = 4096\n\n[memory]\nno_such_key = 1\n' >"$WORK/unknown.ini"
+    "$FRAGSIM" replay --mode cycle --config "$WORK/unknown.ini" --out "$WORK/o" "$t" 2>"$WORK/e"
+    [ $? -eq 2 ] || fail "unknown key: expected exit 2"
+    grep -q "unknown.ini:5: unknown key memory.no_such_key" "$WORK/e" || fail "unknown key: $(cat "$WORK/e")"
+    printf '[memory]\nlatency = 3\nbytes_per_cycle = fast\n' >"$WORK/bad.ini"
+    "$FRAGSIM" replay --mode cycle --config "$WORK/bad.ini" --out "$WORK/o" "$t" 2>"$WORK/e"
+    [ $? -eq 2 ] || fail "bad value: expected exit 2"
+    grep -q "bad.ini:3: memory.bytes_per_cycle: 'fast' is not an integer" "$WORK/e" || fail "bad value: $(cat "$WORK/e")"
+    printf '[raster]\nboards = 65\n' >"$WORK/range.ini"
+    "$FRAGSIM" replay --mode cycle --config "$WORK/range.ini" --out "$WORK/o" "$t" 2>"$WORK/e"
+    [ $? -eq 2 ] || fail "out of range: expected exit 2"
+    grep -q "range.ini:2: raster.boards: 65 is out of range \[1, 64\]" "$WORK/e" || fail "range: $(cat "$WORK/e")"
+    printf '[memory]\nprefetch = maybe\n' >"$WORK/bool.ini"
+    "$FRAGSIM" replay --mode cycle --config "$WORK/bool.ini" --out "$WORK/o" "$t" 2>"$WORK/e"
+    grep -q "bool.ini:2: memory.prefetch: 'maybe' is not a boolean" "$WORK/e" || fail "bool: $(cat "$WORK/e")"
+    "$FRAGSIM" replay --mode cycle --set fragment.interleave=3 --out "$WORK/o" "$t" 2>"$WORK/e"
+    grep -q "fragment.interleave: 3 is not even" "$WORK/e" || fail "interleave: $(cat "$WORK/e")"
+    "$FRAGSIM" replay --mode cycle --set texture.cache_ways=3 --out "$WORK/o" "$t" 2>"$WORK/e"
+    grep -q "texture.cache_ways: 3 is not a power of two" "$WORK/e" || fail "ways: $(cat "$WORK/e")"
+    "$FRAGSIM" replay --mode turbo --out "$WORK/o" "$t" 2>"$WORK/e"
+    [ $? -eq 2 ] || fail "bad mode: expected exit 2"
+    grep -q "expected functional, cycle or sampled" "$WORK/e" || fail "mode: $(cat "$WORK/e")"
+}
+
+test_default_ini() {
+    "$FRAGSIM" config --defaults | cmp -s - "$ROOT/configs/default.ini" ||
+        fail "configs/default.ini differs from \`fragsim config --defaults\`"
+    local t; t=$(scene_trace demo) || fail "scenegen failed"
+    # the defaults file reads back to the built-in defaults: same cycles
+    "$FRAGSIM" replay --quiet --mode cycle --out "$WORK/d1" "$t" 2>/dev/null || fail "replay failed"
+    "$FRAGSIM" replay --quiet --mode cycle --config "$ROOT/configs/default.ini" --out "$WORK/d2" "$t" 2>/dev/null ||
+        fail "replay with default.ini failed"
+    diff "$WORK/d1/stats.json" "$WORK/d2/stats.json" >/dev/null || fail "default.ini is not the defaults"
+}
+
+test_stats_list() {
+    "$FRAGSIM" stats --list >"$WORK/l" || fail "stats --list failed"
+    for k in cycles fragment_busy occlusion_stalled texture_idle raster_fifo_hwm tex_cache_hit_permille query_latency; do
+        grep -q "^ *$k " "$WORK/l" || fail "stats --list does not explain $k"
+    done
+}
+
+test_sampled_error() {
+    for s in city norwich cathedrals forest garbage terrain demo textured; do
+        local t; t=$(scene_trace "$s" 21) || fail "scenegen $s failed"
+        local full samp
+        full=$("$FRAGSIM" bench --mode cycle --config "$ROOT/configs/o2.ini" "$t" | sed -nE 's/.*"cycles": ([0-9]+).*/\1/p')
+        samp=$("$FRAGSIM" bench --mode sampled --config "$ROOT/configs/o2.ini" "$t" | sed -nE 's/.*"cycles": ([0-9]+).*/\1/p')
+        [ -n "$full" ] && [ -n "$samp" ] || fail "$s: no cycles"
+        awk -v a="$full" -v b="$samp" 'BEGIN { e = (b - a) / a; if (e < 0) e = -e; exit !(e <= 0.02) }' ||
+            fail "$s: sampled $samp vs full $full cycles: more than 2% apart"
+    done
+}
+
+run_test test_cycle_identical_o2
+run_test test_cycle_identical_ir
+run_test test_config_errors
+run_test test_default_ini
+run_test test_stats_list
+run_test test_sampled_error
+finish

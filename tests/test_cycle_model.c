@@ -1,0 +1,239 @@
+/*
+ * The cycle-level model (rtl_model/) against closed-form values and
+ * brute-force counts:
+ *  - the FIFO recurrence: one stage with service s and N items takes
+ *    N*s + latency; two stages with a depth-1 FIFO run at the bottleneck's
+ *    rate (first stage's service + N * the slower one); busy + stalled +
+ *    idle adds up; high-water marks;
+ *  - memory bandwidth: N transfers of b bytes at B bytes per cycle end at
+ *    ceil(N*b/B);
+ *  - the Occlusion Engines: a rectangle of W x H pixels tested against T
+ *    tiles by E engines costs W*H*ceil(T/E) cycles (pixels counted here by
+ *    testing each pixel centre against the rectangle);
+ *  - glRenderMode's drain: the synchronisation cost computed by hand for a
+ *    single point through a pipeline of known latencies.
+ */
+#include <stdint.h>
+#include "check.h"
+#include "../pipeline/context.h"
+#include "../rtl_model/cycle_internal.h"
+#include "../glext/GL_FRAGSIM_occlusion_unit.h"
+
+TEST(single_stage_closed_form)
+{
+    for (uint32_t s = 0; s < 5; s++) {
+        for (uint32_t lat = 0; lat < 30; lat += 7) {
+            fs_cyc_stage st;
+            CHECK(fs_cyc_stage_init(&st, lat, 4) == 0);
+            const uint64_t N = 1000;
+            uint64_t last = 0;
+            for (uint64_t i = 0; i < N; i++)
+                last = fs_cyc_step(&st, 0, s, 0, false, NULL);
+            CHECK_EQ_UINT(last, N * s + lat);
+            CHECK_EQ_UINT(st.busy, N * s);
+            CHECK_EQ_UINT(st.stalled, 0);
+            fs_cyc_stage_free(&st);
+        }
+    }
+}
+
+static void two_stage(check_state *check_st_, uint64_t a, uint64_t b, uint64_t N)
+{
+    fs_cyc_stage A, B;
+    CHECK(fs_cyc_stage_init(&A, 0, 1) == 0);
+    CHECK(fs_cyc_stage_init(&B, 0, 1) == 0); /* the FIFO between A and B holds one item */
+    uint64_t done = 0;
+    for (uint64_t i = 0; i < N; i++) {
+        uint64_t t = fs_cyc_step(&A, 0, a, 0, false, &B);
+        done = fs_cyc_step(&B, t, b, 0, false, NULL);
+    }
+    /* The slower stage sets the rate; the first item pays the other one. */
+    uint64_t expect = a + b + (N - 1) * (a > b ? a : b);
+    CHECK_EQ_UINT(done, expect);
+    CHECK_EQ_UINT(A.busy, N * a);
+    CHECK_EQ_UINT(B.busy, N * b);
+    /* A stage either works, holds finished work (stalled) or waits: */
+    CHECK(A.busy + A.stalled <= done);
+    /* With b >= 2a, A is blocked by the full FIFO from the third item on:
+     * item 2 finishes at 3a and waits for B to start item 1 at a + b
+     * (b - 2a); every later item finishes a after B started item i-2 and
+     * waits for item i-1, b later (b - a). */
+    if (b >= 2 * a)
+        CHECK_EQ_UINT(A.stalled, (b - 2 * a) + (N - 3) * (b - a));
+    else if (a >= b)
+        CHECK_EQ_UINT(A.stalled, 0);
+    CHECK_EQ_UINT(B.in.hwm, 1);
+    fs_cyc_stage_free(&A);
+    fs_cyc_stage_free(&B);
+}
+
+TEST(two_stage_bottleneck)
+{
+    two_stage(check_st_, 2, 7, 100);
+    two_stage(check_st_, 7, 2, 100);
+    two_stage(check_st_, 3, 3, 50);
+}
+
+TEST(fifo_high_water_mark)
+{
+    /* A fast producer (service 1) before a slow consumer (service 10) with
+     * a FIFO of depth 8: the FIFO fills to 8 and the producer stalls. */
+    fs_cyc_stage A, B;
+    CHECK(fs_cyc_stage_init(&A, 0, 1) == 0);
+    CHECK(fs_cyc_stage_init(&B, 0, 8) == 0);
+    for (int i = 0; i < 100; i++)
+        fs_cyc_step(&B, fs_cyc_step(&A, 0, 1, 0, false, &B), 10, 0, false, NULL);
+    CHECK_EQ_UINT(B.in.hwm, 8);
+    CHECK_EQ_UINT(B.free, 1 + 100 * 10);
+    fs_cyc_stage_free(&A);
+    fs_cyc_stage_free(&B);
+}
+
+TEST(memory_bandwidth)
+{
+    fs_cyc_mem m;
+    fs_cyc_mem_init(&m, 8, 20);
+    uint64_t end = 0;
+    for (int i = 0; i < 1000; i++)
+        end = fs_cyc_mem_reserve(&m, 0, 12); /* 12 bytes at 8 per cycle: 1.5 cycles each */
+    CHECK_EQ_UINT(end, 1500);
+    /* a transfer after an idle gap starts at its request time */
+    CHECK_EQ_UINT(fs_cyc_mem_reserve(&m, 5000, 16), 5002);
+}
+
+/* Window coordinates of pixel edges as NDC (identity matrices). */
+#define WN 64
+static float ndc(int px) { return 2.0f * (float)px / (float)WN - 1.0f; }
+
+static fs_context *new_context(const fs_config *cfg, fs_cycle **cy, fs_cycle_mode mode)
+{
+    fs_context *c = fs_context_create(cfg, WN, WN);
+    char err[256];
+    *cy = fs_cycle_create(&c->cfg, mode, err, sizeof err);
+    if (!*cy)
+        fprintf(stderr, "%s\n", err);
+    fs_cycle_attach(*cy, c);
+    fsglViewport(c, 0, 0, WN, WN);
+    return c;
+}
+
+TEST(occlusion_engines_ceil_t_over_e)
+{
+    static const int T_list[] = {1, 3, 5, 8, 13};
+    for (int E = 1; E <= 4; E++) {
+        for (size_t ti = 0; ti < sizeof T_list / sizeof T_list[0]; ti++) {
+            int T = T_list[ti];
+            fs_config cfg;
+            fs_config_defaults(&cfg);
+            cfg.occlusion_engines = E;
+            fs_cycle *cy;
+            fs_context *c = new_context(&cfg, &cy, FS_CYCLE_FULL);
+            GLint tiles[13 * 4];
+            GLsizei sizes[13];
+            static GLuint store[13][16];
+            GLuint *bufs[13];
+            for (int t = 0; t < T; t++) {
+                tiles[4 * t] = tiles[4 * t + 1] = 0;
+                tiles[4 * t + 2] = tiles[4 * t + 3] = WN;
+                sizes[t] = 16;
+                bufs[t] = store[t];
+            }
+            fsglScissors(c, T, tiles);
+            fsglOcclusionBuffers(c, sizes, bufs);
+            fsglRenderMode(c, GL_BRIEF_OCCLUSION);
+            const int x0 = 8, x1 = 40, y0 = 6, y1 = 31;
+            fsglBegin(c, GL_QUADS);
+            fsglVertex2f(c, ndc(x0), ndc(y0));
+            fsglVertex2f(c, ndc(x1), ndc(y0));
+            fsglVertex2f(c, ndc(x1), ndc(y1));
+            fsglVertex2f(c, ndc(x0), ndc(y1));
+            fsglEnd(c);
+            fsglRenderMode(c, GL_RENDER);
+            CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+            /* brute force: pixel centres inside the rectangle */
+            uint64_t pixels = 0;
+            for (int y = 0; y < WN; y++)
+                for (int x = 0; x < WN; x++)
+                    pixels += x + 0.5 > x0 && x + 0.5 < x1 && y + 0.5 > y0 && y + 0.5 < y1;
+            fs_cycle_stats s;
+            fs_cycle_totals(cy, &s);
+            CHECK_EQ_UINT(s.occlusion_test_cycles, pixels * (uint64_t)((T + E - 1) / E));
+            CHECK_EQ_UINT(s.occlusion_write_cycles, 0); /* brief mode writes no hit list */
+            CHECK(s.occlusion_busy >= s.occlusion_test_cycles);
+            fs_cycle_destroy(cy);
+            fs_context_destroy(c);
+        }
+    }
+}
+
+TEST(rendermode_drain)
+{
+    /* Only latencies and unit services; memory wide enough to cost one
+     * cycle.  One point: front end 1 (1 vertex), setup 1, fragment
+     * generator 1, per-fragment 1, fragment latency 100, Occlusion Engines
+     * ceil(T/E), merges M = 7 + 11.
+     *   glRenderMode(BRIEF): nothing in flight, waits the merge: M.
+     *   the point: front end [M, M+1), setup [M+1, M+2), generator
+     *   [M+2, M+3), per-fragment [M+3, M+4) + 100, engines
+     *   [M+104, M+104+k).
+     *   glRenderMode(RENDER): issued when the front end took the point
+     *   (M+1), results ready at M+104+k, merged M later. */
+    for (int T = 1; T <= 6; T++) {
+        fs_config cfg;
+        fs_config_defaults(&cfg);
+        cfg.occlusion_engines = 2;
+        cfg.frontend_cycles_per_vertex = 1;
+        cfg.frontend_latency = cfg.setup_latency = cfg.raster_latency = 0;
+        cfg.setup_cycles_per_triangle = 1;
+        cfg.raster_fragments_per_cycle = 1;
+        cfg.fragment_cycles_per_fragment = 1;
+        cfg.fragment_latency = 100;
+        cfg.occlusion_latency = 0;
+        cfg.occlusion_merge_board_latency = 7;
+        cfg.occlusion_merge_global_latency = 11;
+        cfg.memory_bytes_per_cycle = 65536;
+        cfg.memory_latency = 0;
+        fs_cycle *cy;
+        fs_context *c = new_context(&cfg, &cy, FS_CYCLE_FULL);
+        GLint tiles[6 * 4];
+        GLsizei sizes[6];
+        static GLuint store[6][16];
+        GLuint *bufs[6];
+        for (int t = 0; t < T; t++) {
+            tiles[4 * t] = tiles[4 * t + 1] = 0;
+            tiles[4 * t + 2] = tiles[4 * t + 3] = WN;
+            sizes[t] = 16;
+            bufs[t] = store[t];
+        }
+        fsglScissors(c, T, tiles);
+        fsglOcclusionBuffers(c, sizes, bufs);
+        fsglRenderMode(c, GL_BRIEF_OCCLUSION);
+        fsglBegin(c, GL_POINTS);
+        fsglVertex2f(c, (ndc(20) + ndc(21)) / 2, (ndc(9) + ndc(10)) / 2);
+        fsglEnd(c);
+        fsglRenderMode(c, GL_RENDER);
+        CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+        CHECK_EQ_UINT(c->stats.occlusion_fragments, 1);
+        uint64_t M = 18, k = (uint64_t)(T + 1) / 2;
+        uint64_t first = M, second = (M + 104 + k + M) - (M + 1);
+        fs_cycle_stats s;
+        fs_cycle_totals(cy, &s);
+        CHECK_EQ_UINT(s.rendermode_sync_cycles, first + second);
+        CHECK_EQ_UINT(s.syncs, 2);
+        CHECK_EQ_UINT(s.cycles, M + 104 + k + M);
+        fs_cycle_destroy(cy);
+        fs_context_destroy(c);
+    }
+}
+
+TEST_LIST = {
+    TEST_ENTRY(single_stage_closed_form),
+    TEST_ENTRY(two_stage_bottleneck),
+    TEST_ENTRY(fifo_high_water_mark),
+    TEST_ENTRY(memory_bandwidth),
+    TEST_ENTRY(occlusion_engines_ceil_t_over_e),
+    TEST_ENTRY(rendermode_drain),
+    TEST_END,
+};
+
+int main(int argc, char **argv) { return check_main(argc, argv, test_list); }
