@@ -55,11 +55,9 @@ static void usage_replay(FILE *f, bool check)
             "%s"
             "  --mode M           functional (default), cycle (the cycle-level model, rtl_model/:\n"
             "                     cycles per frame, draw and query; same images and counters) or\n"
-            "                     sampled (one frame in sampling.frames simulated, the frames\n"
-            "                     between skipped and their cycles interpolated; 1-2 frame traces:\n"
-            "                     one draw of a kind in sampling.every simulated, the others\n"
-            "                     estimated).  Skipped work is NOT rendered: images and functional\n"
-            "                     counters are incomplete; cycles come with an error estimate\n"
+            "                     sampled (draws of a kind simulated one in sampling.every, the\n"
+            "                     others estimated and NOT rendered: images and functional\n"
+            "                     counters are then incomplete; cycles come with an error estimate)\n"
             "  --csv FILE         cycle statistics, one row per frame, draw and query (with --mode)\n"
             "  --quiet            no progress line\n",
             check ? "check" : "replay",

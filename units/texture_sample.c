@@ -217,7 +217,18 @@ static void sample_level8(const fs_tex_object *t, int level, GLenum filter, floa
 static void fetch_f(const fs_tex_object *t, const fs_tex_image *img, int x, int y, float out[4])
 {
     if (x < 0 || y < 0 || x >= img->width || y >= img->height) {
-        memcpy(out, t->border, 4 * sizeof(float));
+        /* 3.8.7: the border colour is taken as a texel of the image's base
+         * format, expanded like the stored texels (texture_priv.h), as
+         * Mesa converts it for the sampler. */
+        const float *b = t->border;
+        switch (img->base_format) {
+        case GL_LUMINANCE: out[0] = out[1] = out[2] = b[0]; out[3] = 1.0f; break;
+        case GL_LUMINANCE_ALPHA: out[0] = out[1] = out[2] = b[0]; out[3] = b[3]; break;
+        case GL_INTENSITY: out[0] = out[1] = out[2] = out[3] = b[0]; break;
+        case GL_ALPHA: out[0] = out[1] = out[2] = 0.0f; out[3] = b[3]; break;
+        case GL_RGB: memcpy(out, b, 3 * sizeof(float)); out[3] = 1.0f; break;
+        default: memcpy(out, b, 4 * sizeof(float)); break;
+        }
         return;
     }
     uint8_t tmp[4];
@@ -448,11 +459,11 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
         mip_linear = false;
         lr.level0 = lr.level1 = 0;
     }
-    /* The border colour only matters for GL_CLAMP with LINEAR; llvmpipe
-     * filters that case in float. */
-    bool any_linear = mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR ||
-                      t->mag_filter == GL_LINEAR;
-    bool float_path = any_linear && (t->wrap_s == GL_CLAMP || t->wrap_t == GL_CLAMP);
+    /* llvmpipe filters in 8-bit fixed point only with the "simple" wraps
+     * REPEAT and CLAMP_TO_EDGE (gallivm lp_is_simple_wrap_mode); GL_CLAMP
+     * on either axis takes the float path, whatever the filter (its MIPmap
+     * blend then rounds differently, and LINEAR reaches the border). */
+    bool float_path = t->wrap_s == GL_CLAMP || t->wrap_t == GL_CLAMP;
     GLenum base = t->level[0].base_format;
     if (c->cycle)
         fs_cycle_texture(c->cycle, t, lr.level0, mip_linear && (float_path ? lr.weightf > 0.0f : lr.weight8 > 0) ? lr.level1 : -1, img_filter, q, s, tt);
