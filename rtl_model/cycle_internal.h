@@ -99,7 +99,6 @@ struct fs_cycle {
     fs_cycle_stats draw_snap, frame_snap;
     uint64_t draw_t0;
     fs_cycle_record_fn record_fn;
-    bool record_draws;        /* per-draw records too (a snapshot per draw) */
     void *record_user;
 
     /* queries */

@@ -237,9 +237,8 @@ void fs_cycle_attach(fs_cycle *cy, fs_context *c)
     resync_counters(cy, c);
 }
 
-void fs_cycle_set_record_fn(fs_cycle *cy, fs_cycle_record_fn fn, void *user, bool draws)
+void fs_cycle_set_record_fn(fs_cycle *cy, fs_cycle_record_fn fn, void *user)
 {
-    cy->record_draws = fn && draws;
     cy->record_fn = fn;
     cy->record_user = user;
 }
@@ -374,7 +373,7 @@ static void close_draw(fs_cycle *cy)
         cy->draw_kind->sum += t;
         cy->draw_kind->sumsq += t * t;
     }
-    if (cy->record_draws)
+    if (cy->record_fn)
         emit_draw(cy, false, 0);
     cy->draw_index++;
 }
@@ -410,7 +409,7 @@ bool fs_cycle_draw(fs_cycle *cy, fs_context *c, GLenum mode, size_t n)
                 uint64_t e = (uint64_t)llround(k->sum / (double)k->nsamp);
                 k->pending++;
                 cy->acc.draws_estimated++;
-                if (cy->record_draws)
+                if (cy->record_fn)
                     emit_draw(cy, true, e);
                 cy->draw_index++;
                 return false;
@@ -421,7 +420,7 @@ bool fs_cycle_draw(fs_cycle *cy, fs_context *c, GLenum mode, size_t n)
     }
     cy->draw_open = true;
     cy->draw_t0 = now_total(cy);
-    if (cy->record_draws)
+    if (cy->record_fn)
         snapshot(cy, &cy->draw_snap);
     cy->fe_per_tri = fs_cyc_front_end_per_triangle(&cy->cfg, mode, n);
     cy->fe_frac = 0;

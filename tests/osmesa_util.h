@@ -7,14 +7,18 @@
  *   osm o;  osm_open(&o, w, h);  ... gl calls ...  osm_close(&o);
  *   G(Name, args...)   calls fsglName(c, args...) when the fs_context *c in
  *                      scope is non-NULL, else glName(args...) on OSMesa.
+ *   osm_pair p;  osm_pair_render(&p, w, h, create, draw, user);  ... p.d,
+ *                      p.c (the model), p.ref.color ...  osm_pair_close(&p);
  */
 #ifndef FS_TEST_OSMESA_UTIL_H
 #define FS_TEST_OSMESA_UTIL_H
 #include <GL/osmesa.h>
 #include <stdbool.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "../pipeline/context.h"
 
 #define G(name, ...) do { if (c) fsgl##name(c, __VA_ARGS__); else gl##name(__VA_ARGS__); } while (0)
 #define G0(name) do { if (c) fsgl##name(c); else gl##name(); } while (0)
@@ -65,5 +69,71 @@ static inline void img_compare(const uint8_t *a, const uint8_t *b, long n, img_d
         d->differ_gt1 += m > 1;
         d->maxd = m > d->maxd ? m : d->maxd;
     }
+}
+
+/* One drawing on both: draw(NULL, ...) on a new OSMesa context, then
+ * draw(c, ...) on a model context from create(w, h) (fs_context_create's
+ * defaults when create is NULL), and the colour buffers compared into d.
+ * False when a context cannot be made (nothing left to close then). */
+typedef struct osm_pair { osm ref; fs_context *c; img_diff d; } osm_pair;
+
+static inline bool osm_pair_render(osm_pair *p, int w, int h, fs_context *(*create)(int w, int h),
+                                   void (*draw)(fs_context *c, const void *user, int w, int h), const void *user)
+{
+    memset(p, 0, sizeof *p);
+    if (!osm_open(&p->ref, w, h)) {
+        osm_close(&p->ref);
+        return false;
+    }
+    draw(NULL, user, w, h);
+    glFinish();
+    p->c = create ? create(w, h) : fs_context_create(NULL, w, h);
+    if (!p->c) {
+        osm_close(&p->ref);
+        return false;
+    }
+    draw(p->c, user, w, h);
+    img_compare(p->c->fb.color, p->ref.color, (long)w * h, &p->d);
+    return true;
+}
+
+static inline void osm_pair_close(osm_pair *p)
+{
+    fs_context_destroy(p->c);
+    osm_close(&p->ref);
+    p->c = NULL;
+}
+
+/* For looking at a comparison: OSMesa's image, the model's and, when
+ * diff_panel, a map of their difference (red: more than 1, green: 1) side
+ * by side as a binary PPM, every pixel scale x scale, top row first. */
+static inline void img_dump_ppm(const char *fn, const uint8_t *ref, const uint8_t *mine, int w, int h, int scale,
+                                bool diff_panel)
+{
+    FILE *f = fopen(fn, "wb");
+    if (!f)
+        return;
+    int panels = diff_panel ? 3 : 2;
+    fprintf(f, "P6 %d %d 255\n", w * panels * scale, h * scale);
+    for (int y = h * scale - 1; y >= 0; y--)
+        for (int x = 0; x < w * panels * scale; x++) {
+            int px = (x / scale) % w, part = x / scale / w;
+            long o = ((long)(y / scale) * w + px) * 4;
+            uint8_t rgb[3];
+            if (part < 2) {
+                memcpy(rgb, (part ? mine : ref) + o, 3);
+            } else {
+                int m = 0;
+                for (int k = 0; k < 4; k++) {
+                    int e = abs((int)mine[o + k] - (int)ref[o + k]);
+                    m = e > m ? e : m;
+                }
+                rgb[0] = m > 1 ? 255 : 0;
+                rgb[1] = m == 1 ? 255 : 0;
+                rgb[2] = 0;
+            }
+            fwrite(rgb, 1, 3, f);
+        }
+    fclose(f);
 }
 #endif

@@ -17,24 +17,16 @@
 #include <time.h>
 #include <math.h>
 #include "check.h"
+#include "osmesa_util.h"
 #include "../pipeline/context.h"
 #include "../pipeline/fragment_stages.h"
 
 /* ---------------------------------------------------------------- helpers */
 
-typedef struct osm {
-    OSMesaContext ctx;
-    uint8_t *buf;
-    int w, h;
-} osm;
-
-static bool osm_open(osm *o, int w, int h)
+/* A window-sized orthographic projection on top of osm_open. */
+static bool osm_open_ortho(osm *o, int w, int h)
 {
-    o->w = w;
-    o->h = h;
-    o->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-    o->buf = calloc((size_t)w * (size_t)h, 4);
-    if (!o->ctx || !o->buf || !OSMesaMakeCurrent(o->ctx, o->buf, GL_UNSIGNED_BYTE, w, h))
+    if (!osm_open(o, w, h))
         return false;
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
@@ -45,13 +37,6 @@ static bool osm_open(osm *o, int w, int h)
     glDisable(GL_DITHER); /* no effect in llvmpipe either way; kept equal below */
     glEnable(GL_DITHER);
     return true;
-}
-
-static void osm_close(osm *o)
-{
-    if (o->ctx)
-        OSMesaDestroyContext(o->ctx);
-    free(o->buf);
 }
 
 /* Points of size 1 at pixel centres, colours and depths per point. */
@@ -177,7 +162,7 @@ static long count_diff(const uint8_t *a, const uint8_t *b, size_t n, int *maxd)
 TEST(color_conversion_vs_osmesa)
 {
     osm o;
-    REQUIRE(osm_open(&o, SW, SH));
+    REQUIRE(osm_open_ortho(&o, SW, SH));
     fs_context *c = fs_context_create(NULL, SW, SH);
     REQUIRE(c);
     int n = SW * SH;
@@ -221,7 +206,7 @@ TEST(blend_all_factor_pairs_vs_osmesa)
 {
     enum { BW = 128, BH = 128 };
     osm o;
-    REQUIRE(osm_open(&o, BW, BH));
+    REQUIRE(osm_open_ortho(&o, BW, BH));
     fs_context *c = fs_context_create(NULL, BW, BH);
     REQUIRE(c);
     int n = BW * BH;
@@ -291,7 +276,7 @@ TEST(blend_all_factor_pairs_vs_osmesa)
 TEST(blend_src_alpha_exhaustive_vs_osmesa)
 {
     osm o;
-    REQUIRE(osm_open(&o, SW, SH));
+    REQUIRE(osm_open_ortho(&o, SW, SH));
     fs_context *c = fs_context_create(NULL, SW, SH);
     REQUIRE(c);
     int n = SW * SH;
@@ -345,7 +330,7 @@ TEST(alpha_test_vs_osmesa)
     enum { AW = 64, AH = 64 };
     static const float refs[] = {0.0f, 0.5f, 1.0f / 3.0f, 0.2f, 128.0f / 255.0f, 1.0f};
     osm o;
-    REQUIRE(osm_open(&o, AW, AH));
+    REQUIRE(osm_open_ortho(&o, AW, AH));
     fs_context *c = fs_context_create(NULL, AW, AH);
     REQUIRE(c);
     int n = AW * AH;
@@ -402,7 +387,7 @@ TEST(logic_ops_vs_osmesa)
 {
     enum { LW = 64, LH = 64 };
     osm o;
-    REQUIRE(osm_open(&o, LW, LH));
+    REQUIRE(osm_open_ortho(&o, LW, LH));
     fs_context *c = fs_context_create(NULL, LW, LH);
     REQUIRE(c);
     int n = LW * LH;
@@ -551,7 +536,7 @@ TEST(random_scene_vs_osmesa)
 {
     enum { RW = 48, RH = 40, NZ = 16, DRAWS = 300 };
     osm o;
-    REQUIRE(osm_open(&o, RW, RH));
+    REQUIRE(osm_open_ortho(&o, RW, RH));
     fs_context *c = fs_context_create(NULL, RW, RH);
     REQUIRE(c);
     int n = RW * RH;
@@ -668,7 +653,7 @@ TEST(clear_color_vs_osmesa)
 {
     enum { CW = 8, CH = 8 };
     osm o;
-    REQUIRE(osm_open(&o, CW, CH));
+    REQUIRE(osm_open_ortho(&o, CW, CH));
     fs_context *c = fs_context_create(NULL, CW, CH);
     REQUIRE(c);
     uint8_t ref[CW * CH * 4];
@@ -717,7 +702,7 @@ TEST(clear_depth_stencil_vs_osmesa)
 {
     enum { CW = 8, CH = 8 };
     osm o;
-    REQUIRE(osm_open(&o, CW, CH));
+    REQUIRE(osm_open_ortho(&o, CW, CH));
     fs_context *c = fs_context_create(NULL, CW, CH);
     REQUIRE(c);
     uint32_t zref[CW * CH];
@@ -840,7 +825,7 @@ TEST(read_pixels_depth_vs_osmesa)
 {
     enum { RW = 64, RH = 32 };
     osm o;
-    REQUIRE(osm_open(&o, RW, RH));
+    REQUIRE(osm_open_ortho(&o, RW, RH));
     fs_context *c = fs_context_create(NULL, RW, RH);
     REQUIRE(c);
     int n = RW * RH;
@@ -1020,7 +1005,7 @@ static void error_call(fs_context *c, int i, void *buf)
 TEST(gl_errors_match_osmesa)
 {
     osm o;
-    REQUIRE(osm_open(&o, 8, 8));
+    REQUIRE(osm_open_ortho(&o, 8, 8));
     fs_context *c = fs_context_create(NULL, 8, 8);
     REQUIRE(c);
     uint8_t buf[64];

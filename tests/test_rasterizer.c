@@ -14,6 +14,7 @@
 #include <math.h>
 #include <time.h>
 #include "check.h"
+#include "osmesa_util.h"
 #include "../pipeline/context.h"
 
 /* ---- a tiny deterministic generator ---- */
@@ -42,21 +43,10 @@ typedef struct tv {
     float col[4];
 } tv;
 
-typedef struct osm {
-    OSMesaContext ctx;
-    int w, h;
-    uint8_t *color;
-} osm;
-
-static bool osm_open(osm *o, int w, int h)
+/* Identity transforms and smooth shading on top of osm_open. */
+static bool osm_open_identity(osm *o, int w, int h)
 {
-    o->w = w;
-    o->h = h;
-    o->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-    o->color = calloc((size_t)w * h, 4);
-    if (!o->ctx || !o->color)
-        return false;
-    if (!OSMesaMakeCurrent(o->ctx, o->color, GL_UNSIGNED_BYTE, w, h))
+    if (!osm_open(o, w, h))
         return false;
     glViewport(0, 0, w, h);
     glMatrixMode(GL_PROJECTION);
@@ -66,13 +56,6 @@ static bool osm_open(osm *o, int w, int h)
     glShadeModel(GL_SMOOTH);
     glDisable(GL_DITHER);
     return true;
-}
-
-static void osm_close(osm *o)
-{
-    if (o->ctx)
-        OSMesaDestroyContext(o->ctx);
-    free(o->color);
 }
 
 static void osm_clear(void)
@@ -289,7 +272,7 @@ static fs_context *make_ctx(int w, int h)
 TEST(fill_convention)
 {
     osm o;
-    REQUIRE(osm_open(&o, W, H));
+    REQUIRE(osm_open_identity(&o, W, H));
     fs_context *c = make_ctx(W, H);
     REQUIRE(c);
     run_totals t = {0};
@@ -332,7 +315,7 @@ static void random_run(check_state *check_st_, int frames, int per_frame, float 
                        uint64_t seed, const char *name, bool y_raster)
 {
     osm o;
-    REQUIRE(osm_open(&o, w, h));
+    REQUIRE(osm_open_identity(&o, w, h));
     fs_context *c = make_ctx(w, h);
     REQUIRE(c);
     c->raster.use_y_raster = y_raster;
@@ -388,7 +371,7 @@ TEST(random_odd_size)
 TEST(random_odd_size_gl_y)
 {
     osm o;
-    REQUIRE(osm_open(&o, 67, 45));
+    REQUIRE(osm_open_identity(&o, 67, 45));
     fs_context *c = make_ctx(67, 45);
     REQUIRE(c);
     rng r = {0xabcdefull};
@@ -410,7 +393,7 @@ TEST(random_odd_size_gl_y)
 TEST(slivers)
 {
     osm o;
-    REQUIRE(osm_open(&o, W, H));
+    REQUIRE(osm_open_identity(&o, W, H));
     fs_context *c = make_ctx(W, H);
     REQUIRE(c);
     rng r = {99};
@@ -473,7 +456,7 @@ static void apply_setup(fs_context *c, const gl_setup *g)
 TEST(culling)
 {
     osm o;
-    REQUIRE(osm_open(&o, W, H));
+    REQUIRE(osm_open_identity(&o, W, H));
     fs_context *c = make_ctx(W, H);
     REQUIRE(c);
     const GLenum modes[3] = {GL_FRONT, GL_BACK, GL_FRONT_AND_BACK};
@@ -509,7 +492,7 @@ TEST(culling)
 TEST(polygon_offset)
 {
     osm o;
-    REQUIRE(osm_open(&o, W, H));
+    REQUIRE(osm_open_identity(&o, W, H));
     fs_context *c = make_ctx(W, H);
     REQUIRE(c);
     const float params[4][2] = {{1.0f, 1.0f}, {2.5f, 0.0f}, {0.0f, 4.0f}, {-1.0f, -2.0f}};
@@ -541,7 +524,7 @@ TEST(polygon_offset)
 TEST(perspective)
 {
     osm o;
-    REQUIRE(osm_open(&o, W, H));
+    REQUIRE(osm_open_identity(&o, W, H));
     fs_context *c = make_ctx(W, H);
     REQUIRE(c);
     c->raster.use_y_raster = true;
@@ -627,7 +610,7 @@ TEST(nan_inf_huge)
 TEST(window_edge_unclipped)
 {
     osm o;
-    REQUIRE(osm_open(&o, W, H));
+    REQUIRE(osm_open_identity(&o, W, H));
     fs_context *c = make_ctx(W, H);
     REQUIRE(c);
     rng r = {31337};
@@ -843,7 +826,7 @@ static void run_prims(osm *o, fs_context *c, const tv *v, int n, prim_kind kind,
 TEST(lines)
 {
     osm o;
-    REQUIRE(osm_open(&o, W, H));
+    REQUIRE(osm_open_identity(&o, W, H));
     fs_context *c = make_ctx(W, H);
     REQUIRE(c);
     c->raster.use_y_raster = true;
@@ -917,7 +900,7 @@ TEST(lines)
 TEST(points)
 {
     osm o;
-    REQUIRE(osm_open(&o, W, H));
+    REQUIRE(osm_open_identity(&o, W, H));
     fs_context *c = make_ctx(W, H);
     REQUIRE(c);
     c->raster.use_y_raster = true;

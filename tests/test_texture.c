@@ -9,15 +9,12 @@
  * channel difference.  Required (issue 4): NEAREST filters exact, all
  * other cases within 1 of 255.
  */
-#include <GL/osmesa.h>
 #include <stdlib.h>
 #include <stdint.h>
 #include "check.h"
+#include "osmesa_util.h"
 #include "../pipeline/context.h"
 #include "../units/texture_unit.h"
-
-#define G(name, ...) do { if (c) fsgl##name(c, __VA_ARGS__); else gl##name(__VA_ARGS__); } while (0)
-#define G0(name) do { if (c) fsgl##name(c); else gl##name(); } while (0)
 
 typedef struct tex_case {
     const char *name;
@@ -80,11 +77,9 @@ static int comps_of(GLenum f)
     return f == GL_RGBA ? 4 : f == GL_RGB ? 3 : f == GL_LUMINANCE_ALPHA ? 2 : 1;
 }
 
-static const tex_case *g_case; /* the case being drawn (read-only, set per test) */
-
-static void draw_case(fs_context *c, int w, int h)
+static void draw_case(fs_context *c, const void *user, int w, int h)
 {
-    const tex_case *tc = g_case;
+    const tex_case *tc = user;
     G(Viewport, 0, 0, w, h);
     G(ClearColor, 0.2f, 0.1f, 0.3f, 1);
     G(Clear, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -145,68 +140,21 @@ typedef struct cmp_result { long differ, differ_gt1, covered; int maxd; } cmp_re
 static int render_compare(const tex_case *tc, int w, int h, cmp_result *res)
 {
     memset(res, 0, sizeof *res);
-    g_case = tc;
-    uint8_t *ref = calloc((size_t)w * h, 4);
-    OSMesaContext oc = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-    if (!oc || !ref || !OSMesaMakeCurrent(oc, ref, GL_UNSIGNED_BYTE, w, h)) {
-        free(ref);
+    osm_pair p;
+    if (!osm_pair_render(&p, w, h, NULL, draw_case, tc))
         return -1;
-    }
-    draw_case(NULL, w, h);
-    glFinish();
-    fs_context *c = fs_context_create(NULL, w, h);
-    if (!c) {
-        OSMesaDestroyContext(oc);
-        free(ref);
-        return -1;
-    }
-    draw_case(c, w, h);
-    const uint8_t *mine = c->fb.color;
-    for (long i = 0; i < (long)w * h; i++) {
-        int d = 0;
-        for (int k = 0; k < 4; k++) {
-            int e = abs((int)mine[i * 4 + k] - (int)ref[i * 4 + k]);
-            d = e > d ? e : d;
-        }
-        if (d) res->differ++;
-        if (d > 1) res->differ_gt1++;
-        if (d > res->maxd) res->maxd = d;
-    }
-    res->covered = (long)c->stats.fragments_generated;
+    res->differ = p.d.differ;
+    res->differ_gt1 = p.d.differ_gt1;
+    res->maxd = p.d.maxd;
+    res->covered = (long)p.c->stats.fragments_generated;
     printf("  %-34s %7ld fragments, %6ld differ (%6ld by more than 1), max %3d\n", tc->name, res->covered,
            res->differ, res->differ_gt1, res->maxd);
     if (getenv("FS_TEX_DUMP")) {
         char fn[256];
         snprintf(fn, sizeof fn, "/tmp/tex_%s.ppm", tc->name);
-        FILE *f = fopen(fn, "wb");
-        if (f) {
-            fprintf(f, "P6 %d %d 255\n", w * 3, h);
-            for (int y = h - 1; y >= 0; y--)
-                for (int x = 0; x < 3 * w; x++) {
-                    uint8_t dp[3];
-                    const uint8_t *p;
-                    if (x < w) p = &ref[((long)y * w + x) * 4];
-                    else if (x < 2 * w) p = &mine[((long)y * w + x - w) * 4];
-                    else {
-                        long o = ((long)y * w + x - 2 * w) * 4;
-                        int d = 0;
-                        for (int k = 0; k < 4; k++) {
-                            int e = abs((int)mine[o + k] - (int)ref[o + k]);
-                            d = e > d ? e : d;
-                        }
-                        dp[0] = d > 1 ? 255 : 0;
-                        dp[1] = d == 1 ? 255 : 0;
-                        dp[2] = 0;
-                        p = dp;
-                    }
-                    fwrite(p, 1, 3, f);
-                }
-            fclose(f);
-        }
+        img_dump_ppm(fn, p.ref.color, p.c->fb.color, w, h, 1, true);
     }
-    fs_context_destroy(c);
-    OSMesaDestroyContext(oc);
-    free(ref);
+    osm_pair_close(&p);
     return 0;
 }
 
@@ -469,8 +417,6 @@ TEST(unpack_and_subimage)
  * Implementation limits (GL_MAX_TEXTURE_SIZE: 4096 here, 16384 in
  * llvmpipe; levels 13-14 exist only there) and the sizes of formats below
  * 8 bits (stored at 8 here) are left out. ---- */
-
-#define GR(name, ...) (c ? fsgl##name(c, __VA_ARGS__) : gl##name(__VA_ARGS__))
 
 typedef struct qlog { uint8_t *data; size_t n, cap; char what[16384][64]; size_t at[16384]; int entries; } qlog;
 
@@ -772,13 +718,14 @@ TEST(queries_vs_osmesa)
     free(mine.data);
     memset(&ref, 0, sizeof ref);
     memset(&mine, 0, sizeof mine);
-    uint8_t fb[16 * 16 * 4];
-    OSMesaContext oc = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-    REQUIRE(oc && OSMesaMakeCurrent(oc, fb, GL_UNSIGNED_BYTE, 16, 16));
+    osm o;
+    if (!osm_open(&o, 16, 16))
+        osm_close(&o);
+    REQUIRE(o.ctx);
     query_sequence(&ref, NULL);
     GLint max = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max);
-    OSMesaDestroyContext(oc);
+    osm_close(&o);
     fs_context *c = fs_context_create(NULL, 16, 16);
     REQUIRE(c);
     query_sequence(&mine, c);
@@ -874,13 +821,15 @@ static void list_sequence(fs_context *c, uint8_t *texels, size_t tbytes)
 TEST(display_list_unpack_state)
 {
     uint8_t ref[8 * 8 * 4], ref_tex[4 * 4 * 4 + 16], mine_tex[4 * 4 * 4 + 16];
-    memset(ref, 0, sizeof ref);
-    OSMesaContext oc = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-    REQUIRE(oc && OSMesaMakeCurrent(oc, ref, GL_UNSIGNED_BYTE, 8, 8));
+    osm o;
+    if (!osm_open(&o, 8, 8))
+        osm_close(&o);
+    REQUIRE(o.ctx);
     list_sequence(NULL, ref_tex, sizeof ref_tex);
     GLenum ref_err = glGetError();
     glFinish();
-    OSMesaDestroyContext(oc);
+    memcpy(ref, o.color, sizeof ref);
+    osm_close(&o);
     fs_context *c = fs_context_create(NULL, 8, 8);
     REQUIRE(c);
     list_sequence(c, mine_tex, sizeof mine_tex);

@@ -140,8 +140,11 @@ static void make_level(const scene *s, int lvl, int w, int h, void *px)
     }
 }
 
-static void draw_scene(fs_context *c, const scene *s)
+static void draw_scene(fs_context *c, const void *user, int w, int h)
 {
+    const scene *s = user;
+    (void)w;
+    (void)h;
     G(Viewport, 0, 0, s->w, s->h);
     G(ClearColor, 0.25f, 0.5f, 0.75f, 1.0f);
     G(Clear, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
@@ -214,36 +217,6 @@ static const char *enum_name(GLenum e)
     }
 }
 
-/* FS_TEX_DUMP=1: a failing scene as /tmp/texrand_N.ppm, OSMesa | model |
- * difference (red: more than 1, green: 1), scaled 4x. */
-static void dump_pair(int n, const uint8_t *ref, const uint8_t *mine, int w, int h)
-{
-    char fn[64];
-    snprintf(fn, sizeof fn, "/tmp/texrand_%d.ppm", n);
-    FILE *f = fopen(fn, "wb");
-    if (!f)
-        return;
-    fprintf(f, "P6 %d %d 255\n", w * 3 * 4, h * 4);
-    for (int y = 4 * h - 1; y >= 0; y--)
-        for (int x = 0; x < 3 * w * 4; x++) {
-            int px = (x / 4) % w, part = x / 4 / w;
-            long o = ((long)(y / 4) * w + px) * 4;
-            uint8_t rgb[3];
-            if (part < 2) {
-                memcpy(rgb, (part ? mine : ref) + o, 3);
-            } else {
-                int m = 0;
-                for (int k = 0; k < 4; k++)
-                    m = abs(mine[o + k] - ref[o + k]) > m ? abs(mine[o + k] - ref[o + k]) : m;
-                rgb[0] = m > 1 ? 255 : 0;
-                rgb[1] = m == 1 ? 255 : 0;
-                rgb[2] = 0;
-            }
-            fwrite(rgb, 1, 3, f);
-        }
-    fclose(f);
-}
-
 TEST(random_textured_scenes)
 {
     const char *seed_env = getenv("FS_TEX_RANDOM_SEED");
@@ -258,20 +231,11 @@ TEST(random_textured_scenes)
         /* FS_TEX_RANDOM_ONLY=n: draw scene n alone (for debugging). */
         if (getenv("FS_TEX_RANDOM_ONLY") && atoi(getenv("FS_TEX_RANDOM_ONLY")) != i)
             continue;
-        osm o;
-        bool ok = osm_open(&o, s.w, s.h);
-        if (ok)
-            draw_scene(NULL, &s);
-        if (ok)
-            glFinish();
-        fs_context *c = ok ? fs_context_create(NULL, s.w, s.h) : NULL;
-        if (!c) {
-            osm_close(&o);
-            REQUIRE(c);
-        }
-        draw_scene(c, &s);
-        img_diff d = {0, 0, 0, 0};
-        img_compare(o.color, c->fb.color, (long)s.w * s.h, &d);
+        osm_pair p;
+        REQUIRE(osm_pair_render(&p, s.w, s.h, NULL, draw_scene, &s));
+        const osm o = p.ref;
+        const fs_context *c = p.c;
+        img_diff d = p.d;
         fragments += (long)c->stats.fragments_generated;
         bool exact = (s.min == GL_NEAREST || s.min == GL_NEAREST_MIPMAP_NEAREST) && s.mag == GL_NEAREST;
         img_compare(o.color, c->fb.color, exact ? (long)s.w * s.h : 0, &nearest);
@@ -294,7 +258,9 @@ TEST(random_textured_scenes)
         if (getenv("FS_TEX_DUMP") && (d.differ_gt1 || (exact && d.differ))) {
             printf("  scene %d (%s): %ld pixels differ, max %d\n", i,
                    grouped_filter_choice(&s) ? "known difference" : "failing", d.differ, d.maxd);
-            dump_pair(i, o.color, c->fb.color, s.w, s.h);
+            char fn[64];
+            snprintf(fn, sizeof fn, "/tmp/texrand_%d.ppm", i);
+            img_dump_ppm(fn, o.color, c->fb.color, s.w, s.h, 4, true);
             for (long p = 0; p < (long)s.w * s.h; p++)
                 for (int k = 0; k < 4; k++)
                     if (abs(o.color[p * 4 + k] - c->fb.color[p * 4 + k]) > 1) {
@@ -302,8 +268,7 @@ TEST(random_textured_scenes)
                         break;
                     }
         }
-        fs_context_destroy(c);
-        osm_close(&o);
+        osm_pair_close(&p);
     }
     printf("  %d scenes: %ld pixels compared (%ld textured fragments), %ld differ (%ld by more than 1), max %d; "
            "NEAREST scenes: %ld pixels, %ld differ\n",

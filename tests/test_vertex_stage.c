@@ -14,6 +14,7 @@
 #include <string.h>
 #include <time.h>
 #include "check.h"
+#include "osmesa_util.h"
 #include "../pipeline/context.h"
 #include "../pipeline/vertex_internal.h"
 
@@ -489,9 +490,8 @@ TEST(color_conversions_table_2_9)
 }
 
 /* ------------------------------------------------------------ OSMesa scenes */
-/* The same scene code drives fragsim (c != NULL) and OSMesa (c == NULL). */
-#define G(name, ...) do { if (c) fsgl##name(c, __VA_ARGS__); else gl##name(__VA_ARGS__); } while (0)
-#define G0(name) do { if (c) fsgl##name(c); else gl##name(); } while (0)
+/* The same scene code drives fragsim (c != NULL) and OSMesa (c == NULL):
+ * G() and G0() from osmesa_util.h. */
 
 typedef void (*scene_fn)(fs_context *c, int w, int h);
 
@@ -726,57 +726,31 @@ static void scene_two_side(fs_context *c, int w, int h)
 
 typedef struct cmp_result { long differ, differ_gt1, coverage; int maxd; } cmp_result;
 
+/* osm_pair's drawing callback: user is the scene function. */
+static void draw_scene(fs_context *c, const void *user, int w, int h)
+{
+    const scene_fn *fn = user;
+    (*fn)(c, w, h);
+}
+
 static int render_compare(scene_fn scene, int w, int h, cmp_result *res, const char *name)
 {
     memset(res, 0, sizeof *res);
-    uint8_t *ref = calloc((size_t)w * h, 4);
-    OSMesaContext oc = OSMesaCreateContextExt(OSMESA_RGBA, 24, 8, 0, NULL);
-    if (!oc || !ref || !OSMesaMakeCurrent(oc, ref, GL_UNSIGNED_BYTE, w, h)) {
-        free(ref);
+    osm_pair p;
+    if (!osm_pair_render(&p, w, h, ctx, draw_scene, &scene))
         return -1;
-    }
-    scene(NULL, w, h);
-    glFinish();
-    fs_context *c = ctx(w, h);
-    if (!c) {
-        OSMesaDestroyContext(oc);
-        free(ref);
-        return -1;
-    }
-    scene(c, w, h);
-    const uint8_t *mine = c->fb.color;
-    const uint8_t bg[4] = {26, 26, 38, 255};
-    (void)bg;
-    for (long i = 0; i < (long)w * h; i++) {
-        int d = 0;
-        for (int k = 0; k < 4; k++) {
-            int e = abs((int)mine[i * 4 + k] - (int)ref[i * 4 + k]);
-            d = e > d ? e : d;
-        }
-        if (d) res->differ++;
-        if (d > 1) res->differ_gt1++;
-        if (d > res->maxd) res->maxd = d;
-    }
+    res->differ = p.d.differ;
+    res->differ_gt1 = p.d.differ_gt1;
+    res->maxd = p.d.maxd;
     printf("  %-12s %dx%d: %ld pixels differ (%ld by more than 1/255), max %d; %llu triangles in, %llu clipped\n",
-           name, w, h, res->differ, res->differ_gt1, res->maxd, (unsigned long long)c->stats.triangles_in,
-           (unsigned long long)c->stats.triangles_clipped);
+           name, w, h, res->differ, res->differ_gt1, res->maxd, (unsigned long long)p.c->stats.triangles_in,
+           (unsigned long long)p.c->stats.triangles_clipped);
     if (getenv("FS_VS_DUMP")) {
         char fn[256];
         snprintf(fn, sizeof fn, "/tmp/vs_%s.ppm", name);
-        FILE *f = fopen(fn, "wb");
-        if (f) {
-            fprintf(f, "P6 %d %d 255\n", w * 2, h);
-            for (int y = h - 1; y >= 0; y--)
-                for (int x = 0; x < 2 * w; x++) {
-                    const uint8_t *p = x < w ? &ref[((long)y * w + x) * 4] : &mine[((long)y * w + x - w) * 4];
-                    fwrite(p, 1, 3, f);
-                }
-            fclose(f);
-        }
+        img_dump_ppm(fn, p.ref.color, p.c->fb.color, w, h, 1, false);
     }
-    fs_context_destroy(c);
-    OSMesaDestroyContext(oc);
-    free(ref);
+    osm_pair_close(&p);
     return 0;
 }
 
