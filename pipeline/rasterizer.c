@@ -170,9 +170,21 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
             for (int k = 0; k < 4; k++)                                           \
                 out[k] = s->perspective ? PLANE_AT(&s->tex[k], px, py) * oow      \
                                         : PLANE_AT(&s->tex[k], px, py);           \
-        }
+        }                                                                         \
+    /* The quad sharing llvmpipe's vector, when texturing asks (fs_quad). */  \
+    if (s->use_tex && tex_pair)                                                   \
+        for (int r = (s->height & 1) ? 0 : 1; r < ((s->height & 1) ? 4 : 3); r++) \
+            for (int j = 0; j < 2; j++) {                                         \
+                float px = (float)((q->x ^ 2) + j);                               \
+                float py = (float)fs_raster_row_to_gl(s->height, q->y - 1 + r);   \
+                float *out = q->tex_pair[r][j];                                   \
+                float oow = s->perspective ? 1.0f / PLANE_AT(&s->w, px, py) : 1.0f; \
+                for (int k = 0; k < 4; k++)                                       \
+                    out[k] = s->perspective ? PLANE_AT(&s->tex[k], px, py) * oow  \
+                                            : PLANE_AT(&s->tex[k], px, py);       \
+            }
 
-static void emit_pixels(const fs_prim_setup *s, fs_quad *q, unsigned m, int depth_bits)
+static void emit_pixels(const fs_prim_setup *s, fs_quad *q, unsigned m, int depth_bits, bool tex_pair)
 {
     FS_EMIT_PIXELS(plane_at)
 }
@@ -186,7 +198,7 @@ __attribute__((target("fma"))) static inline float plane_at_fma(const fs_plane *
 }
 
 __attribute__((target("fma"))) static void emit_pixels_fma(const fs_prim_setup *s, fs_quad *q, unsigned m,
-                                                            int depth_bits)
+                                                            int depth_bits, bool tex_pair)
 {
     FS_EMIT_PIXELS(plane_at_fma)
 }
@@ -200,7 +212,7 @@ void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
     c->stats.fragments_generated += (unsigned)((0x4332322132212110ull >> (4 * (m & 0xfu))) & 0xfu);
 #if FS_RASTER_HAVE_FMA
     if (c->raster.has_fma) {
-        emit_pixels_fma(s, q, m, c->fb.depth_bits);
+        emit_pixels_fma(s, q, m, c->fb.depth_bits, c->raster.tex_pair_lod);
         if (s->use_tex)
             fs_texture_quad(c, q); /* texturing (GL 1.5 spec 3.8) precedes 4.1 */
         fs_fragment_quad(c, q);
@@ -209,7 +221,7 @@ void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
         return;
     }
 #endif
-    emit_pixels(s, q, m, c->fb.depth_bits);
+    emit_pixels(s, q, m, c->fb.depth_bits, c->raster.tex_pair_lod);
     if (s->use_tex)
         fs_texture_quad(c, q);
     fs_fragment_quad(c, q);

@@ -48,6 +48,13 @@ typedef struct fs_quad {
      * pair row y with y - 1 and row y + 1 with y + 2; lambda comes from
      * those pairs (units/texture_sample.c). */
     float tex_below[2][4], tex_above[2][4];
+    /* Only while fs_raster_state.tex_pair_lod is set: strq of the quad
+     * that shares llvmpipe's 8-wide vector with this one (the other half
+     * of its 4x4 block's row of quads: columns (x ^ 2), (x ^ 2) + 1) in
+     * rows y - 1 .. y + 2, as [row - (y - 1)][column] (rows y - 1 and
+     * y + 2 only for odd heights).  Its lambda decides how llvmpipe's
+     * float path samples this quad (units/texture_sample.c). */
+    float tex_pair[4][2][4];
 } fs_quad;
 
 /* Rasterizer state set by glCullFace, glFrontFace, glPolygonOffset,
@@ -65,6 +72,8 @@ typedef struct fs_raster_state {
      * texture coordinates costs as much as the colour, so it is skipped
      * while nothing reads them (fs_quad.tex is then left unset). */
     bool interpolate_tex;
+    /* Set by texturing when fs_quad.tex_pair is needed (see there). */
+    bool tex_pair_lod;
     /* Selects the plain per-pixel reference rasterizer instead of the
      * incremental one; both must give identical quads (tests hold them
      * equal). */

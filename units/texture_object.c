@@ -74,8 +74,23 @@ bool *fs_texture_enable_flag(fs_context *c, GLenum cap)
 void fs_texture_enables_changed(fs_context *c)
 {
     /* The rasterizer interpolates texture coordinates only while a unit
-     * reads them (rasterizer.h). */
+     * reads them (rasterizer.h), and those of the quad sharing llvmpipe's
+     * vector only while the bound texture's sampling depends on it. */
     c->raster.interpolate_tex = c->texture->enabled_2d;
+    c->raster.tex_pair_lod = c->texture->enabled_2d && fs_tex_pair_decides(c->texture->bound);
+}
+
+bool fs_tex_pair_decides(const fs_tex_object *t)
+{
+    /* llvmpipe's float path (GL_CLAMP on an axis) with min and mag image
+     * filters that differ samples the NEAREST pixels of a vector (8
+     * pixels, two quads) through its LINEAR code whenever any pixel of the
+     * vector needs LINEAR (gallivm lp_bld_sample_soa.c,
+     * lp_build_sample_mipmap_both). */
+    GLenum mf = t->min_filter;
+    bool min_linear = mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR;
+    return (t->wrap_s == GL_CLAMP || t->wrap_t == GL_CLAMP) &&
+           (GLenum)(min_linear ? GL_LINEAR : GL_NEAREST) != t->mag_filter;
 }
 
 uint64_t fs_texture_quads_sampled(const fs_context *c) { return c->texture->quads_sampled; }
@@ -152,8 +167,10 @@ void fs_exec_DeleteTextures(fs_context *c, GLsizei n, const GLuint *textures)
         if (!t)
             continue; /* 0 and unused names are silently ignored */
         /* A bound texture that is deleted reverts to texture 0. */
-        if (s->bound == t)
+        if (s->bound == t) {
             s->bound = &s->default_2d;
+            fs_texture_enables_changed(c); /* the rasterizer's tex_pair_lod */
+        }
         object_release(t);
         free(t);
         s->objects[idx] = s->objects[--s->count];
@@ -173,6 +190,7 @@ void fs_exec_BindTexture(fs_context *c, GLenum target, GLuint texture)
     }
     if (texture == 0) {
         s->bound = &s->default_2d;
+        fs_texture_enables_changed(c); /* the rasterizer's tex_pair_lod */
         return;
     }
     fs_tex_object *t = lookup(s, texture, NULL);
@@ -184,6 +202,7 @@ void fs_exec_BindTexture(fs_context *c, GLenum target, GLuint texture)
     }
     t->bound_once = true;
     s->bound = t;
+    fs_texture_enables_changed(c); /* the rasterizer's tex_pair_lod */
 }
 
 GLboolean fs_exec_IsTexture(fs_context *c, GLuint texture)
@@ -690,11 +709,13 @@ void fs_exec_TexParameteri(fs_context *c, GLenum target, GLenum pname, GLint par
 {
     float v = (float)param;
     tex_parameter(c, target, pname, &v, false);
+    fs_texture_enables_changed(c); /* filters and wraps decide tex_pair_lod */
 }
 
 void fs_exec_TexParameterf(fs_context *c, GLenum target, GLenum pname, GLfloat param)
 {
     tex_parameter(c, target, pname, &param, false);
+    fs_texture_enables_changed(c); /* filters and wraps decide tex_pair_lod */
 }
 
 void fs_exec_TexParameteriv(fs_context *c, GLenum target, GLenum pname, const GLint *params)
@@ -702,6 +723,7 @@ void fs_exec_TexParameteriv(fs_context *c, GLenum target, GLenum pname, const GL
     float v[4];
     vector_from_iv(v, params, pname == GL_TEXTURE_BORDER_COLOR);
     tex_parameter(c, target, pname, v, true);
+    fs_texture_enables_changed(c);
 }
 
 void fs_exec_TexParameterfv(fs_context *c, GLenum target, GLenum pname, const GLfloat *params)
@@ -709,6 +731,7 @@ void fs_exec_TexParameterfv(fs_context *c, GLenum target, GLenum pname, const GL
     float v[4];
     vector_from_fv(v, params, pname == GL_TEXTURE_BORDER_COLOR);
     tex_parameter(c, target, pname, v, true);
+    fs_texture_enables_changed(c);
 }
 
 /* ---- completeness (3.8.10) ---- */

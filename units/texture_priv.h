@@ -58,6 +58,9 @@ struct fs_texture_state {
 
 /* Completeness of an object, cached (3.8.10). */
 bool fs_tex_complete(fs_tex_object *t);
+/* Whether sampling a quad with this texture depends on the quad sharing
+ * llvmpipe's vector with it (fs_quad.tex_pair). */
+bool fs_tex_pair_decides(const fs_tex_object *t);
 
 /* The name of the bound 2D texture, for glGet(GL_TEXTURE_BINDING_2D)
  * (driver/gl_state.c). */

@@ -297,6 +297,30 @@ static void sample_level_f(const fs_tex_object *t, int level, GLenum filter, flo
         out[k] = lerpf(fy, lerpf(fx, a[k], b[k]), lerpf(fx, cc[k], d[k]));
 }
 
+/* NEAREST the way llvmpipe's float path computes it for the nearest pixels
+ * of a vector that also has LINEAR pixels (fs_tex_pair_decides): the
+ * LINEAR texel pair with the weight rounded to 0 or 1 (a fraction of
+ * exactly 0.5 keeps the first texel), so GL_CLAMP below 0 reaches the
+ * border. */
+static void sample_nearest_via_linear_f(const fs_tex_object *t, int level, float s, float tt, float out[4])
+{
+    const fs_tex_image *img = &t->level[level];
+    int x0, x1, y0, y1;
+    float fx, fy;
+    linear_coord_f(s, img->width, t->wrap_s, &x0, &x1, &fx);
+    linear_coord_f(tt, img->height, t->wrap_t, &y0, &y1, &fy);
+    fetch_f(t, img, fx > 0.5f ? x1 : x0, fy > 0.5f ? y1 : y0, out);
+}
+
+static void sample_level_fv(const fs_tex_object *t, int level, GLenum filter, bool via_linear, float s, float tt,
+                            float out[4])
+{
+    if (via_linear && filter == GL_NEAREST)
+        sample_nearest_via_linear_f(t, level, s, tt, out);
+    else
+        sample_level_f(t, level, filter, s, tt, out);
+}
+
 /* ---- texture environment (3.8.13, tables 3.22 and 3.23) ---- */
 
 static inline float clamp01(float v) { return v < 0.0f ? 0.0f : v > 1.0f ? 1.0f : v; }
@@ -464,6 +488,23 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
      * on either axis takes the float path, whatever the filter (its MIPmap
      * blend then rounds differently, and LINEAR reaches the border). */
     bool float_path = t->wrap_s == GL_CLAMP || t->wrap_t == GL_CLAMP;
+    bool via_linear = false;
+    if (float_path && img_filter == GL_NEAREST && c->raster.tex_pair_lod && fs_tex_pair_decides(t)) {
+        /* This quad samples NEAREST; it goes through the LINEAR code when
+         * the quad sharing its vector (rows y, y+1 of fs_quad.tex_pair)
+         * uses LINEAR, i.e. takes the image filter that is LINEAR. */
+        float ps[4], pt[4];
+        for (int i = 0; i < 4; i++) {
+            const float *v = q->tex_pair[1 + (i >> 1)][i & 1];
+            float oq = 1.0f / v[3];
+            ps[i] = v[0] * oq;
+            pt[i] = v[1] * oq;
+        }
+        lod_result other;
+        select_lod(t, ps, pt, &other);
+        bool min_linear = mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR;
+        via_linear = other.minified == min_linear;
+    }
     GLenum base = t->level[0].base_format;
     if (c->cycle)
         fs_cycle_texture(c->cycle, t, lr.level0, mip_linear && (float_path ? lr.weightf > 0.0f : lr.weight8 > 0) ? lr.level1 : -1, img_filter, q, s, tt);
@@ -472,10 +513,10 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
             continue;
         float tex[4];
         if (float_path) {
-            sample_level_f(t, lr.level0, img_filter, s[i], tt[i], tex);
+            sample_level_fv(t, lr.level0, img_filter, via_linear, s[i], tt[i], tex);
             if (mip_linear && lr.weightf > 0.0f) {
                 float t1[4];
-                sample_level_f(t, lr.level1, img_filter, s[i], tt[i], t1);
+                sample_level_fv(t, lr.level1, img_filter, via_linear, s[i], tt[i], t1);
                 for (int k = 0; k < 4; k++)
                     tex[k] = lerpf(lr.weightf, tex[k], t1[k]);
             }
@@ -521,6 +562,9 @@ void fs_texture_quad(fs_context *c, fs_quad *q)
             memcpy(h.color[own + j], q->color[src + j], sizeof h.color[0]);
             h.z[own + j] = q->z[src + j];
         }
+        /* The partner quad's rows move with the quad (fs_quad.tex_pair). */
+        memcpy(h.tex_pair[1], q->tex_pair[half ? 2 : 0], sizeof h.tex_pair[0]);
+        memcpy(h.tex_pair[2], q->tex_pair[half ? 3 : 1], sizeof h.tex_pair[0]);
         h.y = half ? q->y + 1 : q->y - 1;
         h.mask = row_mask << own;
         texture_quad_aligned(c, &h);
