@@ -69,7 +69,7 @@ bool fs_cli_cycle_skip(const fs_cli_cycle *h, const fs_context *c, int cmd)
 }
 
 fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_config *cfg, fs_context *c, const char *csv_path,
-                                 uint64_t trace_frames, char *err, size_t errlen)
+                                 uint64_t trace_frames, bool draw_stats, char *err, size_t errlen)
 {
     fs_cli_cycle *h = calloc(1, sizeof *h);
     if (!h) {
@@ -95,7 +95,7 @@ fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_config *cfg, fs_context *c, 
         fs_cycle_stats_write_csv_header(h->csv);
         fputc('\n', h->csv);
     }
-    fs_cycle_set_record_fn(h->cy, on_record, h);
+    fs_cycle_set_record_fn(h->cy, on_record, h, draw_stats);
     fs_cycle_set_frames(h->cy, trace_frames);
     fs_cycle_attach(h->cy, c);
     return h;

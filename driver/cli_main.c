@@ -33,6 +33,7 @@ typedef struct cli_opts {
     bool quiet;
     int mode;                 /* -1 functional, else fs_cycle_mode (--mode) */
     const char *csv_file;     /* --csv: cycle statistics as CSV */
+    bool draw_stats;          /* --draw-stats: cycle statistics per draw too */
     fs_cli_cycle *cycle;      /* the cycle model of the run, NULL in functional mode */
 } cli_opts;
 
@@ -55,10 +56,13 @@ static void usage_replay(FILE *f, bool check)
             "%s"
             "  --mode M           functional (default), cycle (the cycle-level model, rtl_model/:\n"
             "                     cycles per frame, draw and query; same images and counters) or\n"
-            "                     sampled (draws of a kind simulated one in sampling.every, the\n"
-            "                     others estimated and NOT rendered: images and functional\n"
-            "                     counters are then incomplete; cycles come with an error estimate)\n"
-            "  --csv FILE         cycle statistics, one row per frame, draw and query (with --mode)\n"
+            "                     sampled (one frame in sampling.frames simulated, the frames\n"
+            "                     between skipped and their cycles interpolated; 1-2 frame traces:\n"
+            "                     one draw of a kind in sampling.every simulated, the others\n"
+            "                     estimated).  Skipped work is NOT rendered: images and functional\n"
+            "                     counters are incomplete; cycles come with an error estimate\n"
+            "  --csv FILE         cycle statistics, one row per frame and query (with --mode)\n"
+            "  --draw-stats       cycle statistics per draw too (JSON and CSV; large for big traces)\n"
             "  --quiet            no progress line\n",
             check ? "check" : "replay",
             check ? "Replays TRACE on the model and on OSMesa (llvmpipe, in this process) and\n"
@@ -174,6 +178,8 @@ static int parse_opts(int argc, char **argv, cli_opts *o, bool check)
         } else if (!strcmp(a, "--csv")) {
             NEEDV();
             o->csv_file = v;
+        } else if (!strcmp(a, "--draw-stats")) {
+            o->draw_stats = true;
         } else if (!strcmp(a, "--quiet")) {
             o->quiet = true;
         } else if (a[0] == '-' && a[1]) {
@@ -426,7 +432,7 @@ static int run_replay(int argc, char **argv, bool check)
         fs_replay_close(r);
         return 1;
     }
-    if (o.mode >= 0 && !(o.cycle = fs_cli_cycle_begin(o.mode, &cfg, c, o.csv_file, info->frames, err, sizeof err))) {
+    if (o.mode >= 0 && !(o.cycle = fs_cli_cycle_begin(o.mode, &cfg, c, o.csv_file, info->frames, o.draw_stats, err, sizeof err))) {
         fprintf(stderr, "%s: %s\n", prog, err);
         fs_osmesa_destroy(ref);
         fs_context_destroy(c);

@@ -39,6 +39,23 @@ static int parse_double(const char *s, double *out)
     return 0;
 }
 
+/* Splits of `rem` bytes into at most `left` whole pyramids whose sizes are
+ * size[k..]: counts them and the fewest and most pyramids a split uses. */
+static void count_splits(const uint64_t *size, int k, int nsize, uint64_t rem, int left, int used, long *count,
+                         int *fewest, int *most)
+{
+    if (rem == 0) {
+        (*count)++;
+        *fewest = used < *fewest ? used : *fewest;
+        *most = used > *most ? used : *most;
+        return;
+    }
+    if (k == nsize || left == 0)
+        return;
+    for (int c = 0; c <= left && (uint64_t)c * size[k] <= rem; c++)
+        count_splits(size, k + 1, nsize, rem - (uint64_t)c * size[k], left - c, used + c, count, fewest, most);
+}
+
 static void row(bool md, const char *what, uint64_t paper, uint64_t ours)
 {
     double dev = paper ? 100.0 * ((double)ours - (double)paper) / (double)paper : 0.0;
@@ -151,6 +168,20 @@ int fs_cli_mpgrid(int argc, char **argv)
     snprintf(what, sizeof what, "Clip-Map %lld^2, clip size 2048", (long long)cs);
     row(md, what, PAPER_CLIP, clip);
     row(md, "pointer table 11 x 100 x 100 x (4 + 4)", PAPER_TABLE, table);
+
+    /* Which per-pyramid sizes can make up the paper's adapted number:
+     * every split into at most n*m exact pyramid sizes. */
+    uint64_t sizes[FS_MPGRID_MAX_LEVELS];
+    for (int l = 0; l < L.levels; l++)
+        sizes[l] = fs_mpgrid_pyramid_bytes(&L, l, 1);
+    long splits = 0;
+    int fewest = L.n * L.m + 1, most = 0;
+    count_splits(sizes, 0, L.levels, PAPER_ADAPTED, L.n * L.m, 0, &splits, &fewest, &most);
+    printf(md ? "\nSplits of the paper's %llu bytes into at most %d whole pyramids (sizes %dx%d down to 1x1): "
+                "%ld, using %d to %d non-empty pyramids.\n"
+              : "\nsplits of the paper's %llu bytes into <= %d whole pyramids (from %dx%d down): %ld, "
+                "using %d to %d non-empty pyramids\n",
+           (unsigned long long)PAPER_ADAPTED, L.n * L.m, L.tile_w, L.tile_h, splits, fewest, most);
 
     /* Fig. 4.5: the needed resolution per pyramid (row j = m-1 first). */
     printf(md ? "\nNeeded level-0 resolution per pyramid (projected extent in pixels), far row first:\n\n"

@@ -179,6 +179,7 @@ typedef struct study_filter {
     fs_filter_fn *fn;
     const void *params;
     int ffp_m, ffp_hybrid;   /* fast footprint rows: M and hybrid flag, else 0 */
+    int ffp_midpoint;        /* fast footprint rows: mid-point snapping */
 } study_filter;
 
 /* ---- rendering ------------------------------------------------------------ */
@@ -366,13 +367,15 @@ static int mkdir_p(const char *dir)
 static void usage(FILE *f)
 {
     fprintf(f, "usage: fragsim study-filters [--out DIR] [--figures DIR] [--threads N] [--size N]\n"
-               "                             [--truth-max N] [--rotate DEG]\n"
+               "                             [--truth-max N] [--rotate DEG] [--iso R]\n"
                "  --out DIR       results (PNGs, results.csv, results.md, level data); default out/study-filters\n"
                "  --figures DIR   also write the small figures for docs/texture_filtering.md\n"
                "  --threads N     render threads (1..16, default 2); output does not depend on it\n"
                "  --size N        image N x N (default 600, as in the dissertation)\n"
                "  --truth-max N   ground truth: at most N x N samples per pixel (16..256, default 64)\n"
-               "  --rotate DEG    texture rotation on the plane (default 20)\n");
+               "  --rotate DEG    texture rotation on the plane (default 20)\n"
+               "  --iso R         hybrid fast footprint: MIPmap footprints with axis ratio <= R (>= 1,\n"
+               "                  default FS_FP_ISO_LIMIT = 2)\n");
 }
 
 static int parse_int(const char *s, int lo, int hi, int *out)
@@ -389,7 +392,7 @@ int fs_cli_study_filters(int argc, char **argv)
 {
     const char *out = "out/study-filters", *figs = NULL;
     int threads = 2, size = 600, truth_max = 64;
-    double rotate = 20;
+    double rotate = 20, iso = FS_FP_ISO_LIMIT;
     /* Every option takes a value: step over both. */
     for (int i = 0; i < argc; i += 2) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -397,7 +400,7 @@ int fs_cli_study_filters(int argc, char **argv)
             usage(stdout);
             return 0;
         }
-        static const char *const known[] = {"--out", "--figures", "--threads", "--size", "--truth-max", "--rotate"};
+        static const char *const known[] = {"--out", "--figures", "--threads", "--size", "--truth-max", "--rotate", "--iso"};
         int is_known = 0;
         for (size_t k = 0; k < sizeof known / sizeof known[0]; k++)
             is_known |= !strcmp(a, known[k]);
@@ -421,6 +424,10 @@ int fs_cli_study_filters(int argc, char **argv)
             char *end;
             rotate = strtod(v, &end);
             bad = *end || !isfinite(rotate);
+        } else if (!strcmp(a, "--iso")) {
+            char *end;
+            iso = strtod(v, &end);
+            bad = *end || !(iso >= 1.0) || !isfinite(iso);
         }
         if (bad) {
             fprintf(stderr, "fragsim study-filters: bad value '%s' for %s\n", v, a);
@@ -454,26 +461,34 @@ int fs_cli_study_filters(int argc, char **argv)
         filters[nf++] = f;
     }
     filters[nf++] = (study_filter){"ewa", "EWA, Gaussian", fs_filter_ewa, &ewa, 0, 0};
-    /* Fast footprint filtering with integer-position snapping ("I"), pure
-     * and hybrid (4.3.6). */
-    fs_footprint_filter *ffp_objs[6] = {0};
+    /* Fast footprint filtering (4.3.6) with integer-position snapping ("I"),
+     * hybrid and pure, for M = 8, 16, 32; and with mid-point snapping
+     * ("MS"), hybrid and pure, for M = 16 and 32: the comparison behind
+     * the choice of snapping. */
+    static const struct { int M; bool mid, hyb; } ffp_rows[] = {
+        {8, false, true}, {16, false, true}, {32, false, true}, {8, false, false}, {16, false, false},
+        {32, false, false}, {16, true, true}, {32, true, true}, {16, true, false}, {32, true, false},
+    };
+    enum { NFFP = sizeof ffp_rows / sizeof ffp_rows[0] };
+    fs_footprint_filter *ffp_objs[NFFP] = {0};
     int nffp = 0;
-    static const int ms[3] = {8, 16, 32};
-    for (int hyb = 1; hyb >= 0; hyb--)
-        for (int k = 0; k < 3; k++) {
-            fs_footprint_filter *ff = fs_footprint_filter_create(ms[k], false, hyb);
-            if (!ff) {
-                fprintf(stderr, "fragsim study-filters: cannot create the M = %d footprint filter\n", ms[k]);
-                for (int j = 0; j < nffp; j++)
-                    fs_footprint_filter_destroy(ffp_objs[j]);
-                return 1;
-            }
-            ffp_objs[nffp++] = ff;
-            study_filter f = {"", "", fs_filter_footprint, ff, ms[k], hyb};
-            snprintf(f.name, sizeof f.name, "ffp%d%s", ms[k], hyb ? "h" : "");
-            snprintf(f.label, sizeof f.label, "fast footprint M = %d%s", ms[k], hyb ? ", hybrid" : "");
-            filters[nf++] = f;
+    for (int k = 0; k < NFFP; k++) {
+        fs_footprint_filter *ff = fs_footprint_filter_create(ffp_rows[k].M, ffp_rows[k].mid, ffp_rows[k].hyb);
+        if (!ff) {
+            fprintf(stderr, "fragsim study-filters: cannot create the M = %d footprint filter\n", ffp_rows[k].M);
+            for (int j = 0; j < nffp; j++)
+                fs_footprint_filter_destroy(ffp_objs[j]);
+            return 1;
         }
+        fs_footprint_filter_set_iso_limit(ff, iso);
+        ffp_objs[nffp++] = ff;
+        study_filter f = {"", "", fs_filter_footprint, ff, ffp_rows[k].M, ffp_rows[k].hyb, ffp_rows[k].mid};
+        snprintf(f.name, sizeof f.name, "ffp%d%s%s", ffp_rows[k].M, ffp_rows[k].hyb ? "h" : "",
+                 ffp_rows[k].mid ? "ms" : "");
+        snprintf(f.label, sizeof f.label, "fast footprint M = %d%s%s", ffp_rows[k].M,
+                 ffp_rows[k].hyb ? ", hybrid" : "", ffp_rows[k].mid ? ", mid-point snapping" : "");
+        filters[nf++] = f;
+    }
     filters[nf++] = (study_filter){"truth", "ground truth", fs_filter_truth, &truth, 0, 0};
     const int truth_index = nf - 1;
 
@@ -614,7 +629,9 @@ int fs_cli_study_filters(int argc, char **argv)
                         fprintf(md, "| dissertation, Fig. 4.35 (M = 16, hybrid) | 275,334 | 246,678 | 28,656 | 8,836 |\n");
                 }
                 fprintf(md, "| fragsim, M = %d, %s | %lld | %lld (%lld + %lld) | %lld | %lld |\n", filters[f].ffp_m,
-                        filters[f].ffp_hybrid ? "hybrid" : "pure", visible,
+                        filters[f].ffp_hybrid ? (filters[f].ffp_midpoint ? "hybrid, mid-point" : "hybrid")
+                                              : (filters[f].ffp_midpoint ? "pure, mid-point" : "pure"),
+                        visible,
                         cnt[FS_FP_CLASS_BILINEAR0] + cnt[FS_FP_CLASS_TRILINEAR], cnt[FS_FP_CLASS_BILINEAR0],
                         cnt[FS_FP_CLASS_TRILINEAR], cnt[FS_FP_CLASS_FOOTPRINT] + cnt[FS_FP_CLASS_FOOTPRINT_2M],
                         cnt[FS_FP_CLASS_FOOTPRINT_2M]);

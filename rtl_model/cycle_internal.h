@@ -53,7 +53,6 @@ typedef struct fs_cyc_unit {
 /* Sampled mode: draws of one kind (mode, vertex count, state). */
 typedef struct fs_cyc_kind {
     uint64_t key, seen, nsamp;
-    uint64_t pending;       /* estimated in this frame, charged at its end */
     double sum, sumsq;
 } fs_cyc_kind;
 #define FS_CYC_KINDS 8192
@@ -99,6 +98,7 @@ struct fs_cycle {
     fs_cycle_stats draw_snap, frame_snap;
     uint64_t draw_t0;
     fs_cycle_record_fn record_fn;
+    bool record_draws;        /* per-draw records too (a snapshot per draw) */
     void *record_user;
 
     /* queries */
@@ -109,6 +109,11 @@ struct fs_cycle {
     int nqready;
 
     fs_cyc_kind *kinds;
+    /* Draw sampling: this frame's draws in order, their kind and cycles
+     * (negative: estimated, filled in at the frame end). */
+    struct fs_cyc_seq { fs_cyc_kind *k; double c; } *seq;
+    size_t nseq, seq_cap, seq_open;   /* seq_open: entry of the simulated draw + 1, 0 if none */
+    double draw_var;                  /* variance of the draw estimates so far */
 
     /* sampled mode, frame sampling */
     uint64_t nframes_trace;

@@ -223,6 +223,7 @@ void fs_cycle_destroy(fs_cycle *cy)
     }
     fs_cyc_stage_free(&cy->rtri);
     free(cy->frame_cycles);
+    free(cy->seq);
     free(cy->frame_was_skipped);
     free(cy->fbmem);
     free(cy->kinds);
@@ -237,8 +238,9 @@ void fs_cycle_attach(fs_cycle *cy, fs_context *c)
     resync_counters(cy, c);
 }
 
-void fs_cycle_set_record_fn(fs_cycle *cy, fs_cycle_record_fn fn, void *user)
+void fs_cycle_set_record_fn(fs_cycle *cy, fs_cycle_record_fn fn, void *user, bool draws)
 {
+    cy->record_draws = fn && draws;
     cy->record_fn = fn;
     cy->record_user = user;
 }
@@ -339,6 +341,66 @@ static fs_cyc_kind *kind_of(fs_cycle *cy, const fs_context *c, GLenum mode, size
     return NULL; /* table crowded: simulate */
 }
 
+/* Appends a draw to this frame's sequence; false when out of memory (the
+ * draw then counts nothing). */
+static bool seq_push(fs_cycle *cy, fs_cyc_kind *k, double c)
+{
+    if (cy->nseq == cy->seq_cap) {
+        size_t cap = cy->seq_cap ? cy->seq_cap * 2 : 256;
+        struct fs_cyc_seq *s = realloc(cy->seq, cap * sizeof *s);
+        if (!s)
+            return false;
+        cy->seq = s;
+        cy->seq_cap = cap;
+    }
+    cy->seq[cy->nseq].k = k;
+    cy->seq[cy->nseq++].c = c;
+    return true;
+}
+
+/* Each estimated draw of the frame: linear between the nearest simulated
+ * draws of its kind before and after it (by place in the frame), or the
+ * nearer one's cycles at either end.  Uncertainty: a quarter of the step
+ * between them, or the kind's spread at an end. */
+static void charge_estimated_draws(fs_cycle *cy)
+{
+    size_t n = cy->nseq;
+    double total = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        if (cy->seq[i].c >= 0.0)
+            continue;
+        fs_cyc_kind *k = cy->seq[i].k;
+        ptrdiff_t a = -1, b = -1;
+        for (size_t j = i; j-- > 0;)
+            if (cy->seq[j].k == k && cy->seq[j].c >= 0.0) {
+                a = (ptrdiff_t)j;
+                break;
+            }
+        for (size_t j = i + 1; j < n; j++)
+            if (cy->seq[j].k == k && cy->seq[j].c >= 0.0) {
+                b = (ptrdiff_t)j;
+                break;
+            }
+        double e, d;
+        if (a >= 0 && b >= 0) {
+            double ca = cy->seq[a].c, cb = cy->seq[b].c;
+            e = ca + (cb - ca) * (double)((ptrdiff_t)i - a) / (double)(b - a);
+            d = (cb - ca) / 4.0;
+        } else {
+            e = a >= 0 ? cy->seq[a].c : b >= 0 ? cy->seq[b].c : k->sum / (double)k->nsamp;
+            double m = (double)k->nsamp, mean = k->sum / m;
+            d = m > 1 ? sqrt(fmax(0.0, (k->sumsq - m * mean * mean) / (m - 1.0))) : 0.0;
+        }
+        total += e;
+        cy->draw_var += d * d;
+    }
+    uint64_t t = (uint64_t)llround(total);
+    cy->est += t;
+    cy->acc.estimated_cycles += t;
+    cy->nseq = 0;
+    cy->seq_open = 0;
+}
+
 static void emit_draw(fs_cycle *cy, bool estimated, uint64_t cycles)
 {
     fs_cycle_record r;
@@ -369,11 +431,14 @@ static void close_draw(fs_cycle *cy)
     cy->draw_open = false;
     if (cy->draw_kind && cy->draw_sampled) {
         double t = (double)(now_total(cy) - cy->draw_t0);
+        if (cy->seq_open)
+            cy->seq[cy->seq_open - 1].c = t;
+        cy->seq_open = 0;
         cy->draw_kind->nsamp++;
         cy->draw_kind->sum += t;
         cy->draw_kind->sumsq += t * t;
     }
-    if (cy->record_fn)
+    if (cy->record_draws)
         emit_draw(cy, false, 0);
     cy->draw_index++;
 }
@@ -403,24 +468,25 @@ bool fs_cycle_draw(fs_cycle *cy, fs_context *c, GLenum mode, size_t n)
         if (k) {
             k->seen++;
             if (k->nsamp >= (uint64_t)cy->cfg.sampling_min_samples && k->seen % (uint64_t)cy->cfg.sampling_every != 0) {
-                /* Estimated: charged at the frame end with the mean of the
-                 * kind's simulated draws then (a running mean taken now
-                 * would weigh the first samples too much). */
+                /* Estimated at the frame end, between the simulated draws
+                 * of its kind before and after it (cost drifts with the
+                 * draw order: later draws meet a fuller depth buffer). */
                 uint64_t e = (uint64_t)llround(k->sum / (double)k->nsamp);
-                k->pending++;
+                seq_push(cy, k, -1.0);
                 cy->acc.draws_estimated++;
-                if (cy->record_fn)
+                if (cy->record_draws)
                     emit_draw(cy, true, e);
                 cy->draw_index++;
                 return false;
             }
             cy->draw_kind = k;
             cy->draw_sampled = true;
+            cy->seq_open = seq_push(cy, k, 0.0) ? cy->nseq : 0;
         }
     }
     cy->draw_open = true;
     cy->draw_t0 = now_total(cy);
-    if (cy->record_fn)
+    if (cy->record_draws)
         snapshot(cy, &cy->draw_snap);
     cy->fe_per_tri = fs_cyc_front_end_per_triangle(&cy->cfg, mode, n);
     cy->fe_frac = 0;
@@ -488,6 +554,7 @@ void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q)
         cy->u[FS_U_texture].active = true;
         a = fs_cyc_step(ts, a, cy->tex_service, cy->tex_bytes, cy->tex_misses && !cy->cfg.memory_prefetch, fs);
         cy->tex_pending = false;
+        cy->tex_service = cy->tex_bytes = cy->tex_misses = 0;
     }
     uint64_t service, bytes;
     bool reads;
@@ -638,15 +705,7 @@ void fs_cycle_frame_end(fs_cycle *cy, fs_cycle_stats *out)
 {
     close_draw(cy);
     close_triangle(cy);
-    for (int i = 0; cy->kinds && i < FS_CYC_KINDS; i++) {
-        fs_cyc_kind *k = &cy->kinds[i];
-        if (!k->pending)
-            continue;
-        uint64_t e = (uint64_t)llround((double)k->pending * k->sum / (double)k->nsamp);
-        cy->est += e;
-        cy->acc.estimated_cycles += e;
-        k->pending = 0;
-    }
+    charge_estimated_draws(cy);
 
     wait_until(cy, fs_cyc_time(cy)); /* swap: the frame is done when drained */
     fs_cycle_stats now;
@@ -749,21 +808,8 @@ double fs_cycle_error_estimate(const fs_cycle *cy)
 {
     if (cy->mode != FS_CYCLE_SAMPLED)
         return 0.0;
-    /* Each kind's estimated draws took its sample mean: the error of that
-     * total has variance (draws estimated)^2 * s^2 / samples.  Kinds seen
-     * once or always equal contribute nothing (no spread measured). */
-    double var = 0.0;
-    for (int i = 0; i < FS_CYC_KINDS; i++) {
-        const fs_cyc_kind *k = &cy->kinds[i];
-        if (k->nsamp < 2 || k->seen <= k->nsamp)
-            continue;
-        double n = (double)k->nsamp, mean = k->sum / n;
-        double s2 = (k->sumsq - n * mean * mean) / (n - 1.0);
-        double m = (double)(k->seen - k->nsamp);
-        if (s2 > 0)
-            var += m * m * s2 / n;
-    }
-    var += cy->frame_error * cy->frame_error;
+    /* Interpolated frames and draws, independent of each other. */
+    double var = cy->frame_error * cy->frame_error + cy->draw_var;
     double total = (double)now_total(cy);
     return total > 0 ? sqrt(var) / total : 0.0;
 }

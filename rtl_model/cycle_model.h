@@ -107,7 +107,9 @@ typedef struct fs_cycle_record {
     fs_cycle_stats s;
 } fs_cycle_record;
 typedef void (*fs_cycle_record_fn)(void *user, const fs_cycle_record *r);
-void fs_cycle_set_record_fn(fs_cycle *cy, fs_cycle_record_fn fn, void *user);
+/* Queries are always handed to fn; draws only when `draws` (a paper-scale
+ * frame has tens of thousands of draws). */
+void fs_cycle_set_record_fn(fs_cycle *cy, fs_cycle_record_fn fn, void *user, bool draws);
 /* Counters since creation (cycles included). */
 void fs_cycle_totals(const fs_cycle *cy, fs_cycle_stats *out);
 /* Writes one JSON object body / CSV line of a stats record. */

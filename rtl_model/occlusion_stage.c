@@ -47,7 +47,7 @@ static void control_write(void *user, int engine, int tile, int x, int y, uint32
 
 void fs_cyc_occlusion_hook(fs_cycle *cy, fs_context *c)
 {
-    if (cy->occu_hooked || !fs_occlusion_unit(c))
+    if (cy->occu_hooked || !cy->cfg.occlusion_present || !fs_occlusion_unit(c))
         return;
     fs_occu_hooks h = {cy, engine_fragment, control_write};
     if (fs_occlusion_set_hooks(c, &h) == 0)

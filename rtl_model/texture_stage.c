@@ -97,6 +97,8 @@ static unsigned footprint(const fs_tex_object *t, int level, bool linear, float 
 void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, int level0, int level1, GLenum filter,
                       const fs_quad *q, const float s[4], const float tt[4])
 {
+    if (!cy->cfg.texture_present)
+        return;
     bool linear = filter == GL_LINEAR;
     unsigned mask = q->mask;
     /* The texture unit of the board owning the quad's image engine. */
@@ -134,8 +136,10 @@ void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, int level0, i
     }
     cy->acc.tex_texels += texels;
     cy->acc.tex_bytes += bytes;
+    /* Added up: the texture unit may sample a quad in two halves (quads at
+     * odd rows, units/texture_sample.c). */
     cy->tex_pending = true;
-    cy->tex_service = service;
-    cy->tex_bytes = bytes;
-    cy->tex_misses = misses;
+    cy->tex_service += service;
+    cy->tex_bytes += bytes;
+    cy->tex_misses += misses;
 }

@@ -2,7 +2,9 @@
 # `make bench`: the throughput benchmark.  Renders the same traces with the
 # fragsim model, OSMesa llvmpipe (LP_NUM_THREADS=1) and OSMesa softpipe
 # (GALLIUM_DRIVER=softpipe) in one run, prints fragments per second and the
-# ratios, and regenerates docs/performance.md from the numbers it measured.
+# ratios; then the cycle-level model in functional, full cycle and sampled
+# mode on the scene corpus; and regenerates docs/performance.md from the
+# numbers it measured.
 # Not a test: nothing here passes or fails on speed.
 set -euo pipefail
 BUILD=${1:-build}
@@ -27,6 +29,48 @@ for scene in bench8 bench32; do
     rows+=("$row")
     echo "$row"
 done
+# ---- the cycle-level model: functional vs full cycle vs sampled mode ----
+# One run each (CYCLE_REPEAT), configs/o2.ini.  city at paper scale (the
+# requirement: >= 10 M simulated cycles per second), the other scenes at
+# CYCLE_SCALE triangles per frame (512x512) to keep the run short; every
+# scene but the one-frame bench traces with CYCLE_FRAMES frames.
+CYCLE_REPEAT=${CYCLE_REPEAT:-1}
+CYCLE_SCALE=${CYCLE_SCALE:-100000}
+CYCLE_FRAMES=${CYCLE_FRAMES:-20}
+CFG=configs/o2.ini
+crows=()
+for scene in city norwich cathedrals forest garbage terrain demo textured bench8 bench32; do
+    trace="$OUT/cycle_$scene.trace"
+    case $scene in city) scale=paper ;; demo|textured) scale=small ;; *) scale=$CYCLE_SCALE ;; esac
+    frames=(); case $scene in bench*) ;; *) frames=(--frames "$CYCLE_FRAMES") ;; esac
+    "$BUILD/scenegen" "$scene" --scale "$scale" "${frames[@]}" -o "$trace" >/dev/null
+    fun=$("$BUILD/fragsim" bench --mode functional --config "$CFG" --repeat "$CYCLE_REPEAT" "$trace")
+    cyc=$("$BUILD/fragsim" bench --mode cycle --config "$CFG" --repeat "$CYCLE_REPEAT" "$trace")
+    smp=$("$BUILD/fragsim" bench --mode sampled --config "$CFG" --repeat "$CYCLE_REPEAT" "$trace")
+    row=$(awk -v s="$scene" -v sc="$scale" -v fr="$(json "$cyc" frames)" -v r="$CYCLE_REPEAT" \
+        -v tf="$(json "$fun" seconds)" -v tc="$(json "$cyc" seconds)" -v ts="$(json "$smp" seconds)" \
+        -v cc="$(json "$cyc" cycles)" -v cs="$(json "$smp" cycles)" -v fg="$(json "$cyc" fragments)" \
+        -v ee="$(json "$smp" error_estimate)" 'BEGIN {
+        printf "| %s | %s | %d | %.3f | %.3f | %.3f | %.0f | %.1f | %.1f | %.1f | %.1f | %+.2f%% | %.2f%% |", s, sc, fr / r, tf / r, tc / r, ts / r,
+            cc / r, cc / tc / 1e6, fg / tf / 1e6, fg / tc / 1e6, tc / ts, 100 * (cs - cc) / cc, 100 * ee }')
+    crows+=("$row")
+    echo "$row"
+done
+# What an unused unit costs: city (no texturing, Occlusion Unit idle) in cycle
+# mode with and without texture units and Occlusion Units; best of 5 each,
+# interleaved so that load on the machine hits both alike.
+trace="$OUT/cycle_city.trace"
+{ cat "$CFG"; printf '[texture]\npresent = false\n[occlusion]\npresent = false\n'; } >"$OUT/o2_without.ini"
+best_with=999999 best_without=999999
+for i in 1 2 3 4 5; do
+    a=$(json "$("$BUILD/fragsim" bench --mode cycle --config "$CFG" "$trace")" seconds)
+    b=$(json "$("$BUILD/fragsim" bench --mode cycle --config "$OUT/o2_without.ini" "$trace")" seconds)
+    best_with=$(awk -v x="$a" -v y="$best_with" 'BEGIN { print (x < y ? x : y) }')
+    best_without=$(awk -v x="$b" -v y="$best_without" 'BEGIN { print (x < y ? x : y) }')
+done
+unused=$(awk -v a="$best_with" -v b="$best_without" 'BEGIN { printf "%.3f s with, %.3f s without: %+.1f%%", a, b, 100 * (a - b) / b }')
+echo "unused units: $unused"
+
 llvm_name=$(json "$llvm" renderer)
 soft_name=$(json "$soft" renderer)
 cpu=$(sed -nE 's/^model name\s*: (.*)/\1/p' /proc/cpuinfo | head -n 1)
@@ -45,5 +89,22 @@ cpu=$(sed -nE 's/^model name\s*: (.*)/\1/p' /proc/cpuinfo | head -n 1)
     echo "llvmpipe: \`$llvm_name\` with LP_NUM_THREADS=1; softpipe: \`$soft_name\`."
     echo "bench8 and bench32 are ~100,000 triangles of ~8 and ~32 pixels at 1024x1024"
     echo "(\`scenegen --list\`)."
+    echo
+    echo "## Cycle-level model: functional, full cycle and sampled mode"
+    echo
+    echo "\`fragsim bench --mode functional|cycle|sampled --config $CFG\` per trace, one process each,"
+    echo "$CYCLE_REPEAT run(s); times are per run.  Full cycle mode runs the functional model and the"
+    echo "timing model (same images and counters as functional mode); sampled mode simulates some"
+    echo "frames (or draws) in detail and estimates the rest without rendering them (docs/cycle_model.md)."
+    echo "Error: sampled mode's total cycles against full cycle mode's; estimate: the error sampled"
+    echo "mode reports for itself (one standard error)."
+    echo
+    echo "| trace | scale | frames | functional s | cycle s | sampled s | cycles | M cycles/s (cycle) | M frag/s (functional) | M frag/s (cycle) | sampled speed-up | sampled error | error estimate |"
+    echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+    printf '%s\n' "${crows[@]}"
+    echo
+    echo "An unused unit (city has no texturing and leaves the Occlusion Unit idle), cycle mode with"
+    echo "texture units and Occlusion Units against a configuration without them (texture.present,"
+    echo "occlusion.present = false), best of 5: $unused."
 } >"$DOC"
 echo "wrote $DOC"

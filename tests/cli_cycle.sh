@@ -25,7 +25,7 @@ identical() { # SCENE CONFIG
     local a="$WORK/f_$s" b="$WORK/c_$s"
     rm -rf "$a" "$b"
     "$FRAGSIM" replay --quiet --config "$cfg" --out "$a" "$t" 2>/dev/null || fail "$s: functional replay failed"
-    "$FRAGSIM" replay --quiet --mode cycle --config "$cfg" --out "$b" --csv "$b/c.csv" "$t" 2>/dev/null ||
+    "$FRAGSIM" replay --quiet --mode cycle --config "$cfg" --out "$b" --csv "$WORK/c_$s.csv" --draw-stats "$t" 2>/dev/null ||
         fail "$s: cycle replay failed"
     local n=0
     for p in "$a"/frame_*.png; do
@@ -36,9 +36,14 @@ identical() { # SCENE CONFIG
     diff <(strip_cycle "$a/stats.json") <(strip_cycle "$b/stats.json") >/dev/null ||
         fail "$s ($cfg): functional counters differ"
     grep -q '"cycle": {' "$b/stats.json" || fail "$s: no cycle statistics"
-    # cycles of the frames: positive, and the CSV has one row per frame
-    [ "$(grep -c '^frame,' "$b/c.csv")" -eq $n ] || fail "$s: CSV frame rows"
-    awk -F, '$1 == "frame" && $7 <= 0 {bad = 1} END {exit bad}' "$b/c.csv" || fail "$s: a frame without cycles"
+    # cycles of the frames: positive, and the CSV has one row per frame; one
+    # row per draw, as many as the total counts, whose cycles add up to at
+    # most the total (frame-end drains come on top)
+    local csv="$WORK/c_$s.csv"
+    [ "$(grep -c '^frame,' "$csv")" -eq $n ] || fail "$s: CSV frame rows"
+    awk -F, '$1 == "frame" && $7 <= 0 {bad = 1} END {exit bad}' "$csv" || fail "$s: a frame without cycles"
+    awk -F, '$1 == "draw" {n++; c += $7} $1 == "total" {t = $7; d = $9} END {exit !(n == d && n > 0 && c <= t)}' "$csv" ||
+        fail "$s: draw rows do not match the total"
 }
 
 test_cycle_identical_o2() { for s in $SCENES; do identical "$s" "$ROOT/configs/o2.ini"; done; }

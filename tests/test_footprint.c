@@ -767,6 +767,90 @@ TEST(gl_whole_texel_footprints_are_box_averages)
     free(img);
 }
 
+/* A rotated, elongated footprint (4.3.6, Fig. 4.32): its bounding box is
+ * far larger than it, so the filter cuts it in two and gives each half its
+ * own array at a finer level than eq. 4.17 gives for the whole box.  On a
+ * linear ramp in u (texel i holds i/255; box MIPmapping keeps a ramp
+ * linear, texel centres on the same line) every normalised coverage
+ * average is the ramp at the coverage's centroid, so the box filter over
+ * the footprint is the ramp at the parallelogram's centre (closed form);
+ * snapping moves each corner by at most half a texel of the level used. */
+TEST(distorted_footprint_uses_two_finer_arrays)
+{
+    uint8_t *img = malloc(256 * 256 * 4);
+    REQUIRE(img);
+    for (int y = 0; y < 256; y++)
+        for (int x = 0; x < 256; x++)
+            for (int ch = 0; ch < 4; ch++)
+                img[(y * 256 + x) * 4 + ch] = (uint8_t)(ch == 3 ? 255 : x);
+    fs_mip_owned tex;
+    REQUIRE(fs_mip_build_box(&tex, img, 256, 256, GL_CLAMP_TO_EDGE) == 0);
+    /* Long axis 48 texels at 45 and 135 degrees, short axis 3 texels. */
+    static const double dir[2][2] = {{0.70710678, 0.70710678}, {-0.70710678, 0.70710678}};
+    /* M = 16 only: with M = 32 the halves of this 45-degree strip are
+     * diamonds that fit no single array, so the whole footprint is
+     * filtered in one step (not what this test is about). */
+    for (int M = 16; M <= 16; M *= 2)
+        for (int d = 0; d < 2; d++) {
+            fs_footprint_filter *f = fs_footprint_filter_create(M, false, false);
+            REQUIRE(f);
+            fs_footprint fp = {0};
+            fp.u = 127.3;
+            fp.v = 131.6;
+            fp.dudx = 48 * dir[d][0];
+            fp.dvdx = 48 * dir[d][1];
+            fp.dudy = -3 * dir[d][1];
+            fp.dvdy = 3 * dir[d][0];
+            fs_footprint_affine_corners(&fp);
+            double u0 = 1e9, u1 = -1e9, v0 = 1e9, v1 = -1e9;
+            for (int k = 0; k < 4; k++) {
+                u0 = fmin(u0, fp.corner_u[k]);
+                u1 = fmax(u1, fp.corner_u[k]);
+                v0 = fmin(v0, fp.corner_v[k]);
+                v1 = fmax(v1, fp.corner_v[k]);
+            }
+            int whole = fs_footprint_lambda(u1 - u0, v1 - v0, M, NULL, NULL);
+            fs_filter_out o;
+            int lookups = 0;
+            fs_footprint_filter_run(f, &tex.view, &fp, &o, &lookups);
+            CHECK_EQ_INT(o.cls, FS_FP_CLASS_FOOTPRINT_2M);
+            CHECK(o.level < whole);
+            CHECK(o.texels > M && o.texels <= 2 * M);
+            CHECK(lookups >= 2 && lookups <= 4);
+            double lev = ceil(o.level);
+            double tol = (0.5 * pow(2.0, lev) + 1.0) / 255.0;
+            CHECK_NEAR(o.rgba[0], (fp.u - 0.5) / 255.0, tol);
+            fs_footprint_filter_destroy(f);
+        }
+    /* Thin diagonal footprints (0.3 texels wide) snap to zero area at
+     * every level eq. 4.17 allows; they are widened to one or two texels
+     * along their own direction and still footprint-filtered (not
+     * MIPmapped), the centroid moving by at most a texel of the level. */
+    for (int M = 8; M <= 32; M *= 2)
+        for (int deg = 20; deg <= 70; deg += 25) {
+            fs_footprint_filter *f = fs_footprint_filter_create(M, false, false);
+            REQUIRE(f);
+            double c = cos(deg * 3.14159265358979 / 180), s = sin(deg * 3.14159265358979 / 180);
+            fs_footprint fp = {0};
+            fp.u = 120.6;
+            fp.v = 97.2;
+            fp.dudx = 40 * c;
+            fp.dvdx = 40 * s;
+            fp.dudy = -0.3 * s;
+            fp.dvdy = 0.3 * c;
+            fs_footprint_affine_corners(&fp);
+            fs_filter_out o;
+            fs_footprint_filter_run(f, &tex.view, &fp, &o, NULL);
+            CHECK(o.cls == FS_FP_CLASS_FOOTPRINT || o.cls == FS_FP_CLASS_FOOTPRINT_2M);
+            CHECK(o.texels <= 2 * M);
+            double tol = (pow(2.0, ceil(o.level)) + 1.0) / 255.0;
+            CHECK_NEAR(o.rgba[0], (fp.u - 0.5) / 255.0, tol);
+            fs_footprint_filter_destroy(f);
+        }
+    fs_mip_free(&tex);
+    free(img);
+}
+
 TEST_LIST = {
     TEST_ENTRY(rom_vectors_sum_to_triangle_area),
     TEST_ENTRY(rom_weights_match_point_sampling),
@@ -776,6 +860,7 @@ TEST_LIST = {
     TEST_ENTRY(whole_texel_footprint_is_box_average),
     TEST_ENTRY(degenerate_footprints_are_defined),
     TEST_ENTRY(hybrid_selects_by_shape),
+    TEST_ENTRY(distorted_footprint_uses_two_finer_arrays),
     TEST_ENTRY(table_4_3_counts),
     TEST_ENTRY(rom_doc_is_current),
     TEST_ENTRY(gl_parameters_and_errors),

@@ -36,7 +36,9 @@ void fs_footprint_filter_destroy(fs_footprint_filter *f);
 
 /* fs_filter_fn; params is the fs_footprint_filter*.  out->texels: texels
  * fetched (the whole a x b array of every step, distinct addresses);
- * out->level: lambda used; out->cls: one of the classes below. */
+ * out->level: lambda used (the mean of the two halves' levels when the
+ * footprint was cut in two); out->cls: one of the classes below
+ * (FOOTPRINT_2M: two steps, each with its own array). */
 void fs_filter_footprint(const fs_mip_view *m, const fs_footprint *fp, const void *params, fs_filter_out *out);
 enum { FS_FP_CLASS_BILINEAR0, FS_FP_CLASS_TRILINEAR, FS_FP_CLASS_FOOTPRINT, FS_FP_CLASS_FOOTPRINT_2M };
 
@@ -46,7 +48,11 @@ void fs_footprint_filter_run(const fs_footprint_filter *f, const fs_mip_view *m,
 
 /* The hybrid selector's isotropy limit: footprints whose axis ratio
  * (larger over smaller singular value of the Jacobian) is at most this are
- * MIPmapped.  Default FS_FP_ISO_LIMIT; values < 1 or NaN are ignored. */
+ * MIPmapped.  Default FS_FP_ISO_LIMIT; values < 1 or NaN are ignored.
+ * The dissertation (4.3.6) gives no value.  2 is chosen a priori: trilinear
+ * MIPmapping at the isotropic level (the larger axis) blurs the minor axis
+ * by the axis ratio, and a factor 2 is what MIPmapping already accepts
+ * between two levels; beyond it the footprint counts as distorted. */
 #define FS_FP_ISO_LIMIT 2.0
 void fs_footprint_filter_set_iso_limit(fs_footprint_filter *f, double ratio);
 int fs_footprint_filter_budget(const fs_footprint_filter *f);

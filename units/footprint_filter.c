@@ -20,6 +20,25 @@
  *   are adjacent), each triangle gets its own array: two steps and up to
  *   2M texels, the dissertation's "T between M and 2M" (4.3.6).  Every
  *   triangle alone has a placement with two corners on the border.
+ * - Two arrays for distorted footprints (4.3.6, Fig. 4.32, "up to 2M
+ *   texels in two steps").  The bounding box of a rotated, elongated
+ *   footprint is far larger than the footprint, so eq. 4.17 picks a level
+ *   at which the footprint is thinner than a texel and its snapped corners
+ *   collapse or bloat.  fragsim therefore also cuts the footprint in two
+ *   across its longer screen axis (through the mid-points of the two
+ *   crossing edges); each half gets its own bounding box, eq. 4.17 level
+ *   and one array of M texels (its own ROM lookups).  The halves are used
+ *   when neither filters at a coarser and at least one at a finer level
+ *   than the whole footprint does, or when the whole fits no level; the result is their mean (each half is
+ *   the image of half the pixel square in the affine approximation; a
+ *   shift in hardware).  Only the choice between one and two steps is
+ *   made per pixel; no coverage is computed at run time.
+ * - Snapping.  Integer positions round to the nearest lattice point.
+ *   The study (docs/texture_filtering.md) uses integer positions for every
+ *   M: an a x b array offers (a+1)(b+1) positions against a*b mid-points,
+ *   so a snapped footprint fits at a finer level, and the error per corner
+ *   is at most half a texel in each axis either way.  The study's rows
+ *   "mid-point snapping" measure the alternative for M = 16 and 32.
  * - Normalisation.  Eq. 4.19 sums T[i] * (w1[i] + w2[i]); with absolute
  *   coverages in the ROM that sum is the footprint's area times the
  *   colour, so fragsim divides by the sum of the weights (a constant
@@ -28,10 +47,13 @@
  *   diagonal (both triangles with the same orientation); either diagonal of
  *   a convex one gives the same coverage.
  * - Collapse.  A footprint thinner than a texel of level lambda may snap to
- *   zero area; then its corners are snapped outward (away from its centre,
- *   so the snapped quadrilateral contains it, at least a texel thick) at
- *   the first level from lambda on where that fits; failing that the pixel
- *   is filtered trilinearly (class TRILINEAR).
+ *   zero area; then finer levels are tried while it fits, else its short
+ *   edges are stretched to 1.5 texels before snapping (widen(): one or two
+ *   texels thick, along its own direction; an earlier per-axis "outward"
+ *   rounding left thin diagonal footprints collapsed and sent them to
+ *   trilinear) at the first level from lambda on where that fits; failing
+ *   that the pixel is filtered with the two halves above, if they fit,
+ *   else trilinearly (class TRILINEAR).
  * - Bad input (NaN/Inf corners, huge coordinates) is filtered trilinearly
  *   at GL's isotropic level, which fs_mip_trilinear defines for any input.
  */
@@ -207,36 +229,70 @@ static bool tri_degenerate(const int *X, const int *Y, const int t[3])
     return orient(X, Y, t[0], t[1], t[2]) == 0;
 }
 
-/* Snaps one coordinate.  Outward snapping (the collapse fallback) moves
- * the corner to the nearest position away from the footprint's centre c,
- * so that the snapped quadrilateral contains the footprint. */
-static int snap(double x, double c, bool midpoint, bool outward)
+/* Snaps one coordinate (4.3.4): integer positions by rounding to the
+ * nearest; mid-points of the texel a corner lies in, a corner on a grid
+ * line going up and right (floor does both). */
+static int snap(double x, bool midpoint)
 {
-    /* 4.3.4: integer positions by rounding; mid-points of the texel a
-     * corner lies in, a corner on a grid line going up and right (floor
-     * does both). */
-    if (!outward)
-        return (int)(midpoint ? floor(x) : floor(x + 0.5));
-    double o = midpoint ? 0.5 : 0.0;
-    return (int)(x >= c ? ceil(x - o) : floor(x - o));
+    return (int)(midpoint ? floor(x) : floor(x + 0.5));
 }
 
-static int try_level(const fs_footprint_filter *f, const fs_mip_view *m, const fs_footprint *fp, int lam,
-                     bool outward, level_result *res)
+/* The collapse fallback: a footprint thinner than a texel of the level has
+ * its two short opposite edges stretched about their mid-points to at
+ * least FP_MIN_EDGE texels before snapping, so that their ends snap to
+ * different positions (two points closer than sqrt(2) texels may share
+ * one) and the snapped footprint keeps its direction with a thickness of
+ * one or two texels.  Corner set-up arithmetic like the bounding box, no
+ * coverage computation. */
+#define FP_MIN_EDGE 1.5
+static void widen(double x[4], double y[4])
+{
+    double l01 = hypot(x[1] - x[0], y[1] - y[0]) + hypot(x[3] - x[2], y[3] - y[2]);
+    double l12 = hypot(x[2] - x[1], y[2] - y[1]) + hypot(x[0] - x[3], y[0] - y[3]);
+    int e0 = l01 <= l12 ? 0 : 1; /* edges (e0, e0+1) and (e0+2, e0+3) */
+    for (int e = e0; e < 4; e += 2) {
+        int i = e, j = (e + 1) & 3;
+        double dx = x[j] - x[i], dy = y[j] - y[i], len = hypot(dx, dy);
+        if (len >= FP_MIN_EDGE)
+            continue;
+        if (!(len > 1e-9)) {
+            /* A point-like edge: stretch it across the long axis. */
+            int k = (i + 3) & 3;
+            double ax = x[k] - x[i], ay = y[k] - y[i], al = hypot(ax, ay);
+            dx = al > 1e-9 ? -ay / al : 1.0;
+            dy = al > 1e-9 ? ax / al : 0.0;
+            len = 1.0;
+        }
+        double mx = 0.5 * (x[i] + x[j]), my = 0.5 * (y[i] + y[j]), h = 0.5 * FP_MIN_EDGE / len;
+        x[i] = mx - dx * h;
+        y[i] = my - dy * h;
+        x[j] = mx + dx * h;
+        y[j] = my + dy * h;
+    }
+}
+
+/* A quadrilateral in level-0 texels, corners in the pixel's order. */
+typedef struct quad {
+    double u[4], v[4];
+} quad;
+
+static int try_level(const fs_footprint_filter *f, const fs_mip_view *m, const quad *q, int lam, bool widened,
+                     bool one_step, level_result *res)
 {
     double sx = (double)m->width[lam] / m->width[0], sy = (double)m->height[lam] / m->height[0];
     int X[4], Y[4];
-    double cx = 0.0, cy = 0.0;
+    double x[4], y[4];
     for (int k = 0; k < 4; k++) {
-        cx += 0.25 * fp->corner_u[k] * sx;
-        cy += 0.25 * fp->corner_v[k] * sy;
-    }
-    for (int k = 0; k < 4; k++) {
-        double x = fp->corner_u[k] * sx, y = fp->corner_v[k] * sy;
-        if (!(fabs(x) < 1e8) || !(fabs(y) < 1e8))
+        x[k] = q->u[k] * sx;
+        y[k] = q->v[k] * sy;
+        if (!(fabs(x[k]) < 1e8) || !(fabs(y[k]) < 1e8))
             return LEVEL_NOFIT;
-        X[k] = snap(x, cx, f->midpoint, outward);
-        Y[k] = snap(y, cy, f->midpoint, outward);
+    }
+    if (widened)
+        widen(x, y);
+    for (int k = 0; k < 4; k++) {
+        X[k] = snap(x[k], f->midpoint);
+        Y[k] = snap(y[k], f->midpoint);
     }
     int x0 = X[0], x1 = X[0], y0 = Y[0], y1 = Y[0];
     for (int k = 1; k < 4; k++) {
@@ -286,6 +342,8 @@ static int try_level(const fs_footprint_filter *f, const fs_mip_view *m, const f
                 return LEVEL_OK;
             }
         }
+    if (one_step)
+        return LEVEL_NOFIT;
     /* Two steps: each triangle of the first valid diagonal in its own
      * array. */
     int d = valid[0] ? 0 : 1;
@@ -397,6 +455,101 @@ static void trilinear(const fs_mip_view *m, const fs_footprint *fp, fs_filter_ou
     out->cls = FS_FP_CLASS_TRILINEAR;
 }
 
+/* The footprint filter on one quadrilateral q: the level of eq. 4.17 from
+ * its bounding box, then the first level from there on where the snapped
+ * corners fit an array (one step, or two for a diamond unless one_step).
+ * False when no level of the pyramid works. */
+typedef struct quad_out {
+    float rgba[4];
+    int texels, level, nsteps, lookups;
+    int ext[2][4]; /* the steps' arrays: x0, x1, y0, y1 in level texels */
+} quad_out;
+
+static bool filter_quad(const fs_footprint_filter *f, const fs_mip_view *m, const quad *q, bool one_step,
+                        quad_out *qo)
+{
+    double u0 = INFINITY, u1 = -INFINITY, v0 = INFINITY, v1 = -INFINITY;
+    for (int k = 0; k < 4; k++) {
+        u0 = fmin(u0, q->u[k]);
+        u1 = fmax(u1, q->u[k]);
+        v0 = fmin(v0, q->v[k]);
+        v1 = fmax(v1, q->v[k]);
+    }
+    int top = m->levels - 1;
+    int lam0 = fs_footprint_lambda(u1 - u0, v1 - v0, f->M, NULL, NULL);
+    lam0 = lam0 < 0 ? 0 : lam0 > top ? top : lam0;
+    level_result res;
+    int used = -1;
+    for (int lam = lam0; lam <= top && used < 0; lam++) {
+        int r = try_level(f, m, q, lam, false, one_step, &res);
+        if (r == LEVEL_OK && evaluate(f, m, lam, &res, qo->rgba, &qo->texels)) {
+            used = lam;
+        } else if (r != LEVEL_NOFIT) {
+            /* Collapsed: thicker at finer levels, while it still fits;
+             * else widened (one or two texels thick) at this or the next
+             * levels where that fits. */
+            for (int l = lam - 1; l >= 0 && used < 0; l--) {
+                int r2 = try_level(f, m, q, l, false, one_step, &res);
+                if (r2 == LEVEL_NOFIT)
+                    break;
+                if (r2 == LEVEL_OK && evaluate(f, m, l, &res, qo->rgba, &qo->texels))
+                    used = l;
+            }
+            for (int l = lam; l <= top && used < 0; l++)
+                if (try_level(f, m, q, l, true, one_step, &res) == LEVEL_OK &&
+                    evaluate(f, m, l, &res, qo->rgba, &qo->texels))
+                    used = l;
+            break;
+        }
+    }
+    if (used < 0)
+        return false;
+    qo->level = used;
+    qo->nsteps = res.nsteps;
+    qo->lookups = 0;
+    for (int s = 0; s < res.nsteps; s++) {
+        int a, b;
+        step_extent(f, &res.step[s], &a, &b);
+        qo->ext[s][0] = res.step[s].pl.ox;
+        qo->ext[s][1] = res.step[s].pl.ox + a;
+        qo->ext[s][2] = res.step[s].pl.oy;
+        qo->ext[s][3] = res.step[s].pl.oy + b;
+        qo->lookups += res.step[s].nw;
+    }
+    return true;
+}
+
+/* The two halves of a footprint, cut through the mid-points of the two
+ * edges that cross its longer screen-space axis (Fig. 4.32: two arrays for
+ * a distorted footprint).  In the affine approximation each half is the
+ * image of one half of the pixel square, so a box filter over the pixel
+ * weights them equally. */
+static void split_halves(const quad *q, quad h[2])
+{
+    /* Corners in pixel order: 0 (x-,y-), 1 (x+,y-), 2 (x+,y+), 3 (x-,y+).
+     * The x axis runs from edge 3-0 to edge 1-2, the y axis from edge 0-1
+     * to edge 2-3. */
+    double xu = 0.5 * (q->u[1] + q->u[2] - q->u[0] - q->u[3]), xv = 0.5 * (q->v[1] + q->v[2] - q->v[0] - q->v[3]);
+    double yu = 0.5 * (q->u[2] + q->u[3] - q->u[0] - q->u[1]), yv = 0.5 * (q->v[2] + q->v[3] - q->v[0] - q->v[1]);
+    bool along_x = xu * xu + xv * xv >= yu * yu + yv * yv;
+    /* Rotate the corner order so that the cut runs through edges 0-1 and
+     * 2-3 (the long axis from edge 3-0 to edge 1-2). */
+    int o[4];
+    for (int k = 0; k < 4; k++)
+        o[k] = along_x ? k : (k + 1) & 3;
+    double mu01 = 0.5 * (q->u[o[0]] + q->u[o[1]]), mv01 = 0.5 * (q->v[o[0]] + q->v[o[1]]);
+    double mu23 = 0.5 * (q->u[o[2]] + q->u[o[3]]), mv23 = 0.5 * (q->v[o[2]] + q->v[o[3]]);
+    h[0] = (quad){{q->u[o[0]], mu01, mu23, q->u[o[3]]}, {q->v[o[0]], mv01, mv23, q->v[o[3]]}};
+    h[1] = (quad){{mu01, q->u[o[1]], q->u[o[2]], mu23}, {mv01, q->v[o[1]], q->v[o[2]], mv23}};
+}
+
+static int overlap(const int a[4], const int b[4])
+{
+    int ox = (a[1] < b[1] ? a[1] : b[1]) - (a[0] > b[0] ? a[0] : b[0]);
+    int oy = (a[3] < b[3] ? a[3] : b[3]) - (a[2] > b[2] ? a[2] : b[2]);
+    return ox > 0 && oy > 0 ? ox * oy : 0;
+}
+
 void fs_footprint_filter_run(const fs_footprint_filter *f, const fs_mip_view *m, const fs_footprint *fp,
                              fs_filter_out *out, int *rom_lookups)
 {
@@ -404,13 +557,11 @@ void fs_footprint_filter_run(const fs_footprint_filter *f, const fs_mip_view *m,
     if (rom_lookups)
         *rom_lookups = 0;
     bool finite = isfinite(fp->u) && isfinite(fp->v);
-    double u0 = INFINITY, u1 = -INFINITY, v0 = INFINITY, v1 = -INFINITY;
+    quad q;
     for (int k = 0; k < 4; k++) {
         finite = finite && isfinite(fp->corner_u[k]) && isfinite(fp->corner_v[k]);
-        u0 = fmin(u0, fp->corner_u[k]);
-        u1 = fmax(u1, fp->corner_u[k]);
-        v0 = fmin(v0, fp->corner_v[k]);
-        v1 = fmax(v1, fp->corner_v[k]);
+        q.u[k] = fp->corner_u[k];
+        q.v[k] = fp->corner_v[k];
     }
     if (!finite) {
         trilinear(m, fp, out);
@@ -430,41 +581,51 @@ void fs_footprint_filter_run(const fs_footprint_filter *f, const fs_mip_view *m,
             return;
         }
     }
-    int top = m->levels - 1;
-    int lam0 = fs_footprint_lambda(u1 - u0, v1 - v0, f->M, NULL, NULL);
-    lam0 = lam0 < 0 ? 0 : lam0 > top ? top : lam0;
-    level_result res;
-    int used = -1;
-    for (int lam = lam0; lam <= top && used < 0; lam++) {
-        int r = try_level(f, m, fp, lam, false, &res);
-        if (r == LEVEL_OK && evaluate(f, m, lam, &res, out->rgba, &out->texels)) {
-            used = lam;
-        } else if (r != LEVEL_NOFIT) {
-            /* Collapsed: thicker at finer levels, while it still fits;
-             * else snapped outward (at least a texel thick) at this or the
-             * next levels where that fits. */
-            for (int l = lam - 1; l >= 0 && used < 0; l--) {
-                int r2 = try_level(f, m, fp, l, false, &res);
-                if (r2 == LEVEL_NOFIT)
-                    break;
-                if (r2 == LEVEL_OK && evaluate(f, m, l, &res, out->rgba, &out->texels))
-                    used = l;
-            }
-            for (int l = lam; l <= top && used < 0; l++)
-                if (try_level(f, m, fp, l, true, &res) == LEVEL_OK && evaluate(f, m, l, &res, out->rgba, &out->texels))
-                    used = l;
-            break;
+    quad_out whole, half[2];
+    bool ok = filter_quad(f, m, &q, false, &whole);
+    /* Two steps for a distorted footprint (4.3.6: "up to 2M texels in two
+     * steps"; Fig. 4.32: two arrays): each half of the footprint gets its
+     * own bounding box, level (eq. 4.17) and array of M texels.  Used when
+     * the second step buys detail: no half filters at a coarser level and
+     * at least one at a finer level than the whole footprint does in one
+     * array (the bounding box of the whole wastes the budget: a rotated,
+     * elongated footprint), and also when the whole fits no level.  The halves are averaged (equal weights, a shift in
+     * hardware). */
+    quad h[2];
+    split_halves(&q, h);
+    bool two = false;
+    if (filter_quad(f, m, &h[0], true, &half[0]) && filter_quad(f, m, &h[1], true, &half[1]))
+        two = !ok || (half[0].level <= whole.level && half[1].level <= whole.level &&
+                      (half[0].level < whole.level || half[1].level < whole.level));
+    if (two) {
+        for (int ch = 0; ch < 4; ch++)
+            out->rgba[ch] = 0.5f * (half[0].rgba[ch] + half[1].rgba[ch]);
+        out->texels = half[0].texels + half[1].texels;
+        if (half[0].level == half[1].level) {
+            /* One level: the two arrays share their overlap, and neither
+             * reads more than the whole level (as in evaluate). */
+            const int *e0 = half[0].ext[0], *e1 = half[1].ext[0];
+            long n = (long)(e0[1] - e0[0]) * (e0[3] - e0[2]) + (long)(e1[1] - e1[0]) * (e1[3] - e1[2]) -
+                     overlap(e0, e1);
+            long cap = (long)m->width[half[0].level] * m->height[half[0].level];
+            out->texels = (int)(n < cap ? n : cap);
         }
+        out->level = 0.5f * (float)(half[0].level + half[1].level);
+        out->cls = FS_FP_CLASS_FOOTPRINT_2M;
+        if (rom_lookups)
+            *rom_lookups = half[0].lookups + half[1].lookups;
+        return;
     }
-    if (used < 0) {
+    if (!ok) {
         trilinear(m, fp, out);
         return;
     }
-    out->level = (float)used;
-    out->cls = res.nsteps == 2 ? FS_FP_CLASS_FOOTPRINT_2M : FS_FP_CLASS_FOOTPRINT;
+    memcpy(out->rgba, whole.rgba, sizeof out->rgba);
+    out->texels = whole.texels;
+    out->level = (float)whole.level;
+    out->cls = whole.nsteps == 2 ? FS_FP_CLASS_FOOTPRINT_2M : FS_FP_CLASS_FOOTPRINT;
     if (rom_lookups)
-        for (int s = 0; s < res.nsteps; s++)
-            *rom_lookups += res.step[s].nw;
+        *rom_lookups = whole.lookups;
 }
 
 void fs_filter_footprint(const fs_mip_view *m, const fs_footprint *fp, const void *params, fs_filter_out *out)
