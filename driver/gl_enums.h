@@ -4,7 +4,8 @@
  * enum signature, docs/FORMAT.markdown "Values") and for reading names back.
  * The table covers the GL 1.0-1.5 core enums (gl.h and the GL_VERSION_1_4/1_5
  * sections of glext.h), which include every enum fragsim's commands take,
- * plus the tokens of GL_FRAGSIM_occlusion_unit and GL_HP_occlusion_test.
+ * plus the tokens of fragsim's extensions (GL_FRAGSIM_occlusion_unit,
+ * GL_FRAGSIM_mp_grid, GL_FRAGSIM_footprint_filter) and GL_HP_occlusion_test.
  */
 #ifndef FS_GL_ENUMS_H
 #define FS_GL_ENUMS_H

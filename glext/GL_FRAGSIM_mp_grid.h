@@ -6,9 +6,10 @@
  * manager that loads and frees pyramid levels for a viewer (4.1.1).  The
  * full specification is docs/extensions/mp_grid.txt.
  *
- * Token values lie in the private range 0x6F20-0x6F3F, chosen as those of
- * GL_FRAGSIM_occlusion_unit (0x6F00-0x6F0F): no token of Mesa's GL/gl.h or
- * GL/glext.h (Debian 12) lies in 0x6000-0x6FFF.  Not registered.
+ * Token values lie in the private range 0x6F20-0x6F2F and at 0x6F30, chosen
+ * as those of GL_FRAGSIM_occlusion_unit (0x6F00-0x6F0F): no token of Mesa's
+ * GL/gl.h or GL/glext.h (Debian 12) lies in 0x6000-0x6FFF.  0x6F30-0x6F3F
+ * belongs to GL_FRAGSIM_footprint_filter.  Not registered.
  */
 #ifndef GL_FRAGSIM_mp_grid
 #define GL_FRAGSIM_mp_grid 1
@@ -38,7 +39,7 @@ extern "C" {
 #define GL_MPGRID_MERGE_SIDE          0x6F2D /* levels of at most this side are stored merged (0: off) */
 #define GL_MPGRID_MERGE_BLOCK         0x6F2E /* pyramids per side of a merged block (4) */
 #define GL_MAX_MPGRID_PYRAMIDS        0x6F2F /* glGetMPGridiv: largest n and m */
-#define GL_MPGRID_AUTO_ADAPT          0x6F30 /* adapt when the camera changed, before texturing (FALSE) */
+#define GL_MPGRID_AUTO_ADAPT          0x6F40 /* adapt when the camera changed, before texturing (FALSE) */
 
 typedef void (APIENTRYP PFNGLMPGRIDTEXTUREPROC)(GLenum target, GLsizei n, GLsizei m, GLsizei tileWidth,
                                                 GLsizei tileHeight, GLint internalformat);
