@@ -114,6 +114,15 @@ static void usage(FILE *f)
             "  --gather           gather and plot results already in OUT, run nothing\n"
             "  --run-job JOBS N   run job N of a job list (what every runner calls)\n"
             "\n"
+            "SPEC (paths relative to the working directory; see configs/sweeps/*.ini):\n"
+            "  [sweep]            name, mode (functional|cycle|sampled), base_config, out, jobs\n"
+            "  [traces]           trace = FILE, scene = NAME[:SCALE] (built with scenegen), repeatable\n"
+            "  [axis.SEC.KEY]     values = v1, v2, ...  (keys of `fragsim config --list`)\n"
+            "  [axis.config]      values = a.ini, b.ini (whole configuration files)\n"
+            "  [output]           stats = JSON paths (totals.NAME, cycle.totals.NAME),\n"
+            "                     ratio.NAME = COLUMN / COLUMN, cycles = JSON path\n"
+            "  [plot.NAME]        x, y, series (CSV columns), title, xlabel, ylabel, logx, logy\n"
+            "\n"
             "Exit status 0 when every job succeeded, 1 when a job failed (the others\n"
             "are still gathered), 2 for a usage or spec error.\n");
 }
