@@ -21,8 +21,13 @@
  *   round(s * w * 256) - 128 as a 24.8 fixed-point texel position, whose 8
  *   fraction bits are the bilinear weights; lerps are 8-bit with rounding;
  *   the two MIPmap levels are blended with weight trunc(frac(lambda)*256).
- * - GL_CLAMP with LINEAR needs the border colour: llvmpipe filters that in
- *   float ("SoA" path), and so does fragsim.
+ * - GL_CLAMP on either axis (with any filter) is filtered in float, as
+ *   llvmpipe's "SoA" path does; LINEAR then reaches the border colour,
+ *   taken as a texel of the image's base format.  With min and mag image
+ *   filters that differ, a quad's NEAREST pixels go through the LINEAR code
+ *   (rounded weights) when the quad sharing its 8-wide vector uses LINEAR.
+ * - With an odd framebuffer height llvmpipe's quads are one row off the
+ *   model's; each row takes lambda from the quad llvmpipe puts it in.
  * - The texel becomes a float c/255 and the environment is computed in
  *   float; the colour buffer conversion rounds it (fragment_stages.h).
  */
