@@ -805,6 +805,76 @@ TEST(gl_auto_adapt)
     free(big);
 }
 
+static void repeat_scene(fs_context *c)
+{
+    fsglViewport(c, 0, 0, 64, 64);
+    fsglClear(c, GL_COLOR_BUFFER_BIT);
+    fsglMatrixMode(c, GL_PROJECTION);
+    fsglLoadIdentity(c);
+    fsglOrtho(c, -1, 1, -1, 1, -1, 1);
+    fsglMatrixMode(c, GL_MODELVIEW);
+    fsglLoadIdentity(c);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    fsglTexEnvi(c, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    fsglEnable(c, GL_TEXTURE_2D);
+    fsglBegin(c, GL_QUADS);
+    fsglTexCoord2f(c, -0.5f, -0.5f);
+    fsglVertex2f(c, -1, -1);
+    fsglTexCoord2f(c, 1.5f, -0.5f);
+    fsglVertex2f(c, 1, -1);
+    fsglTexCoord2f(c, 1.5f, 1.5f);
+    fsglVertex2f(c, 1, 1);
+    fsglTexCoord2f(c, -0.5f, 1.5f);
+    fsglVertex2f(c, -1, 1);
+    fsglEnd(c);
+}
+
+/* REPEAT (the initial wrap mode) on a power-of-two grid samples like the
+ * ordinary texture; on a 3 x 1 grid it makes the texture incomplete, and
+ * CLAMP_TO_EDGE makes it complete again (Issue 5 of the spec). */
+TEST(gl_repeat_needs_power_of_two_grid)
+{
+    uint8_t *big = random_rgba(64, 64, 21);
+    fs_mip_owned mo;
+    REQUIRE(big && fs_mip_build_box(&mo, big, 64, 64, GL_REPEAT) == 0);
+    fs_context *a = fs_context_create(NULL, 64, 64), *b = fs_context_create(NULL, 64, 64);
+    REQUIRE(a && b);
+    fsglPixelStorei(a, GL_UNPACK_ALIGNMENT, 1);
+    fsglPixelStorei(b, GL_UNPACK_ALIGNMENT, 1);
+    fsglBindTexture(a, GL_TEXTURE_2D, 1);
+    upload_big(a, &mo, mo.view.levels);
+    fsglBindTexture(b, GL_TEXTURE_2D, 1);
+    REQUIRE(upload_grid(b, big, 2, 2, 32, 32, 0) == 0);
+    repeat_scene(a);
+    repeat_scene(b);
+    long differ = 0;
+    for (size_t k = 0; k < (size_t)64 * 64 * 4; k++)
+        differ += a->fb.color[k] != b->fb.color[k];
+    CHECK_EQ_INT(differ, 0);
+    CHECK(fs_texture_quads_sampled(b) > 0);
+    fs_context_destroy(a);
+    fs_context_destroy(b);
+
+    fs_context *c = fs_context_create(NULL, 64, 64);
+    REQUIRE(c);
+    uint8_t *wide = random_rgba(48, 16, 22);
+    fsglPixelStorei(c, GL_UNPACK_ALIGNMENT, 1);
+    fsglBindTexture(c, GL_TEXTURE_2D, 2);
+    REQUIRE(upload_grid(c, wide, 3, 1, 16, 16, 0) == 0);
+    repeat_scene(c);
+    CHECK_EQ_INT(fs_texture_quads_sampled(c), 0);
+    CHECK(fs_texture_quads_incomplete(c) > 0);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    repeat_scene(c);
+    CHECK(fs_texture_quads_sampled(c) > 0);
+    CHECK_EQ_INT(err(c), GL_NO_ERROR);
+    fs_context_destroy(c);
+    fs_mip_free(&mo);
+    free(big);
+    free(wide);
+}
+
 /* The errors of docs/extensions/mp_grid.txt, "Errors". */
 TEST(gl_errors)
 {
@@ -933,6 +1003,7 @@ TEST_LIST = {
     TEST_ENTRY(gl_quad_matches_ordinary_texture),
     TEST_ENTRY(gl_adapt_and_substitute),
     TEST_ENTRY(gl_auto_adapt),
+    TEST_ENTRY(gl_repeat_needs_power_of_two_grid),
     TEST_ENTRY(gl_errors),
     TEST_END,
 };
