@@ -883,6 +883,52 @@ TEST(query_errors_change_nothing)
     fs_context_destroy(c);
 }
 
+/* Float forms given an enum outside GLenum's range (NaN, infinite,
+ * negative, huge): GL 1.5 2.5 makes it INVALID_ENUM and the call changes
+ * nothing; converting such a float to an integer would be undefined in C
+ * (UBSan in `make sanitize` catches a regression).  NaN colours and
+ * priorities are clamped to a defined value, never stored as NaN. */
+TEST(nonfinite_float_parameters)
+{
+    fs_context *c = fs_context_create(NULL, 4, 4);
+    REQUIRE(c);
+    fsglBindTexture(c, GL_TEXTURE_2D, 1);
+    const float bad[] = {NAN, INFINITY, -INFINITY, 1e30f, -1e30f, -9728.0f};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        fsglTexParameterf(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, bad[i]);
+        CHECK_EQ_INT(fsglGetError(c), GL_INVALID_ENUM);
+        fsglTexParameterf(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, bad[i]);
+        CHECK_EQ_INT(fsglGetError(c), GL_INVALID_ENUM);
+        fsglTexEnvf(c, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, bad[i]);
+        CHECK_EQ_INT(fsglGetError(c), GL_INVALID_ENUM);
+    }
+    GLint iv = 0;
+    fsglGetTexParameteriv(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, &iv);
+    CHECK_EQ_INT(iv, GL_NEAREST_MIPMAP_LINEAR); /* the initial value, 3.8.11 */
+    fsglGetTexParameteriv(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, &iv);
+    CHECK_EQ_INT(iv, GL_REPEAT);
+    fsglGetTexEnviv(c, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &iv);
+    CHECK_EQ_INT(iv, GL_MODULATE);
+    fsglTexParameterf(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (float)GL_LINEAR);
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    const GLfloat nan4[4] = {NAN, NAN, 2.0f, -1.0f};
+    fsglTexParameterfv(c, GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, nan4);
+    fsglTexEnvfv(c, GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, nan4);
+    fsglTexParameterf(c, GL_TEXTURE_2D, GL_TEXTURE_PRIORITY, NAN);
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    GLfloat fv[4];
+    fsglGetTexParameterfv(c, GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, fv);
+    for (int k = 0; k < 4; k++)
+        CHECK(fv[k] >= 0.0f && fv[k] <= 1.0f);
+    fsglGetTexEnvfv(c, GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, fv);
+    for (int k = 0; k < 4; k++)
+        CHECK(fv[k] >= 0.0f && fv[k] <= 1.0f);
+    CHECK(fv[2] == 1.0f && fv[3] == 0.0f);
+    fsglGetTexParameterfv(c, GL_TEXTURE_2D, GL_TEXTURE_PRIORITY, fv);
+    CHECK(fv[0] >= 0.0f && fv[0] <= 1.0f);
+    fs_context_destroy(c);
+}
+
 TEST_LIST = {
     TEST_ENTRY(filters_magnified),
     TEST_ENTRY(filters_minified),
@@ -897,6 +943,7 @@ TEST_LIST = {
     TEST_ENTRY(odd_framebuffer_sizes),
     TEST_ENTRY(display_list_unpack_state),
     TEST_ENTRY(query_errors_change_nothing),
+    TEST_ENTRY(nonfinite_float_parameters),
     TEST_END,
 };
 

@@ -617,6 +617,21 @@ static bool is_wrap(GLenum w)
            w == GL_MIRRORED_REPEAT;
 }
 
+/* An enum passed through glTexParameterf or glTexEnvf is truncated to an
+ * integer, as Mesa does (so OSMesa and fragsim agree on 9728.5); a value
+ * outside GLenum's range (NaN, infinite, negative) names no enum, and
+ * converting it would be undefined behaviour in C, so it becomes 0, which
+ * every caller rejects with INVALID_ENUM. */
+static GLenum float_to_enum(float v)
+{
+    if (!(v >= 0.0f && v < 2147483648.0f))
+        return 0;
+    return (GLenum)(GLint)v;
+}
+
+/* Clamps to [0, 1]; NaN, which no comparison orders, becomes 0. */
+static float clamp01_param(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
+
 /* One texture parameter; vals holds 1 or 4 values already as floats (the
  * integer forms convert colours as 2.14.9 says, enums exactly). */
 static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const float *vals, bool vector)
@@ -629,7 +644,7 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
         return;
     }
     fs_tex_object *t = c->texture->bound;
-    GLenum e = (GLenum)(GLint)vals[0];
+    GLenum e = float_to_enum(vals[0]);
     switch (pname) {
     case GL_TEXTURE_MIN_FILTER:
         if (!is_min_filter(e))
@@ -654,10 +669,10 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
         if (!vector)
             break;
         for (int k = 0; k < 4; k++)
-            t->border[k] = vals[k] < 0.0f ? 0.0f : vals[k] > 1.0f ? 1.0f : vals[k];
+            t->border[k] = clamp01_param(vals[k]);
         return;
     case GL_TEXTURE_PRIORITY:
-        t->priority = vals[0] < 0.0f ? 0.0f : vals[0] > 1.0f ? 1.0f : vals[0];
+        t->priority = clamp01_param(vals[0]);
         return;
     case GL_TEXTURE_FOOTPRINT_BUDGET_FRAGSIM:
         /* GL_FRAGSIM_footprint_filter: ROMs exist for these M only. */
@@ -773,7 +788,7 @@ static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *val
         return;
     }
     if (pname == GL_TEXTURE_ENV_MODE) {
-        GLenum m = (GLenum)(GLint)vals[0];
+        GLenum m = float_to_enum(vals[0]);
         switch (m) {
         case GL_MODULATE: case GL_DECAL: case GL_BLEND: case GL_REPLACE: case GL_ADD:
             s->env_mode = m;
@@ -788,7 +803,7 @@ static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *val
     }
     if (pname == GL_TEXTURE_ENV_COLOR && vector) {
         for (int k = 0; k < 4; k++)
-            s->env_color[k] = vals[k] < 0.0f ? 0.0f : vals[k] > 1.0f ? 1.0f : vals[k];
+            s->env_color[k] = clamp01_param(vals[k]);
         return;
     }
     fs_error(c, GL_INVALID_ENUM);
