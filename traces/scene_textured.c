@@ -5,12 +5,15 @@
  * pyramid, trilinear filtering, GL_REPEAT and GL_MODULATE over vertex
  * colours, plus a NEAREST-filtered box.  The ground is a row-major grid of
  * quads, so any triangle budget is met exactly (one triangle more for an
- * odd budget).
+ * odd budget).  scenegen --filter footprint / footprint-hybrid --budget M
+ * draws the ground with the fast-footprint filter instead
+ * (GL_FRAGSIM_footprint_filter; the texture-cache study sweeps M).
  */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include "sg.h"
+#include "../glext/GL_FRAGSIM_footprint_filter.h"
 
 #define TEX 256
 
@@ -69,6 +72,11 @@ int sg_scene_textured(sg *s, const sg_params *p, char *err, size_t errlen)
         lp += (size_t)sz * (size_t)sz * 4;
     }
     free(levels);
+    const GLint ground = p->filter == SG_FILTER_FOOTPRINT          ? GL_FOOTPRINT_FRAGSIM
+                         : p->filter == SG_FILTER_FOOTPRINT_HYBRID ? GL_FOOTPRINT_HYBRID_FRAGSIM
+                                                                   : GL_LINEAR_MIPMAP_LINEAR;
+    if (p->budget)
+        G(s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_FOOTPRINT_BUDGET_FRAGSIM, p->budget);
     G(s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     G(s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     G(s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
@@ -96,7 +104,7 @@ int sg_scene_textured(sg *s, const sg_params *p, char *err, size_t errlen)
                     up[3] = {0, 1, 0};
         sg_look_at(s, eye, at, up);
         G(s, Enable, GL_TEXTURE_2D);
-        G(s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+        G(s, TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, ground);
         sg_begin(s, GL_QUADS);
         for (uint64_t q = 0; q < quads; q++) {
             int i = (int)(q % (uint64_t)per_row);

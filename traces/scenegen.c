@@ -18,6 +18,9 @@ static void usage(FILE *f)
             "  --frames N      frames to draw (default per scene and scale)\n"
             "  --size WxH      framebuffer size\n"
             "  --seed S        random seed (default 1)\n"
+            "  --filter F      textured only: the ground's min filter, trilinear (default),\n"
+            "                  footprint or footprint-hybrid (GL_FRAGSIM_footprint_filter)\n"
+            "  --budget M      textured with a footprint filter: its texel budget, 8, 16, 32 or 64\n"
             "Scenes: ");
     for (int i = 0; i < sg_scene_count; i++) fprintf(f, "%s%s", i ? ", " : "", sg_scenes[i].name);
     fprintf(f, "\n");
@@ -80,6 +83,7 @@ int main(int argc, char **argv)
     const char *scene = NULL, *scale = "small", *out = NULL;
     int frames = -1, w = 0, h = 0, list = 0, markdown = 0, count = 0;
     unsigned long long seed = 1;
+    int filter = -1, budget = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         int more = i + 1 < argc;
@@ -114,6 +118,22 @@ int main(int argc, char **argv)
                 fprintf(stderr, "scenegen: --seed wants a number\n");
                 return 2;
             }
+        } else if (!strcmp(a, "--filter") && more) {
+            const char *f = argv[++i];
+            filter = !strcmp(f, "trilinear") ? SG_FILTER_TRILINEAR : !strcmp(f, "footprint") ? SG_FILTER_FOOTPRINT
+                     : !strcmp(f, "footprint-hybrid") ? SG_FILTER_FOOTPRINT_HYBRID : -2;
+            if (filter == -2) {
+                fprintf(stderr, "scenegen: --filter wants trilinear, footprint or footprint-hybrid\n");
+                return 2;
+            }
+        } else if (!strcmp(a, "--budget") && more) {
+            char *end;
+            long v = strtol(argv[++i], &end, 10);
+            if (*end || (v != 8 && v != 16 && v != 32 && v != 64)) {
+                fprintf(stderr, "scenegen: --budget wants 8, 16, 32 or 64 (the footprint filter's M)\n");
+                return 2;
+            }
+            budget = (int)v;
         } else if (!strcmp(a, "-o") && more) {
             out = argv[++i];
         } else if (a[0] != '-' && !scene) {
@@ -145,6 +165,16 @@ int main(int argc, char **argv)
         p.height = h;
     }
     p.seed = seed;
+    if ((filter >= 0 || budget) && sc->run != sg_scene_textured) {
+        fprintf(stderr, "scenegen: --filter and --budget apply to the textured scene only\n");
+        return 2;
+    }
+    if (budget && filter != SG_FILTER_FOOTPRINT && filter != SG_FILTER_FOOTPRINT_HYBRID) {
+        fprintf(stderr, "scenegen: --budget needs --filter footprint or footprint-hybrid\n");
+        return 2;
+    }
+    p.filter = filter < 0 ? SG_FILTER_TRILINEAR : filter;
+    p.budget = budget;
     if (!out && !count) {
         fprintf(stderr, "scenegen: -o OUT.trace is required (or --count)\n");
         return 2;

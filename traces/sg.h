@@ -130,7 +130,12 @@ typedef struct sg_params {
     int frames;
     int width, height;
     uint64_t seed;
+    /* The textured scene's ground filter (scenegen --filter, --budget):
+     * SG_FILTER_* and the footprint filter's M (0: the GL default, 16). */
+    int filter;
+    int budget;
 } sg_params;
+enum { SG_FILTER_TRILINEAR, SG_FILTER_FOOTPRINT, SG_FILTER_FOOTPRINT_HYBRID };
 
 typedef struct sg_scene {
     const char *name;

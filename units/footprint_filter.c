@@ -446,11 +446,30 @@ static double axis_ratio(const fs_footprint *fp)
     return sqrt(big / small);
 }
 
+/* Reports the 2x2 block fs_mip_bilinear reads at `level` (its texel
+ * choice, GL 1.5 eq. 3.22, with its guard for NaN and huge coordinates) as
+ * the next rectangle of out (texture_filter.h), for the cycle model. */
+static void report_block(const fs_mip_view *m, int level, double u, double v, fs_filter_out *out)
+{
+    level = level < 0 ? 0 : level >= m->levels ? m->levels - 1 : level;
+    u = u == u ? (u > 1e9 ? 1e9 : u < -1e9 ? -1e9 : u) : 0.0;
+    v = v == v ? (v > 1e9 ? 1e9 : v < -1e9 ? -1e9 : v) : 0.0;
+    double x = u * m->width[level] / m->width[0] - 0.5, y = v * m->height[level] / m->height[0] - 0.5;
+    out->rect[out->nrects++] = (struct fs_filter_rect){level, (int)floor(x), (int)floor(y), 2, 2};
+}
+
 static void trilinear(const fs_mip_view *m, const fs_footprint *fp, fs_filter_out *out)
 {
     double lam = fs_footprint_lambda_iso(fp);
     out->texels = fs_mip_trilinear(m, lam, fp->u, fp->v, out->rgba);
+    /* fs_mip_trilinear's levels: 0 when magnified, the last one at or
+     * beyond it, else floor(lambda) and the next. */
     double top = m->levels - 1;
+    out->nrects = 0;
+    int l0 = !(lam > 0.0) ? 0 : lam >= top ? (int)top : (int)floor(lam);
+    report_block(m, l0, fp->u, fp->v, out);
+    if (lam > 0.0 && lam < top)
+        report_block(m, l0 + 1, fp->u, fp->v, out);
     out->level = (float)(lam > 0.0 ? (lam < top ? lam : top) : 0.0);
     out->cls = FS_FP_CLASS_TRILINEAR;
 }
@@ -543,6 +562,14 @@ static void split_halves(const quad *q, quad h[2])
     h[1] = (quad){{mu01, q->u[o[1]], q->u[o[2]], mu23}, {mv01, q->v[o[1]], q->v[o[2]], mv23}};
 }
 
+/* Reports array `step` of q (the texels the hardware loads whole) as the
+ * next rectangle of out. */
+static void report_array(const quad_out *q, int step, fs_filter_out *out)
+{
+    const int *e = q->ext[step];
+    out->rect[out->nrects++] = (struct fs_filter_rect){q->level, e[0], e[2], e[1] - e[0], e[3] - e[2]};
+}
+
 static int overlap(const int a[4], const int b[4])
 {
     int ox = (a[1] < b[1] ? a[1] : b[1]) - (a[0] > b[0] ? a[0] : b[0]);
@@ -574,6 +601,7 @@ void fs_footprint_filter_run(const fs_footprint_filter *f, const fs_mip_view *m,
         if (!(fs_footprint_lambda_iso(fp) > 0.0)) {
             out->texels = fs_mip_bilinear(m, 0, fp->u, fp->v, out->rgba);
             out->cls = FS_FP_CLASS_BILINEAR0;
+            report_block(m, 0, fp->u, fp->v, out);
             return;
         }
         if (!(axis_ratio(fp) > f->iso_limit)) {
@@ -612,8 +640,11 @@ void fs_footprint_filter_run(const fs_footprint_filter *f, const fs_mip_view *m,
         }
         out->level = 0.5f * (float)(half[0].level + half[1].level);
         out->cls = FS_FP_CLASS_FOOTPRINT_2M;
+        for (int k = 0; k < 2; k++)
+            report_array(&half[k], 0, out);
+        out->rom_lookups = half[0].lookups + half[1].lookups;
         if (rom_lookups)
-            *rom_lookups = half[0].lookups + half[1].lookups;
+            *rom_lookups = out->rom_lookups;
         return;
     }
     if (!ok) {
@@ -624,6 +655,9 @@ void fs_footprint_filter_run(const fs_footprint_filter *f, const fs_mip_view *m,
     out->texels = whole.texels;
     out->level = (float)whole.level;
     out->cls = whole.nsteps == 2 ? FS_FP_CLASS_FOOTPRINT_2M : FS_FP_CLASS_FOOTPRINT;
+    for (int k = 0; k < whole.nsteps; k++)
+        report_array(&whole, k, out);
+    out->rom_lookups = whole.lookups;
     if (rom_lookups)
         *rom_lookups = whole.lookups;
 }

@@ -43,6 +43,13 @@ typedef struct fs_filter_out {
     int texels;        /* texels fetched from memory (distinct addresses) */
     float level;       /* MIPmap level used (fractional when blended) */
     int cls;           /* filter-specific class, e.g. the hybrid's choice */
+    /* What the filter read, for the cycle model's texture unit
+     * (rtl_model/texture_stage.c): up to two texel rectangles in their
+     * level's texels, before wrapping (nrects 0: not reported), and the
+     * weighting-ROM lookups made.  Filled by the footprint filter. */
+    int nrects;
+    struct fs_filter_rect { int level, x0, y0, w, h; } rect[2];
+    int rom_lookups;
 } fs_filter_out;
 
 /* Every filter: params points to that filter's own parameter struct (may be
