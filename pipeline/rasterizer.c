@@ -206,6 +206,10 @@ __attribute__((target("fma"))) static void emit_pixels_fma(const fs_prim_setup *
 
 void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
 {
+    /* Sampled mode's tile sample (docs/cycle_model.md): one branch in
+     * functional mode. */
+    if (c->cycle && fs_cycle_quad_skipped(c->cycle, q->x, q->y))
+        return;
     unsigned m = q->mask;
     q->front_facing = s->front;
     c->stats.quads_generated++;
@@ -551,7 +555,11 @@ static void raster_tri_reference(fs_context *c, const fs_prim_setup *s, const tr
 /* The same coverage with the edge functions stepped incrementally: per quad
  * the three edges' values at the four pixels are formed by additions and the
  * mask is read from sign bits (E - 1 >= 0 for all edges). */
-static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e)
+/* The quads of the triangle's bounding box that start in [bx0, bx1] x
+ * [by0, by1] (even GL coordinates inside the box); the border masks refer
+ * to the whole box. */
+static inline void raster_tri_box(fs_context *c, const fs_prim_setup *s, const tri_edges *e, int bx0, int bx1,
+                                  int by0, int by1)
 {
     const int H = s->height;
     const int gy0 = fs_raster_row_to_gl(H, e->y1), gy1 = fs_raster_row_to_gl(H, e->y0);
@@ -568,13 +576,13 @@ static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edg
     for (int k = 0; k < 3; k++) {
         ddx[k] = -e->dcdx[k];
         ddy[k] = -e->dcdy[k];
-        int64_t ry = fs_raster_row_to_gl(H, qy0);
-        row[k] = e->c[k] - 1 - e->dcdx[k] * qx0 + e->dcdy[k] * ry;
+        int64_t ry = fs_raster_row_to_gl(H, by0);
+        row[k] = e->c[k] - 1 - e->dcdx[k] * bx0 + e->dcdy[k] * ry;
     }
-    for (int qy = qy0; qy <= gy1; qy += 2) {
+    for (int qy = by0; qy <= by1; qy += 2) {
         unsigned ymask = (qy == qy0 ? bottom : 0xFu) & (qy == qyl ? top : 0xFu);
         int64_t e0 = row[0], e1 = row[1], e2 = row[2];
-        for (int qx = qx0; qx <= e->x1; qx += 2) {
+        for (int qx = bx0; qx <= bx1; qx += 2) {
             /* Pixel 0 at (qx, qy); 1 = +x; 2 = +y; 3 = +x+y. */
             int64_t a0 = e0 | e1 | e2;
             int64_t a1 = (e0 + ddx[0]) | (e1 + ddx[1]) | (e2 + ddx[2]);
@@ -603,4 +611,37 @@ static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edg
         for (int k = 0; k < 3; k++)
             row[k] += 2 * ddy[k];
     }
+}
+
+static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e)
+{
+    const int H = s->height;
+    const int gy0 = fs_raster_row_to_gl(H, e->y1), gy1 = fs_raster_row_to_gl(H, e->y0);
+    const int qx0 = e->x0 & ~1, qy0 = gy0 & ~1;
+    const fs_cycle_tiles *t = c->cycle ? fs_cycle_tile_sample(c->cycle) : NULL;
+    if (!t || t->every <= 1 || qx0 < 0 || qy0 < 0) {
+        raster_tri_box(c, s, e, qx0, e->x1, qy0, gy1);
+        return;
+    }
+    /* Sampled mode's tile sample (docs/cycle_model.md): only the sampled
+     * tiles of the box are walked (tiles are at least 2 pixels wide and
+     * aligned to even coordinates, so they hold whole quads). */
+    /* The triangle's area in pixels (the edge vectors' cross product is
+     * twice the area, in units of 2^(4 * subpixel bits)), at most its box:
+     * the model charges the sampled quads so that their fragments add up to
+     * the areas (a ratio estimator, docs/cycle_model.md). */
+    int64_t cross = e->dcdx[0] * e->dcdy[1] - e->dcdx[1] * e->dcdy[0];
+    double area = fabs((double)cross) / 2.0 / ldexp(1.0, 4 * c->raster.subpixel_bits);
+    double box = (double)(e->x1 - e->x0 + 1) * (double)(e->y1 - e->y0 + 1);
+    fs_cycle_triangle_area(c->cycle, area < box ? area : box);
+    const int sh = t->shift;
+    for (int ty = qy0 >> sh; ty <= gy1 >> sh; ty++)
+        for (int tx = qx0 >> sh; tx <= e->x1 >> sh; tx++) {
+            if (!fs_cycle_tile_sampled(t, (uint32_t)tx, (uint32_t)ty))
+                continue;
+            int bx0 = tx << sh, by0 = ty << sh;
+            int bx1 = bx0 + (1 << sh) - 1, by1 = by0 + (1 << sh) - 1;
+            raster_tri_box(c, s, e, bx0 > qx0 ? bx0 : qx0, bx1 < e->x1 ? bx1 : e->x1, by0 > qy0 ? by0 : qy0,
+                           by1 < gy1 ? by1 : gy1);
+        }
 }

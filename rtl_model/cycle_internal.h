@@ -58,6 +58,7 @@ typedef struct fs_cyc_kind {
 #define FS_CYC_KINDS 8192
 
 struct fs_cycle {
+    fs_cycle_tiles tiles;     /* first: fs_cycle_quad_skipped reads it (cycle_model.h) */
     fs_config cfg;
     fs_cycle_mode mode;
     fs_cyc_unit u[FS_U_COUNT];
@@ -122,6 +123,15 @@ struct fs_cycle {
     bool *frame_was_skipped;
     uint64_t frame_cap, frames_done;
     double frame_error;         /* absolute error estimate of the interpolated cycles */
+
+    /* sampled mode, tile sampling: work (unscaled service cycles) per tile
+     * of the screen in this frame, for the error estimate */
+    double *tile_work;
+    int tiles_x, tiles_y, fb_width, fb_height;
+    double tile_var;            /* variance of the tile-sampled frames' cycles so far */
+    /* ratio estimator: areas and sampled fragments of the triangles done,
+     * and the current triangle's */
+    double area_done, frags_done, area_cur, frags_cur, kq;
 };
 
 /* ---- the recurrence (cycle_model.c) ---- */
@@ -149,6 +159,13 @@ uint64_t fs_cyc_setup_cycles(const fs_config *cfg);
 uint64_t fs_cyc_raster_cycles(const fs_config *cfg, unsigned fragments);
 int fs_cyc_route(const fs_cycle *cy, int x, int y);     /* image engine of a pixel */
 int fs_cyc_texture_init(fs_cycle *cy, char *err, size_t errlen);
+/* The distinct texel addresses (sorted) the texture unit reads for one
+ * footprint-filtered pixel: o's rectangles wrapped by t's wrap modes, at
+ * most cap of them before deduplication.  Returns the count. */
+#define FS_CYC_FP_MAX_TEXELS 256u
+struct fs_filter_out;
+unsigned fs_cyc_footprint_addresses(const struct fs_tex_object *t, const struct fs_filter_out *o, uint64_t *a,
+                                    unsigned cap);
 void fs_cyc_texture_free(fs_cycle *cy);
 void fs_cyc_fragment_work(const fs_context *c, const fs_cycle *cy, unsigned reaching, unsigned passed,
                           unsigned written, uint64_t *service, uint64_t *bytes, bool *reads);

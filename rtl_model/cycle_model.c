@@ -163,6 +163,7 @@ fs_cycle *fs_cycle_create(const fs_config *cfg, fs_cycle_mode mode, char *err, s
     }
     cy->cfg = *cfg;
     cy->mode = mode;
+    cy->tiles.every = 1;
     const fs_config *g = &cy->cfg;
     int boards = (int)g->raster_boards, engines = boards * (int)g->fragment_image_engines;
     cy->engines_total = engines;
@@ -223,6 +224,7 @@ void fs_cycle_destroy(fs_cycle *cy)
     }
     fs_cyc_stage_free(&cy->rtri);
     free(cy->frame_cycles);
+    free(cy->tile_work);
     free(cy->seq);
     free(cy->frame_was_skipped);
     free(cy->fbmem);
@@ -232,10 +234,47 @@ void fs_cycle_destroy(fs_cycle *cy)
 
 static void resync_counters(fs_cycle *cy, const fs_context *c);
 
+/* The per-tile work of the error estimate, once the tile sample and the
+ * screen are known (no estimate without memory for it). */
+static void tile_work_alloc(fs_cycle *cy)
+{
+    free(cy->tile_work);
+    cy->tile_work = NULL;
+    if (cy->tiles.every <= 1 || cy->fb_width <= 0 || cy->fb_height <= 0)
+        return;
+    int side = 1 << cy->tiles.shift;
+    cy->tiles_x = (cy->fb_width + side - 1) / side;
+    cy->tiles_y = (cy->fb_height + side - 1) / side;
+    cy->tile_work = calloc((size_t)cy->tiles_x * (size_t)cy->tiles_y, sizeof *cy->tile_work);
+}
+
+/* Sampled mode's tile sample: one tile in each block of n tiles, the
+ * block as square as n allows (width: the largest divisor of n <= sqrt(n)). */
+static void set_tiles(fs_cycle *cy, uint32_t n)
+{
+    if (n < 1)
+        n = 1;
+    uint32_t st = 1;
+    for (uint32_t d = 1; d * d <= n; d++)
+        if (n % d == 0)
+            st = d;
+    int sh = 0;
+    while ((2 << sh) <= cy->cfg.sampling_tile_size)
+        sh++;
+    cy->tiles.every = n > 1 ? n : 1;
+    cy->kq = (double)cy->tiles.every;
+    cy->tiles.step = st;
+    cy->tiles.shift = sh;
+    tile_work_alloc(cy);
+}
+
 void fs_cycle_attach(fs_cycle *cy, fs_context *c)
 {
     c->cycle = cy;
     resync_counters(cy, c);
+    cy->fb_width = c->fb.width;
+    cy->fb_height = c->fb.height;
+    tile_work_alloc(cy);
 }
 
 void fs_cycle_set_record_fn(fs_cycle *cy, fs_cycle_record_fn fn, void *user, bool draws)
@@ -463,7 +502,7 @@ bool fs_cycle_draw(fs_cycle *cy, fs_context *c, GLenum mode, size_t n)
     cy->acc.draws++;
     cy->draw_kind = NULL;
     cy->draw_sampled = false;
-    if (cy->mode == FS_CYCLE_SAMPLED && !cy->frame_sampling) {
+    if (cy->mode == FS_CYCLE_SAMPLED && !cy->frame_sampling && cy->cfg.sampling_every > 1) {
         fs_cyc_kind *k = kind_of(cy, c, mode, n);
         if (k) {
             k->seen++;
@@ -524,6 +563,17 @@ void fs_cycle_triangle(fs_cycle *cy)
 
 /* ---- quads ---- */
 
+void fs_cycle_triangle_area(fs_cycle *cy, double area)
+{
+    cy->area_done += cy->area_cur;
+    cy->frags_done += cy->frags_cur;
+    cy->area_cur = area;
+    cy->frags_cur = 0;
+    /* Until enough fragments were sampled for a stable ratio, the
+     * design factor `every`. */
+    cy->kq = cy->frags_done >= 256 && cy->area_done > 0 ? cy->area_done / cy->frags_done : (double)cy->tiles.every;
+}
+
 void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q)
 {
     unsigned m = q->mask & 0xfu;
@@ -549,30 +599,54 @@ void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q)
         fifo_push(&cy->rtri.in, arr > rs->free ? arr : rs->free);
         cy->tri_started = true;
     }
-    uint64_t a = fs_cyc_step(rs, arr, fs_cyc_raster_cycles(&cy->cfg, n), 0, false, ts ? ts : fs);
+    /* Tile sampling: this quad stands for about `every` quads at its place
+     * in the other tiles of its block, processed one after another by the
+     * same units, so its service and memory traffic count that many times.
+     * The factor is the ratio of the triangles' areas to their sampled
+     * fragments so far (Cochran, Sampling Techniques, 3rd ed., ch. 6, the
+     * ratio estimator): the count of fragments then follows the exact
+     * areas, and only the per-fragment cost is sampled. */
+    uint64_t k = cy->tiles.every;
+    double kq = 1.0;
+    if (k > 1) {
+        cy->frags_cur += n;
+        kq = cy->kq;
+    }
+#define FS_SCALE(v) (k > 1 ? (uint64_t)llround((double)(v) * kq) : (uint64_t)(v))
+    uint64_t quad_work = FS_SCALE(fs_cyc_raster_cycles(&cy->cfg, n)) + FS_SCALE(cy->tex_service);
+    uint64_t a = fs_cyc_step(rs, arr, FS_SCALE(fs_cyc_raster_cycles(&cy->cfg, n)), 0, false, ts ? ts : fs);
     if (ts) {
         cy->u[FS_U_texture].active = true;
-        a = fs_cyc_step(ts, a, cy->tex_service, cy->tex_bytes, cy->tex_misses && !cy->cfg.memory_prefetch, fs);
+        a = fs_cyc_step(ts, a, FS_SCALE(cy->tex_service), FS_SCALE(cy->tex_bytes), cy->tex_misses && !cy->cfg.memory_prefetch, fs);
         cy->tex_pending = false;
         cy->tex_service = cy->tex_bytes = cy->tex_misses = 0;
     }
     uint64_t service, bytes;
     bool reads;
     fs_cyc_fragment_work(c, cy, reaching, passed, written, &service, &bytes, &reads);
+    service = FS_SCALE(service);
+    bytes = FS_SCALE(bytes);
+    quad_work += service + bytes / (uint64_t)cy->cfg.memory_bytes_per_cycle;
     a = fs_cyc_step(fs, a, service, bytes, reads, os);
     cy->acc.fb_bytes += bytes;
     if (os) {
         bool writes;
         cy->u[FS_U_occlusion].active = true;
         fs_cyc_occlusion_quad_end(cy, &service, &writes);
-        a = fs_cyc_step(os, a, service, 0, false, NULL);
+        a = fs_cyc_step(os, a, FS_SCALE(service), 0, false, NULL);
         if (writes)
             a += (uint64_t)cy->cfg.occlusion_write_latency;
     }
     if (a > cy->done)
         cy->done = a;
-    cy->acc.quads++;
-    cy->acc.fragments += n;
+    if (k > 1 && cy->tile_work) {
+        int tx = q->x >> cy->tiles.shift, ty = q->y >> cy->tiles.shift;
+        if (tx >= 0 && ty >= 0 && tx < cy->tiles_x && ty < cy->tiles_y)
+            cy->tile_work[(size_t)ty * (size_t)cy->tiles_x + (size_t)tx] += (double)quad_work / kq;
+    }
+    cy->acc.quads += FS_SCALE(1);
+    cy->acc.fragments += FS_SCALE(n);
+#undef FS_SCALE
 }
 
 /* ---- clears, synchronisation, queries ---- */
@@ -701,6 +775,36 @@ void fs_cycle_query_wait(fs_cycle *cy, fs_context *c, GLuint id)
 
 /* ---- frames ---- */
 
+/* Tile sampling's sampling error of one frame.  The frame's work is
+ * estimated as every * (work of the sampled tiles); treating the sampled
+ * tiles as a simple random sample of the screen's tiles (conservative for
+ * a stratified lattice when work varies smoothly), its variance is
+ * N^2 n s^2 (1 - 1/N) (Cochran, Sampling Techniques, 3rd ed., eq. 2.8 for
+ * the estimated total, with N = every * n tiles).  The relative standard
+ * error of the work is applied to the frame's cycles.  This is the noise of
+ * the sample only, not the bias of charging a quad for its stratum. */
+static void tile_frame_error(fs_cycle *cy, uint64_t frame_cycles)
+{
+    double n = 0, sum = 0, sumsq = 0, N = (double)cy->tiles.every;
+    for (int ty = 0; ty < cy->tiles_y; ty++)
+        for (int tx = 0; tx < cy->tiles_x; tx++) {
+            if (!fs_cycle_tile_sampled(&cy->tiles, (uint32_t)tx, (uint32_t)ty))
+                continue;
+            double w = cy->tile_work[(size_t)ty * (size_t)cy->tiles_x + (size_t)tx];
+            n++;
+            sum += w;
+            sumsq += w * w;
+        }
+    memset(cy->tile_work, 0, (size_t)cy->tiles_x * (size_t)cy->tiles_y * sizeof *cy->tile_work);
+    if (n < 2 || sum <= 0)
+        return;
+    double s2 = (sumsq - sum * sum / n) / (n - 1);
+    double var = N * N * n * (s2 > 0 ? s2 : 0) * (1.0 - 1.0 / N);
+    double rel = sqrt(var) / (N * sum);
+    double e = rel * (double)frame_cycles;
+    cy->tile_var += e * e;
+}
+
 void fs_cycle_frame_end(fs_cycle *cy, fs_cycle_stats *out)
 {
     close_draw(cy);
@@ -712,6 +816,8 @@ void fs_cycle_frame_end(fs_cycle *cy, fs_cycle_stats *out)
     snapshot(cy, &now);
     diff(cy, &now, &cy->frame_snap, out);
     cy->frame_snap = now;
+    if (cy->tiles.every > 1 && cy->tile_work && !cy->frame_skipped)
+        tile_frame_error(cy, out->cycles);
     for (int u = 0; u < FS_U_COUNT; u++)
         for (int i = 0; i < cy->u[u].n; i++)
             cy->u[u].st[i].in.hwm = 0;
@@ -750,6 +856,8 @@ void fs_cycle_set_frames(fs_cycle *cy, uint64_t frames)
     cy->nframes_trace = frames;
     cy->frame_sampling = cy->mode == FS_CYCLE_SAMPLED && frames >= 3 && cy->cfg.sampling_frames > 1;
     cy->frame_skipped = cy->frame_sampling && !frame_simulated(cy, cy->frame);
+    if (cy->mode == FS_CYCLE_SAMPLED)
+        set_tiles(cy, (uint32_t)(cy->frame_sampling ? cy->cfg.sampling_frame_tiles : cy->cfg.sampling_tiles));
 }
 
 bool fs_cycle_skip_call(const fs_cycle *cy, const fs_context *c, int cmd)
@@ -770,7 +878,8 @@ void fs_cycle_finish(fs_cycle *cy)
         return;
     cy->finished = true;
     uint64_t n = cy->frames_done, add = 0;
-    double err2 = 0;
+    /* Interpolated frames: linear between the simulated frames a < f < b
+     * around them. */
     for (uint64_t f = 0; f < n; f++) {
         if (!cy->frame_was_skipped[f])
             continue;
@@ -784,14 +893,55 @@ void fs_cycle_finish(fs_cycle *cy)
         uint64_t e = (uint64_t)llround(ca + w * (cb - ca));
         cy->frame_cycles[f] = e;
         add += e;
-        /* Uncertainty of an interpolated frame: a quarter of the step
-         * between the simulated frames around it, independent per frame. */
-        double d = (cb - ca) / 4.0;
-        err2 += d * d;
+    }
+    /* Error: linear interpolation of a curve c(t) misses
+     * c''/2 (t - a)(b - t) at t (the interpolation remainder), the same sign
+     * across a segment and, where the curvature keeps its sign, across
+     * segments: the misses are summed, not added in quadrature.  c'' of a
+     * segment is the larger second difference at its two ends (from the
+     * simulated frames around it); with fewer than three simulated frames
+     * there is none, and the estimate falls back to a quarter of the step
+     * per interpolated frame (which cannot see a trace that turns between
+     * two samples: docs/cycle_model.md). */
+    int nsim = 0;
+    double err = 0;
+    for (uint64_t f = 0; f < n; f++)
+        if (!cy->frame_was_skipped[f])
+            nsim++;
+    double prev_k = -1;
+    for (uint64_t a = 0; a < n;) {
+        uint64_t b = a + 1;
+        while (b < n && cy->frame_was_skipped[b])
+            b++;
+        if (b >= n)
+            break;
+        double ca = (double)cy->frame_cycles[a], cb = (double)cy->frame_cycles[b];
+        double h = (double)(b - a), sumprod = 0;
+        for (uint64_t f = a + 1; f < b; f++)
+            sumprod += (double)(f - a) * (double)(b - f);
+        /* second differences at a (with the segment before) and at b
+         * (with the segment after) */
+        double k = prev_k;
+        uint64_t c2 = b + 1;
+        while (c2 < n && cy->frame_was_skipped[c2])
+            c2++;
+        double kb = -1;
+        if (c2 < n) {
+            double cc = (double)cy->frame_cycles[c2], h2 = (double)(c2 - b);
+            kb = fabs((cc - cb) / h2 - (cb - ca) / h) / ((h + h2) / 2.0);
+        }
+        if (kb > k)
+            k = kb;
+        if (nsim < 3 || k < 0)
+            err += fabs(cb - ca) / 4.0 * (double)(b - a - 1);
+        else
+            err += 0.5 * k * sumprod;
+        prev_k = kb;
+        a = b;
     }
     cy->est += add;
     cy->acc.estimated_cycles += add;
-    cy->frame_error = sqrt(err2);
+    cy->frame_error = err;
 }
 
 uint64_t fs_cycle_frame_cycles(const fs_cycle *cy, uint64_t f, bool *skipped)
@@ -809,7 +959,7 @@ double fs_cycle_error_estimate(const fs_cycle *cy)
     if (cy->mode != FS_CYCLE_SAMPLED)
         return 0.0;
     /* Interpolated frames and draws, independent of each other. */
-    double var = cy->frame_error * cy->frame_error + cy->draw_var;
+    double var = cy->frame_error * cy->frame_error + cy->draw_var + cy->tile_var;
     double total = (double)now_total(cy);
     return total > 0 ? sqrt(var) / total : 0.0;
 }

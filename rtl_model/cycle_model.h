@@ -62,12 +62,62 @@ void fs_cycle_attach(fs_cycle *cy, fs_context *c);
 bool fs_cycle_draw(fs_cycle *cy, fs_context *c, GLenum mode, size_t n);
 /* A triangle assembled (before culling and clipping). */
 void fs_cycle_triangle(fs_cycle *cy);
+/* Sampled mode's screen-tile sample.  It is the first member of struct
+ * fs_cycle so that the rasterizer's per-quad test below inlines to a load
+ * and a branch (every = 1 outside tile sampling). */
+typedef struct fs_cycle_tiles {
+    uint32_t every;   /* one tile in `every` is rasterized */
+    uint32_t step;    /* width in tiles of a block of `every` tiles (one sampled per block) */
+    int shift;        /* log2 of the tile side */
+} fs_cycle_tiles;
+static inline const fs_cycle_tiles *fs_cycle_tile_sample(const fs_cycle *cy)
+{
+    return (const fs_cycle_tiles *)(const void *)cy;
+}
+/* True when quad (x, y) lies in a tile sampled mode does not rasterize: the
+ * caller drops it before interpolation, texturing and the per-fragment
+ * operations, and the model charges its work from the sampled tiles. */
+/* Whether tile (tx, ty) is in the sample: the screen's tiles are cut into
+ * blocks of step x (every / step) tiles, and each block has one sampled
+ * tile at a position hashed from the block (jittered, i.e. stratified
+ * random, sampling: even coverage of the screen like a lattice, but
+ * unbiased whatever regular structure the scene has, which a fixed
+ * lattice is not). */
+static inline bool fs_cycle_tile_sampled(const fs_cycle_tiles *t, uint32_t tx, uint32_t ty)
+{
+    uint32_t bw = t->step, bh = t->every / t->step;
+    uint32_t bx = tx / bw, by = ty / bh;
+    uint32_t h = bx * 0x9E3779B1u ^ (by + 0x7F4A7C15u) * 0x85EBCA77u;
+    h ^= h >> 15;
+    h *= 0x2C1B3C6Du;
+    h ^= h >> 12;
+    h %= t->every;
+    return tx - bx * bw == h % bw && ty - by * bh == h / bw;
+}
+static inline bool fs_cycle_quad_skipped(const fs_cycle *cy, int x, int y)
+{
+    const fs_cycle_tiles *t = fs_cycle_tile_sample(cy);
+    if (t->every <= 1)
+        return false;
+    return !fs_cycle_tile_sampled(t, (uint32_t)x >> t->shift, (uint32_t)y >> t->shift);
+}
+/* Tile sampling: a triangle of `area` pixels is about to be rasterized in
+ * the sampled tiles only. */
+void fs_cycle_triangle_area(fs_cycle *cy, double area);
 /* A quad after the per-fragment operations ran on it. */
 void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q);
 /* The texture unit sampled quad q: levels (level1 < 0: one level), filter
  * (GL_NEAREST or GL_LINEAR) and the pixels' s, t (divided by q). */
 void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, int level0, int level1, GLenum filter,
                       const fs_quad *q, const float s[4], const float tt[4]);
+/* The texture unit filtered quad q's covered pixels with the fast-footprint
+ * filter; out[i] (4 entries) is pixel i's result (the texel rectangles it read and its
+ * weighting-ROM lookups, units/texture_filter.h). */
+struct fs_filter_out;
+void fs_cycle_texture_footprint(fs_cycle *cy, const struct fs_tex_object *t, const fs_quad *q,
+                                const struct fs_filter_out *out);
+/* MP-Grid: the CTR was reloaded n times while the quad was sampled. */
+void fs_cycle_ctr_reloads(fs_cycle *cy, uint64_t n);
 /* glClear of w x h pixels with mask. */
 void fs_cycle_clear(fs_cycle *cy, fs_context *c, GLbitfield mask, int w, int h);
 /* glReadPixels of `bytes` bytes: a drain, then the read. */
