@@ -58,9 +58,10 @@ static void usage_replay(FILE *f, bool check)
             "                     cycles per frame, draw and query; same images and counters) or\n"
             "                     sampled (one frame in sampling.frames simulated, the frames\n"
             "                     between skipped and their cycles interpolated; 1-2 frame traces:\n"
-            "                     one draw of a kind in sampling.every simulated, the others\n"
-            "                     estimated).  Skipped work is NOT rendered: images and functional\n"
-            "                     counters are incomplete; cycles come with an error estimate\n"
+            "                     one screen tile in sampling.tiles rasterized and timed, the\n"
+            "                     others estimated from triangle areas).  Skipped work is NOT\n"
+            "                     rendered: images and functional counters are incomplete;\n"
+            "                     cycles come with an error estimate (docs/cycle_model.md)\n"
             "  --csv FILE         cycle statistics, one row per frame and query (with --mode)\n"
             "  --draw-stats       cycle statistics per draw too (JSON and CSV; large for big traces)\n"
             "  --quiet            no progress line\n",
@@ -801,9 +802,9 @@ static const struct cli_command {
     {"config", "--list", "list every configuration key with its default and meaning", run_config},
     {"stats", "--list", "list every statistic with its unit and meaning", run_stats},
     {"study-filters", "[--out DIR]", "texture filter quality/cost study (used by `make study-filters`)", fs_cli_study_filters},
-    {"rom", "[--markdown]", "fast-footprint weighting ROM sizes: Table 4.3 of Huettner 1999 next to fragsim's", fs_cli_rom},
     {"sweep", "SPEC.ini", "run a grid of configurations x traces as jobs; CSV and plots", fs_cli_sweep},
     {"mpgrid", "[--markdown]", "MP-Grid vs MIPmap vs Clip-Map memory example (Huettner 1999, 4.1.2)", fs_cli_mpgrid},
+    {"rom", "[--markdown]", "fast-footprint weighting ROM sizes: Table 4.3 of Huettner 1999 next to fragsim's", fs_cli_rom},
 };
 
 static void usage_main(FILE *f)
