@@ -11,11 +11,21 @@
  * needs the texel addresses, taken from each pixel's s, t at the level the
  * unit chose.  Addresses are synthetic and deterministic: texture name,
  * level offset, row-major RGBA8 texels.
+ *
+ * The fast-footprint filter (units/footprint_filter.c) reports the texel
+ * rectangles it read (its a x b arrays, or the 2x2 blocks of its bilinear
+ * and trilinear classes) and its weighting-ROM lookups; the unit reads the
+ * distinct texels after wrapping, M per cycle, and the ROM's pipelined
+ * three-stage lookup (Huettner 1999, 4.3.5, Fig. 4.31) runs beside the
+ * texel fetch: texture.rom_ports lookups per cycle, texture.rom_stage_latency
+ * cycles more latency for a quad that used it.  MP-Grid CTR reloads
+ * (4.1.4) cost texture.ctr_reload_cycles each (a pointer-table read).
  */
 #include <math.h>
 #include <stdlib.h>
 #include "cycle_internal.h"
 #include "../units/texture_priv.h"
+#include "../units/texture_filter.h"
 
 static bool pow2(long v) { return v > 0 && (v & (v - 1)) == 0; }
 
@@ -68,12 +78,19 @@ static inline int wrap(int v, int size, GLenum mode)
     return v < 0 ? 0 : v >= size ? size - 1 : v;
 }
 
-/* Appends the addresses of one pixel's footprint at one level. */
-static unsigned footprint(const fs_tex_object *t, int level, bool linear, float s, float tt, uint64_t *a)
+/* Synthetic address of texel (0, 0) of a level. */
+static uint64_t level_base(const fs_tex_object *t, int level)
 {
     uint64_t base = ((uint64_t)t->name + 1) << 36;
     for (int l = 0; l < level; l++)
         base += (uint64_t)t->level[l].width * (uint64_t)t->level[l].height * 4u;
+    return base;
+}
+
+/* Appends the addresses of one pixel's footprint at one level. */
+static unsigned footprint(const fs_tex_object *t, int level, bool linear, float s, float tt, uint64_t *a)
+{
+    uint64_t base = level_base(t, level);
     const fs_tex_image *img = &t->level[level];
     int w = img->width, h = img->height;
     if (w <= 0 || h <= 0)
@@ -103,6 +120,7 @@ void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, int level0, i
     unsigned mask = q->mask;
     /* The texture unit of the board owning the quad's image engine. */
     int board = fs_cyc_route(cy, q->x, q->y) / (int)cy->cfg.fragment_image_engines;
+    cy->u[FS_U_texture].st[board].latency = (uint32_t)cy->cfg.texture_latency; /* no ROM stage */
     fs_tex_cache *cache = cy->cache ? cy->cache[board] : NULL;
     uint64_t texels = 0, service = 0, bytes = 0, misses = 0;
     uint64_t M = (uint64_t)cy->cfg.texture_texels_per_cycle;
@@ -142,4 +160,101 @@ void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, int level0, i
     cy->tex_service += service;
     cy->tex_bytes += bytes;
     cy->tex_misses += misses;
+}
+
+unsigned fs_cyc_footprint_addresses(const fs_tex_object *t, const fs_filter_out *o, uint64_t *a, unsigned cap)
+{
+    unsigned n = 0;
+    for (int r = 0; r < o->nrects && r < 2; r++) {
+        const struct fs_filter_rect *rc = &o->rect[r];
+        if (rc->level < 0 || rc->level > t->last_level || rc->w <= 0 || rc->h <= 0)
+            continue;
+        const fs_tex_image *img = &t->level[rc->level];
+        int w = img->width, h = img->height;
+        if (w <= 0 || h <= 0)
+            continue;
+        uint64_t base = level_base(t, rc->level);
+        /* The filter view wraps REPEAT or clamps to the edge (GL_CLAMP has
+         * no border there, texture_sample.c tex_mip_view): wrap() does both. */
+        for (int j = 0; j < rc->h; j++)
+            for (int i = 0; i < rc->w && n < cap; i++) {
+                int x = wrap(rc->x0 + i, w, t->wrap_s), y = wrap(rc->y0 + j, h, t->wrap_t);
+                a[n++] = base + ((uint64_t)y * (uint64_t)w + (uint64_t)x) * 4u;
+            }
+    }
+    /* Distinct addresses: a texel of two overlapping arrays, or one folded
+     * onto another by wrapping, is read once.  Insertion sort: the rows come
+     * nearly sorted. */
+    for (unsigned i = 1; i < n; i++) {
+        uint64_t v = a[i];
+        unsigned k = i;
+        for (; k > 0 && a[k - 1] > v; k--)
+            a[k] = a[k - 1];
+        a[k] = v;
+    }
+    unsigned m = 0;
+    for (unsigned i = 0; i < n; i++)
+        if (m == 0 || a[m - 1] != a[i])
+            a[m++] = a[i];
+    return m;
+}
+
+void fs_cycle_texture_footprint(fs_cycle *cy, const fs_tex_object *t, const fs_quad *q, const fs_filter_out *out)
+{
+    if (!cy->cfg.texture_present)
+        return;
+    int board = fs_cyc_route(cy, q->x, q->y) / (int)cy->cfg.fragment_image_engines;
+    fs_tex_cache *cache = cy->cache ? cy->cache[board] : NULL;
+    uint64_t M = (uint64_t)cy->cfg.texture_texels_per_cycle, ports = (uint64_t)cy->cfg.texture_rom_ports;
+    uint64_t texels = 0, fetch = 0, bytes = 0, misses = 0, lookups = 0;
+    fs_tex_cache_stats before = {0}, after = {0};
+    if (cache)
+        fs_tex_cache_get_stats(cache, &before);
+    for (int i = 0; i < 4; i++) {
+        if (!(q->mask >> i & 1u))
+            continue;
+        uint64_t a[FS_CYC_FP_MAX_TEXELS];
+        unsigned n = fs_cyc_footprint_addresses(t, &out[i], a, FS_CYC_FP_MAX_TEXELS);
+        texels += n;
+        fetch += (n + M - 1) / M;
+        lookups += out[i].rom_lookups > 0 ? (uint64_t)out[i].rom_lookups : 0;
+        if (cache)
+            (void)fs_tex_cache_access_group(cache, a, n);
+        else
+            bytes += 4u * n;
+    }
+    if (cache) {
+        fs_tex_cache_get_stats(cache, &after);
+        bytes = after.bytes_from_memory - before.bytes_from_memory;
+        misses = after.misses - before.misses;
+        fetch += after.bank_conflicts - before.bank_conflicts;
+        cy->acc.tex_cache_accesses += after.accesses - before.accesses;
+        cy->acc.tex_cache_hits += after.hits - before.hits;
+        cy->acc.tex_bank_conflicts += after.bank_conflicts - before.bank_conflicts;
+    } else {
+        misses = texels;
+    }
+    /* The ROM lookup is a pipeline stage ahead of the texel array and the
+     * evaluator (4.3.5): the quad occupies the unit for the longer of the
+     * two, and the ROM's stages lengthen the pipeline when it is used. */
+    uint64_t rom = (lookups + ports - 1) / ports;
+    cy->u[FS_U_texture].st[board].latency =
+        (uint32_t)(cy->cfg.texture_latency + (lookups ? cy->cfg.texture_rom_stage_latency : 0));
+    cy->acc.tex_texels += texels;
+    cy->acc.tex_bytes += bytes;
+    cy->tex_pending = true;
+    cy->tex_service += fetch > rom ? fetch : rom;
+    cy->tex_bytes += bytes;
+    cy->tex_misses += misses;
+}
+
+void fs_cycle_ctr_reloads(fs_cycle *cy, uint64_t n)
+{
+    if (!cy->cfg.texture_present || !n)
+        return;
+    /* Each reload reads one pointer-table entry before the texel can be
+     * addressed (4.1.4): the texture unit waits for it. */
+    cy->acc.ctr_reloads += n;
+    cy->tex_pending = true;
+    cy->tex_service += n * (uint64_t)cy->cfg.texture_ctr_reload_cycles;
 }

@@ -31,6 +31,12 @@ occlusion | query_cost)
     workload --test query -o out/studies/traces/occlusion_query.trace
     workload --test query --groups 256 -o out/studies/traces/occlusion_query_g256.trace
     ;;
+texture_cache) # the textured scene, trilinear and the footprint filter at M = 8, 16, 32
+    "$BUILD/scenegen" textured -o out/studies/traces/textured_trilinear.trace >/dev/null
+    for m in 8 16 32; do
+        "$BUILD/scenegen" textured --filter footprint --budget $m -o out/studies/traces/textured_fp_m$m.trace >/dev/null
+    done
+    ;;
 esac
 
 CMD="$BUILD/fragsim sweep $SPEC"

@@ -419,6 +419,7 @@ static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const fl
     tex_mip_view(t, &mv);
     double w = t->level[0].width, h = t->level[0].height;
     GLenum base = t->level[0].base_format;
+    fs_filter_out fo[4]; /* what each pixel read, for the cycle model */
     for (int i = 0; i < 4; i++) {
         if (!(q->mask & (1u << i)))
             continue;
@@ -448,7 +449,11 @@ static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const fl
         c->stats.tex_fp_texels += (uint64_t)o.texels;
         c->stats.tex_fp_rom_lookups += (uint64_t)lookups;
         apply_env(st, base, o.rgba, q->color[i]);
+        if (c->cycle)
+            fo[i] = o;
     }
+    if (c->cycle)
+        fs_cycle_texture_footprint(c->cycle, t, q, fo);
 }
 
 /* ---- per quad ---- */
@@ -511,6 +516,7 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
         via_linear = other.minified == min_linear;
     }
     GLenum base = t->level[0].base_format;
+    uint64_t reloads0 = c->stats.mpgrid_ctr_reloads; /* MP-Grid CTR reloads of this quad, for the cycle model */
     if (c->cycle)
         fs_cycle_texture(c->cycle, t, lr.level0, mip_linear && (float_path ? lr.weightf > 0.0f : lr.weight8 > 0) ? lr.level1 : -1, img_filter, q, s, tt);
     for (int i = 0; i < 4; i++) {
@@ -539,6 +545,8 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
         }
         apply_env(st, base, tex, q->color[i]);
     }
+    if (c->cycle && c->stats.mpgrid_ctr_reloads != reloads0)
+        fs_cycle_ctr_reloads(c->cycle, c->stats.mpgrid_ctr_reloads - reloads0);
 }
 
 /* llvmpipe's 2x2 quads are aligned in its y-down frame (rasterizer_priv.h):
