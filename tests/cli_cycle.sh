@@ -125,7 +125,7 @@ test_sampled_error() {
         tb=$(echo "$samp" | sed -nE 's/.*"seconds": ([0-9.]+).*/\1/p')
         [ -n "$a" ] && [ -n "$b" ] || fail "$s: no cycles"
         awk -v s="$s" -v a="$a" -v b="$b" -v ta="$ta" -v tb="$tb" 'BEGIN {
-            printf "    sampled %-10s error %+.2f%%, speed-up %.1fx (report only)\n", s, 100 * (b - a) / a, tb > 0 ? ta / tb : 0 }'
+            printf "    sampled %-10s error %+.2f%%, speed-up %.1fx (report only)\n", s, 100 * (b - a) / a, (tb > 0 ? ta / tb : 0) }'
         awk -v a="$a" -v b="$b" 'BEGIN { e = (b - a) / a; if (e < 0) e = -e; exit !(e <= 0.02) }' ||
             fail "$s: sampled $b vs full $a cycles: more than 2% apart"
     done

@@ -446,30 +446,25 @@ static double axis_ratio(const fs_footprint *fp)
     return sqrt(big / small);
 }
 
-/* Reports the 2x2 block fs_mip_bilinear reads at `level` (its texel
- * choice, GL 1.5 eq. 3.22, with its guard for NaN and huge coordinates) as
- * the next rectangle of out (texture_filter.h), for the cycle model. */
+/* Reports the 2x2 block fs_mip_bilinear reads at `level` as the next
+ * rectangle of out (texture_filter.h), for the cycle model. */
 static void report_block(const fs_mip_view *m, int level, double u, double v, fs_filter_out *out)
 {
-    level = level < 0 ? 0 : level >= m->levels ? m->levels - 1 : level;
-    u = u == u ? (u > 1e9 ? 1e9 : u < -1e9 ? -1e9 : u) : 0.0;
-    v = v == v ? (v > 1e9 ? 1e9 : v < -1e9 ? -1e9 : v) : 0.0;
-    double x = u * m->width[level] / m->width[0] - 0.5, y = v * m->height[level] / m->height[0] - 0.5;
-    out->rect[out->nrects++] = (struct fs_filter_rect){level, (int)floor(x), (int)floor(y), 2, 2};
+    int x0, y0;
+    level = fs_mip_bilinear_block(m, level, u, v, &x0, &y0);
+    out->rect[out->nrects++] = (struct fs_filter_rect){level, x0, y0, 2, 2};
 }
 
 static void trilinear(const fs_mip_view *m, const fs_footprint *fp, fs_filter_out *out)
 {
     double lam = fs_footprint_lambda_iso(fp);
     out->texels = fs_mip_trilinear(m, lam, fp->u, fp->v, out->rgba);
-    /* fs_mip_trilinear's levels: 0 when magnified, the last one at or
-     * beyond it, else floor(lambda) and the next. */
-    double top = m->levels - 1;
+    int lv[2];
+    int n = fs_mip_trilinear_levels(m, lam, lv);
     out->nrects = 0;
-    int l0 = !(lam > 0.0) ? 0 : lam >= top ? (int)top : (int)floor(lam);
-    report_block(m, l0, fp->u, fp->v, out);
-    if (lam > 0.0 && lam < top)
-        report_block(m, l0 + 1, fp->u, fp->v, out);
+    for (int i = 0; i < n; i++)
+        report_block(m, lv[i], fp->u, fp->v, out);
+    double top = m->levels - 1;
     out->level = (float)(lam > 0.0 ? (lam < top ? lam : top) : 0.0);
     out->cls = FS_FP_CLASS_TRILINEAR;
 }

@@ -95,15 +95,47 @@ static double sane(double x)
     return x > 1e9 ? 1e9 : x < -1e9 ? -1e9 : x;
 }
 
-int fs_mip_bilinear(const fs_mip_view *m, int level, double u, double v, float out[4])
+/* The clamped level, the block's first texel and the weights of the
+ * second: the texel choice of eq. 3.22, shared by the filter and by
+ * fs_mip_bilinear_block's report of what it reads. */
+static int bilinear_setup(const fs_mip_view *m, int level, double u, double v, int *i0, int *j0, double *a,
+                          double *b)
 {
     level = level < 0 ? 0 : level >= m->levels ? m->levels - 1 : level;
     /* Level-0 texels to this level's texels, then GL's -0.5 (eq. 3.22). */
     double x = sane(u) * m->width[level] / m->width[0] - 0.5;
     double y = sane(v) * m->height[level] / m->height[0] - 0.5;
     double fx = floor(x), fy = floor(y);
-    int i0 = (int)fx, j0 = (int)fy;
-    double a = x - fx, b = y - fy;
+    *i0 = (int)fx;
+    *j0 = (int)fy;
+    *a = x - fx;
+    *b = y - fy;
+    return level;
+}
+
+int fs_mip_bilinear_block(const fs_mip_view *m, int level, double u, double v, int *x0, int *y0)
+{
+    double a, b;
+    return bilinear_setup(m, level, u, v, x0, y0, &a, &b);
+}
+
+int fs_mip_trilinear_levels(const fs_mip_view *m, double lambda, int levels[2])
+{
+    double top = m->levels - 1;
+    if (!(lambda > 0.0) || lambda >= top) {
+        levels[0] = lambda >= top ? (int)top : 0;
+        return 1;
+    }
+    levels[0] = (int)floor(lambda);
+    levels[1] = levels[0] + 1;
+    return 2;
+}
+
+int fs_mip_bilinear(const fs_mip_view *m, int level, double u, double v, float out[4])
+{
+    int i0, j0;
+    double a, b;
+    level = bilinear_setup(m, level, u, v, &i0, &j0, &a, &b);
     float t00[4], t10[4], t01[4], t11[4];
     fs_mip_fetch(m, level, i0, j0, t00);
     fs_mip_fetch(m, level, i0 + 1, j0, t10);
@@ -117,12 +149,10 @@ int fs_mip_bilinear(const fs_mip_view *m, int level, double u, double v, float o
 
 int fs_mip_trilinear(const fs_mip_view *m, double lambda, double u, double v, float out[4])
 {
-    if (!(lambda > 0.0))    /* also NaN: magnification */
-        return fs_mip_bilinear(m, 0, u, v, out);
-    double top = m->levels - 1;
-    if (lambda >= top)
-        return fs_mip_bilinear(m, (int)top, u, v, out);
-    int l0 = (int)floor(lambda);
+    int lv[2];
+    if (fs_mip_trilinear_levels(m, lambda, lv) == 1)
+        return fs_mip_bilinear(m, lv[0], u, v, out);
+    int l0 = lv[0];
     double f = lambda - l0;
     float c0[4], c1[4];
     fs_mip_bilinear(m, l0, u, v, c0);

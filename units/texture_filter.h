@@ -74,6 +74,12 @@ void fs_mip_fetch(const fs_mip_view *m, int level, int x, int y, float out[4]);
 /* Bilinear at level `level` (GL 1.5 spec eq. 3.22-3.23), (u, v) in level-0
  * texels.  Returns the number of texels read (4). */
 int fs_mip_bilinear(const fs_mip_view *m, int level, double u, double v, float out[4]);
+/* The 2x2 block fs_mip_bilinear reads: its first texel (x0, y0), before
+ * wrapping, at the returned (clamped) level. */
+int fs_mip_bilinear_block(const fs_mip_view *m, int level, double u, double v, int *x0, int *y0);
+/* The levels fs_mip_trilinear reads at lambda: returns 1 (magnified, or at
+ * or beyond the last level) or 2, filling levels[]. */
+int fs_mip_trilinear_levels(const fs_mip_view *m, double lambda, int levels[2]);
 /* Trilinear (GL's LINEAR_MIPMAP_LINEAR, 3.8.8) at level of detail lambda;
  * lambda <= 0 gives bilinear on level 0.  Returns texels read (4 or 8). */
 int fs_mip_trilinear(const fs_mip_view *m, double lambda, double u, double v, float out[4]);
