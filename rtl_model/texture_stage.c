@@ -111,6 +111,28 @@ static unsigned footprint(const fs_tex_object *t, int level, bool linear, float 
     return 4;
 }
 
+/* After one quad's texel groups went through the cache (or straight to
+ * memory when there is none): the bytes read from memory and the misses
+ * since `before`, added to the run's counters; returns the bank-conflict
+ * cycles the groups cost.  Without a cache every texel is a miss and
+ * *bytes already holds the texels' bytes. */
+static uint64_t cache_settle(fs_cycle *cy, fs_tex_cache *cache, const fs_tex_cache_stats *before,
+                             uint64_t texels, uint64_t *bytes, uint64_t *misses)
+{
+    if (!cache) {
+        *misses = texels;
+        return 0;
+    }
+    fs_tex_cache_stats after;
+    fs_tex_cache_get_stats(cache, &after);
+    *bytes = after.bytes_from_memory - before->bytes_from_memory;
+    *misses = after.misses - before->misses;
+    cy->acc.tex_cache_accesses += after.accesses - before->accesses;
+    cy->acc.tex_cache_hits += after.hits - before->hits;
+    cy->acc.tex_bank_conflicts += after.bank_conflicts - before->bank_conflicts;
+    return after.bank_conflicts - before->bank_conflicts;
+}
+
 void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, int level0, int level1, GLenum filter,
                       const fs_quad *q, const float s[4], const float tt[4])
 {
@@ -124,7 +146,7 @@ void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, int level0, i
     fs_tex_cache *cache = cy->cache ? cy->cache[board] : NULL;
     uint64_t texels = 0, service = 0, bytes = 0, misses = 0;
     uint64_t M = (uint64_t)cy->cfg.texture_texels_per_cycle;
-    fs_tex_cache_stats before = {0}, after = {0};
+    fs_tex_cache_stats before = {0};
     if (cache)
         fs_tex_cache_get_stats(cache, &before);
     for (int i = 0; i < 4; i++) {
@@ -141,17 +163,7 @@ void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, int level0, i
         else
             bytes += 4u * n;
     }
-    if (cache) {
-        fs_tex_cache_get_stats(cache, &after);
-        bytes = after.bytes_from_memory - before.bytes_from_memory;
-        misses = after.misses - before.misses;
-        service += after.bank_conflicts - before.bank_conflicts;
-        cy->acc.tex_cache_accesses += after.accesses - before.accesses;
-        cy->acc.tex_cache_hits += after.hits - before.hits;
-        cy->acc.tex_bank_conflicts += after.bank_conflicts - before.bank_conflicts;
-    } else {
-        misses = texels;
-    }
+    service += cache_settle(cy, cache, &before, texels, &bytes, &misses);
     cy->acc.tex_texels += texels;
     cy->acc.tex_bytes += bytes;
     /* Added up: the texture unit may sample a quad in two halves (quads at
@@ -207,7 +219,7 @@ void fs_cycle_texture_footprint(fs_cycle *cy, const fs_tex_object *t, const fs_q
     fs_tex_cache *cache = cy->cache ? cy->cache[board] : NULL;
     uint64_t M = (uint64_t)cy->cfg.texture_texels_per_cycle, ports = (uint64_t)cy->cfg.texture_rom_ports;
     uint64_t texels = 0, fetch = 0, bytes = 0, misses = 0, lookups = 0;
-    fs_tex_cache_stats before = {0}, after = {0};
+    fs_tex_cache_stats before = {0};
     if (cache)
         fs_tex_cache_get_stats(cache, &before);
     for (int i = 0; i < 4; i++) {
@@ -223,17 +235,7 @@ void fs_cycle_texture_footprint(fs_cycle *cy, const fs_tex_object *t, const fs_q
         else
             bytes += 4u * n;
     }
-    if (cache) {
-        fs_tex_cache_get_stats(cache, &after);
-        bytes = after.bytes_from_memory - before.bytes_from_memory;
-        misses = after.misses - before.misses;
-        fetch += after.bank_conflicts - before.bank_conflicts;
-        cy->acc.tex_cache_accesses += after.accesses - before.accesses;
-        cy->acc.tex_cache_hits += after.hits - before.hits;
-        cy->acc.tex_bank_conflicts += after.bank_conflicts - before.bank_conflicts;
-    } else {
-        misses = texels;
-    }
+    fetch += cache_settle(cy, cache, &before, texels, &bytes, &misses);
     /* The ROM lookup is a pipeline stage ahead of the texel array and the
      * evaluator (4.3.5): the quad occupies the unit for the longer of the
      * two, and the ROM's stages lengthen the pipeline when it is used. */
