@@ -496,6 +496,29 @@ void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint interna
         unpack_image(c, img, 0, 0, width, height, format, type, pixels);
 }
 
+/* The level a TexSubImage2D or CopyTexSubImage2D writes into, after the
+ * checks both share (3.8.2): level and size in range, the level defined by
+ * TexImage, the rectangle inside it.  NULL when one fails; the error is set. */
+static fs_tex_image *subimage_target(fs_context *c, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
+                                     GLsizei height)
+{
+    if (level < 0 || level > FS_TEX_MAX_LOG2 || width < 0 || height < 0) {
+        fs_error(c, GL_INVALID_VALUE);
+        return NULL;
+    }
+    fs_tex_image *img = &c->texture->bound->level[level];
+    if (!img->texels) {
+        fs_error(c, GL_INVALID_OPERATION);
+        return NULL;
+    }
+    if (xoffset < 0 || yoffset < 0 || (int64_t)xoffset + width > img->width ||
+        (int64_t)yoffset + height > img->height) {
+        fs_error(c, GL_INVALID_VALUE);
+        return NULL;
+    }
+    return img;
+}
+
 void fs_exec_TexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoffset, GLint yoffset,
                            GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *pixels)
 {
@@ -504,21 +527,9 @@ void fs_exec_TexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoff
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    if (level < 0 || level > FS_TEX_MAX_LOG2 || width < 0 || height < 0) {
-        fs_error(c, GL_INVALID_VALUE);
+    fs_tex_image *img = subimage_target(c, level, xoffset, yoffset, width, height);
+    if (!img)
         return;
-    }
-    fs_tex_image *img = &c->texture->bound->level[level];
-    /* 3.8.2: the level must have been defined by TexImage. */
-    if (!img->texels) {
-        fs_error(c, GL_INVALID_OPERATION);
-        return;
-    }
-    if (xoffset < 0 || yoffset < 0 || (int64_t)xoffset + width > img->width ||
-        (int64_t)yoffset + height > img->height) {
-        fs_error(c, GL_INVALID_VALUE);
-        return;
-    }
     if (format_components(format) == 0 || type_bytes(type) == 0) {
         fs_unsupported(c, "glTexSubImage2D pixel format/type (only colour formats as GL_UNSIGNED_BYTE or GL_FLOAT)");
         return;
@@ -580,20 +591,9 @@ void fs_exec_CopyTexSubImage2D(fs_context *c, GLenum target, GLint level, GLint 
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    if (level < 0 || level > FS_TEX_MAX_LOG2 || width < 0 || height < 0) {
-        fs_error(c, GL_INVALID_VALUE);
+    fs_tex_image *img = subimage_target(c, level, xoffset, yoffset, width, height);
+    if (!img)
         return;
-    }
-    fs_tex_image *img = &c->texture->bound->level[level];
-    if (!img->texels) {
-        fs_error(c, GL_INVALID_OPERATION);
-        return;
-    }
-    if (xoffset < 0 || yoffset < 0 || (int64_t)xoffset + width > img->width ||
-        (int64_t)yoffset + height > img->height) {
-        fs_error(c, GL_INVALID_VALUE);
-        return;
-    }
     copy_from_framebuffer(c, img, xoffset, yoffset, x, y, width, height);
 }
 
