@@ -19,16 +19,6 @@
 #include "trace.h"
 
 
-/* strdup is POSIX, not C11. */
-static char *copy_string(const char *s)
-{
-    size_t n = strlen(s) + 1;
-    char *p = malloc(n);
-    if (p)
-        memcpy(p, s, n);
-    return p;
-}
-
 #define CHUNK_MAX (1u << 20)          /* a chunk decompresses to at most 1 MiB */
 #define EXPANSION 22u
 #define MAX_ITEM (1ull << 30)         /* longest string, blob or array: 1 GiB */
@@ -1036,7 +1026,7 @@ int fs_trace_next(fs_trace_reader *r, fs_tcall *call)
 fs_trace_reader *fs_trace_open(const char *path, char *err, size_t errlen)
 {
     fs_trace_reader *r = calloc(1, sizeof *r);
-    if (!r || !(r->path = copy_string(path)) || !(r->buf = malloc(CHUNK_MAX))) {
+    if (!r || !(r->path = strdup(path)) || !(r->buf = malloc(CHUNK_MAX))) {
         if (err && errlen)
             snprintf(err, errlen, "%s: out of memory", path);
         if (r) {

@@ -17,16 +17,6 @@
 #include "trace.h"
 
 
-/* strdup is POSIX, not C11. */
-static char *copy_string(const char *s)
-{
-    size_t n = strlen(s) + 1;
-    char *p = malloc(n);
-    if (p)
-        memcpy(p, s, n);
-    return p;
-}
-
 #define CHUNK_SIZE (1u << 20)
 #define MAX_DEPTH 64
 #define TRACE_VERSION 6
@@ -401,7 +391,7 @@ fs_trace_writer *fs_trace_create(const char *path, char *err, size_t errlen)
 {
     fs_trace_writer *w = calloc(1, sizeof *w);
     if (w) {
-        w->path = copy_string(path);
+        w->path = strdup(path);
         w->buf = malloc(CHUNK_SIZE);
         w->cbuf_size = snappy_max_compressed_length(CHUNK_SIZE);
         w->cbuf = malloc(w->cbuf_size);
