@@ -122,6 +122,23 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
 /* The per-pixel attribute evaluation, instantiated once with the portable
  * plane_at and once with hardware FMA (same results; the FMA one is faster
  * and needs no emulation). */
+/* Texture coordinates (s, t, r, q) at window position (px, py) into
+ * out[4], perspective-correct like the colours (GL 1.5 spec 3.5.1 eq.
+ * 3.7): for the quad's own pixels and for the rows and the neighbouring quad
+ * llvmpipe's lambda also reads. */
+#define FS_TEX_AT(PLANE_AT, px, py, out)                                          \
+    do {                                                                          \
+        float *out_ = (out);                                                      \
+        if (s->perspective) {                                                     \
+            float oow_ = 1.0f / PLANE_AT(&s->w, px, py);                          \
+            for (int k_ = 0; k_ < 4; k_++)                                        \
+                out_[k_] = PLANE_AT(&s->tex[k_], px, py) * oow_;                  \
+        } else {                                                                  \
+            for (int k_ = 0; k_ < 4; k_++)                                        \
+                out_[k_] = PLANE_AT(&s->tex[k_], px, py);                         \
+        }                                                                         \
+    } while (0)
+
 #define FS_EMIT_PIXELS(PLANE_AT)                                                  \
     for (int i = 0; i < 4; i++) {                                                 \
         if (!(m & (1u << i)))                                                     \
@@ -150,14 +167,7 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
         for (int i = 0; i < 4; i++) {                                             \
             float px = (float)(q->x + (i & 1));                                   \
             float py = (float)fs_raster_row_to_gl(s->height, q->y + (i >> 1));    \
-            if (s->perspective) {                                                 \
-                float oow = 1.0f / PLANE_AT(&s->w, px, py);                       \
-                for (int k = 0; k < 4; k++)                                       \
-                    q->tex[i][k] = PLANE_AT(&s->tex[k], px, py) * oow;            \
-            } else {                                                              \
-                for (int k = 0; k < 4; k++)                                       \
-                    q->tex[i][k] = PLANE_AT(&s->tex[k], px, py);                  \
-            }                                                                     \
+            FS_TEX_AT(PLANE_AT, px, py, q->tex[i]);                               \
         }                                                                         \
     /* Odd heights: the rows that complete llvmpipe's quads (fs_quad). */     \
     if (s->use_tex && (s->height & 1))                                            \
@@ -165,11 +175,7 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
             float px = (float)(q->x + (i & 1));                                   \
             int gy = i < 2 ? q->y - 1 : q->y + 2;                                 \
             float py = (float)fs_raster_row_to_gl(s->height, gy);                 \
-            float *out = i < 2 ? q->tex_below[i & 1] : q->tex_above[i & 1];       \
-            float oow = s->perspective ? 1.0f / PLANE_AT(&s->w, px, py) : 1.0f;   \
-            for (int k = 0; k < 4; k++)                                           \
-                out[k] = s->perspective ? PLANE_AT(&s->tex[k], px, py) * oow      \
-                                        : PLANE_AT(&s->tex[k], px, py);           \
+            FS_TEX_AT(PLANE_AT, px, py, i < 2 ? q->tex_below[i & 1] : q->tex_above[i & 1]); \
         }                                                                         \
     /* The quad sharing llvmpipe's vector, when texturing asks (fs_quad). */  \
     if (s->use_tex && tex_pair)                                                   \
@@ -177,11 +183,7 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
             for (int j = 0; j < 2; j++) {                                         \
                 float px = (float)((q->x ^ 2) + j);                               \
                 float py = (float)fs_raster_row_to_gl(s->height, q->y - 1 + r);   \
-                float *out = q->tex_pair[r][j];                                   \
-                float oow = s->perspective ? 1.0f / PLANE_AT(&s->w, px, py) : 1.0f; \
-                for (int k = 0; k < 4; k++)                                       \
-                    out[k] = s->perspective ? PLANE_AT(&s->tex[k], px, py) * oow  \
-                                            : PLANE_AT(&s->tex[k], px, py);       \
+                FS_TEX_AT(PLANE_AT, px, py, q->tex_pair[r][j]);                   \
             }
 
 static void emit_pixels(const fs_prim_setup *s, fs_quad *q, unsigned m, int depth_bits, bool tex_pair)
