@@ -33,16 +33,7 @@
 
 /* ---- procedural textures (deterministic) --------------------------------- */
 
-static uint32_t hash2(uint32_t x, uint32_t y)
-{
-    uint32_t h = x * 0x8da6b343u ^ y * 0xd8163841u;
-    h ^= h >> 16;
-    h *= 0x7feb352du;
-    h ^= h >> 15;
-    h *= 0x846ca68bu;
-    h ^= h >> 16;
-    return h;
-}
+static uint32_t hash2(uint32_t x, uint32_t y) { return fs_hash32(x * 0x8da6b343u ^ y * 0xd8163841u); }
 
 static void put(uint8_t *img, int w, int x, int y, int r, int g, int b)
 {

@@ -389,7 +389,7 @@ void fs_homography_map(const fs_homography *H, double s, double t, double *u, do
     *v = (H->d * s + H->e * t + H->f) / w;
 }
 
-static uint32_t hash32(uint32_t x)
+uint32_t fs_hash32(uint32_t x)
 {
     x ^= x >> 16;
     x *= 0x7feb352du;
@@ -435,13 +435,13 @@ void fs_filter_truth(const fs_mip_view *m, const fs_footprint *in, const void *p
     int nt = ft < min_n ? min_n : ft > max_n ? max_n : (int)ft;
     /* Per-pixel jitter seed from the centre, so neighbouring pixels do not
      * share one pattern; deterministic for a given footprint. */
-    uint32_t seed = hash32(p->seed ^ hash32((uint32_t)(int64_t)floor(fp.u * 64) ^
-                                            hash32((uint32_t)(int64_t)floor(fp.v * 64))));
+    uint32_t seed = fs_hash32(p->seed ^ fs_hash32((uint32_t)(int64_t)floor(fp.u * 64) ^
+                                            fs_hash32((uint32_t)(int64_t)floor(fp.v * 64))));
     double acc[4] = {0, 0, 0, 0};
     for (int j = 0; j < nt; j++)
         for (int i = 0; i < ns; i++) {
-            uint32_t r = hash32(seed ^ (uint32_t)(j * 4099 + i));
-            uint32_t r2 = hash32(r + 0x9e3779b9u);
+            uint32_t r = fs_hash32(seed ^ (uint32_t)(j * 4099 + i));
+            uint32_t r2 = fs_hash32(r + 0x9e3779b9u);
             double s = (i + (r >> 8) * (1.0 / 16777216.0)) / ns;
             double t = (j + (r2 >> 8) * (1.0 / 16777216.0)) / nt;
             double u, v;

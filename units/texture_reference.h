@@ -113,4 +113,9 @@ bool fs_ground_footprint(const fs_ground_scene *s, int px, int py, fs_footprint 
  * pixels where mask is non-zero (all when mask is NULL).  INFINITY when
  * identical, NAN when no pixel is compared. */
 double fs_psnr_rgb(const float *a, const float *b, const uint8_t *mask, size_t pixels);
+
+/* A 32-bit integer hash (xor-shift-multiply finaliser) for the ground
+ * truth's jitter and the study's procedural textures: deterministic on
+ * every platform and compiler. */
+uint32_t fs_hash32(uint32_t x);
 #endif
