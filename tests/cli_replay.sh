@@ -143,9 +143,34 @@ test_glxgears_capture() {
     [ "$(grep -c 'samples passed [0-9]* = OSMesa' "$WORK/g.log")" -eq 10 ] || fail "samples passed differ from OSMesa"
 }
 
+# The study and table commands and scenegen's texture options: a bad value
+# is one line naming the option, exit 2, and no output written.
+test_new_commands_bad_arguments() {
+    local args
+    while IFS='|' read -r cmd args want; do
+        # shellcheck disable=SC2086
+        $cmd $args >/dev/null 2>"$WORK/e"
+        local rc=$?
+        [ $rc -eq 2 ] || fail "$cmd $args: expected exit 2, got $rc"
+        grep -q -- "$want" "$WORK/e" || fail "$cmd $args: message lacks '$want': $(head -1 "$WORK/e")"
+    done <<EOF2
+$FRAGSIM study-filters|--size 5 --out $WORK/sf|--size
+$FRAGSIM study-filters|--rotate nan --out $WORK/sf|--rotate
+$FRAGSIM study-filters|--threads|missing value
+$FRAGSIM study-filters|--bogus 1|unknown option
+$FRAGSIM rom|--bogus|--bogus
+$FRAGSIM mpgrid|--fov nan|--fov
+$SCENEGEN textured|--budget 7 -o $WORK/t7.trace|--budget
+$SCENEGEN textured|--filter bogus -o $WORK/tb.trace|--filter
+EOF2
+    ! [ -e "$WORK/sf" ] || fail "study-filters wrote output after a bad argument"
+    ! [ -e "$WORK/t7.trace" ] && ! [ -e "$WORK/tb.trace" ] || fail "scenegen wrote a trace after a bad argument"
+}
+
 for t in test_help test_missing_trace test_truncated_trace test_garbage_trace test_config_errors \
          test_replay_writes_images_and_stats test_replay_is_deterministic test_frames_option test_diff \
-         test_check_every_scene test_apitrace_dump_reads_our_traces test_glxgears_capture; do
+         test_check_every_scene test_apitrace_dump_reads_our_traces test_glxgears_capture \
+         test_new_commands_bad_arguments; do
     run_test "$t"
 done
 finish
