@@ -58,6 +58,9 @@ struct fs_replayer {
     /* name -> command id, open addressing */
     struct { const char *name; int cmd; } *names;
     size_t nnames;
+    /* Per call name of this pass, what next_call asks of it (name_info). */
+    struct name_info *seen;
+    size_t nseen, seen_cap;
 };
 
 static const char *const swap_calls[] = {
@@ -114,6 +117,70 @@ static int lookup(const fs_replayer *r, const char *name)
         if (strcmp(r->names[j].name, name) == 0)
             return r->names[j].cmd;
     }
+}
+
+/* The reader hands out one name string per function signature for the
+ * whole pass, so its address identifies the name: the string compares and
+ * hashing of lookup(), is_swap() and the frame-end test run once per name
+ * instead of once per call (they were a fifth of decoding). */
+typedef struct name_info {
+    const char *name; /* the reader's string; NULL: empty slot */
+    int cmd;
+    bool swap, winsys, user_end, frame_end;
+} name_info;
+
+static size_t ptr_slot(const void *p, size_t cap)
+{
+    uint64_t h = (uint64_t)(uintptr_t)p * 0x9e3779b97f4a7c15ull;
+    return (size_t)(h >> 32) & (cap - 1);
+}
+
+static const name_info *name_info_of(fs_replayer *r, const char *name)
+{
+    if (r->seen_cap) {
+        for (size_t j = ptr_slot(name, r->seen_cap);; j = (j + 1) & (r->seen_cap - 1)) {
+            if (r->seen[j].name == name)
+                return &r->seen[j];
+            if (!r->seen[j].name)
+                break;
+        }
+    }
+    if (2 * (r->nseen + 1) > r->seen_cap) {
+        size_t cap = r->seen_cap ? 2 * r->seen_cap : 256;
+        name_info *t = calloc(cap, sizeof *t);
+        if (!t)
+            return NULL;
+        for (size_t i = 0; i < r->seen_cap; i++) {
+            if (!r->seen[i].name)
+                continue;
+            size_t j = ptr_slot(r->seen[i].name, cap);
+            while (t[j].name)
+                j = (j + 1) & (cap - 1);
+            t[j] = r->seen[i];
+        }
+        free(r->seen);
+        r->seen = t;
+        r->seen_cap = cap;
+    }
+    size_t j = ptr_slot(name, r->seen_cap);
+    while (r->seen[j].name)
+        j = (j + 1) & (r->seen_cap - 1);
+    name_info *ni = &r->seen[j];
+    ni->name = name;
+    ni->cmd = lookup(r, name);
+    ni->swap = is_swap(name);
+    ni->winsys = is_winsys(name);
+    ni->user_end = r->user_frame_end && !strcmp(name, r->user_frame_end);
+    ni->frame_end = !strcmp(name, r->info.frame_end);
+    r->nseen++;
+    return ni;
+}
+
+static void forget_names(fs_replayer *r)
+{
+    free(r->seen);
+    r->seen = NULL;
+    r->nseen = r->seen_cap = 0;
 }
 
 /* ---- bookkeeping ---- */
@@ -413,17 +480,21 @@ static int next_call(fs_replayer *r, fs_call *call, bool pass1)
         }
         if (got == 0)
             return 0;
+        const name_info *ni = name_info_of(r, tc.name);
+        if (!ni) {
+            snprintf(r->err, sizeof r->err, "%s: out of memory", r->path);
+            return -1;
+        }
         if (pass1) {
             r->info.calls++;
-            r->p1_swaps += is_swap(tc.name);
-            r->p1_named += r->user_frame_end && !strcmp(tc.name, r->user_frame_end);
+            r->p1_swaps += ni->swap;
+            r->p1_named += ni->user_end;
         }
-        int cmd = lookup(r, tc.name);
-        bool ends_frame = !pass1 && ((r->frame_end_is_swap && is_swap(tc.name)) ||
-                                     (!r->frame_end_is_swap && !strcmp(tc.name, r->info.frame_end)));
+        int cmd = ni->cmd;
+        bool ends_frame = !pass1 && (r->frame_end_is_swap ? ni->swap : ni->frame_end);
         if (cmd < 0) {
             if (!pass1)
-                count_skip(r, tc.name, is_winsys(tc.name) ? SKIP_WINSYS : SKIP_UNKNOWN);
+                count_skip(r, tc.name, ni->winsys ? SKIP_WINSYS : SKIP_UNKNOWN);
             if (ends_frame)
                 return 2;
             continue;
@@ -476,6 +547,7 @@ static void reset_arrays(fs_replayer *r)
 /* Opens the trace for one pass; on failure frees the replayer. */
 static fs_replayer *start_pass(fs_replayer *r, char *err, size_t errlen)
 {
+    forget_names(r); /* the names of the last pass were the old reader's */
     r->tr = fs_trace_open(r->path, err, errlen);
     if (!r->tr) {
         fs_replay_close(r);
@@ -620,6 +692,7 @@ void fs_replay_close(fs_replayer *r)
         r->arena = n;
     }
     free(r->names);
+    forget_names(r);
     free(r->path);
     free(r);
 }
