@@ -159,7 +159,7 @@ void fs_exec_End(fs_context *c)
         return;
     }
     fs_vs_prepare(c, &v->setup);
-    fs_vs_process(&v->setup, v->iv, v->pv, n);
+    fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_sample(c, c->prim.mode));
     fs_prim_draw(c, &v->setup, c->prim.mode, v->pv, NULL, n, c->prim.list_depth > 0);
 }
 

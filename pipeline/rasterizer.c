@@ -635,7 +635,7 @@ static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edg
     int64_t cross = e->dcdx[0] * e->dcdy[1] - e->dcdx[1] * e->dcdy[0];
     double area = fabs((double)cross) / 2.0 / ldexp(1.0, 4 * c->raster.subpixel_bits);
     double box = (double)(e->x1 - e->x0 + 1) * (double)(e->y1 - e->y0 + 1);
-    fs_cycle_triangle_area(c->cycle, area < box ? area : box);
+    fs_cycle_triangle_area(c->cycle, area < box ? area : box, (e->x0 + e->x1) / 2, (gy0 + gy1) / 2);
     const int sh = t->shift;
     for (int ty = qy0 >> sh; ty <= gy1 >> sh; ty++)
         for (int tx = qx0 >> sh; tx <= e->x1 >> sh; tx++) {

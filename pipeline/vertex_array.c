@@ -225,49 +225,115 @@ static float clamp01(float v)
     return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
 }
 
-void fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n)
+/* Clip and window coordinates of one vertex (GL 1.5 spec 2.10-2.11). */
+static inline void vs_position(const fs_vs_setup *s, const fs_ivert *v, fs_pvert *o)
 {
-    const float sx = s->vp_scale[0], sy = s->vp_scale[1], sz = s->vp_scale[2];
-    const float tx = s->vp_trans[0], ty = s->vp_trans[1], tz = s->vp_trans[2];
-    for (size_t i = 0; i < n; i++) {
-        const fs_ivert *v = &in[i];
-        fs_pvert *o = &out[i];
-        fs_mat_xform4(o->clip, s->mvp, v->obj);
-        o->mask = fs_clip_mask(o->clip);
-        /* Computed for every vertex: points and lines outside only the x/y
-         * planes are drawn unclipped.  w = 0 gives infinities, not a trap. */
-        const float iw = 1.0f / o->clip[3];
-        o->win[0] = fmaf(o->clip[0] * iw, sx, tx);
-        o->win[1] = fmaf(o->clip[1] * iw, sy, ty);
-        o->win[2] = fmaf(o->clip[2] * iw, sz, tz);
-        o->win[3] = iw;
-        o->win[4] = fmaf(o->clip[1] * iw, s->yr_scale, s->yr_trans);
-        if (s->lighting) {
-            float eye[4] = {0, 0, 0, 1}, nrm[3];
-            if (s->need_eye)
-                fs_mat_xform4(eye, s->mv, v->obj);
-            for (int r = 0; r < 3; r++)
-                nrm[r] = s->nmat[r * 3] * v->nrm[0] + s->nmat[r * 3 + 1] * v->nrm[1] + s->nmat[r * 3 + 2] * v->nrm[2];
-            if (s->rescale && !s->normalize) {
-                nrm[0] *= s->nscale; nrm[1] *= s->nscale; nrm[2] *= s->nscale;
-            }
-            if (s->normalize) {
-                float l2 = nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2];
-                if (l2 > 0.0f) {
-                    float inv = 1.0f / sqrtf(l2);
-                    nrm[0] *= inv; nrm[1] *= inv; nrm[2] *= inv;
-                }
-            }
-            fs_light_vertex(s, eye, nrm, v->col, o->col);
-        } else {
-            for (int k = 0; k < 4; k++)
-                o->col[0][k] = clamp01(v->col[k]);
+    fs_mat_xform4(o->clip, s->mvp, v->obj);
+    o->mask = fs_clip_mask(o->clip);
+    /* Computed for every vertex: points and lines outside only the x/y
+     * planes are drawn unclipped.  w = 0 gives infinities, not a trap. */
+    const float iw = 1.0f / o->clip[3];
+    o->win[0] = fmaf(o->clip[0] * iw, s->vp_scale[0], s->vp_trans[0]);
+    o->win[1] = fmaf(o->clip[1] * iw, s->vp_scale[1], s->vp_trans[1]);
+    o->win[2] = fmaf(o->clip[2] * iw, s->vp_scale[2], s->vp_trans[2]);
+    o->win[3] = iw;
+    o->win[4] = fmaf(o->clip[1] * iw, s->yr_scale, s->yr_trans);
+}
+
+/* Colours (lighting, GL 1.5 spec 2.14) and texture coordinates (2.10.2). */
+static inline void vs_attributes(const fs_vs_setup *s, const fs_ivert *v, fs_pvert *o)
+{
+    if (s->lighting) {
+        float eye[4] = {0, 0, 0, 1}, nrm[3];
+        if (s->need_eye)
+            fs_mat_xform4(eye, s->mv, v->obj);
+        for (int r = 0; r < 3; r++)
+            nrm[r] = s->nmat[r * 3] * v->nrm[0] + s->nmat[r * 3 + 1] * v->nrm[1] + s->nmat[r * 3 + 2] * v->nrm[2];
+        if (s->rescale && !s->normalize) {
+            nrm[0] *= s->nscale; nrm[1] *= s->nscale; nrm[2] *= s->nscale;
         }
-        if (s->tex_identity)
-            memcpy(o->tc, v->tc, sizeof o->tc);
-        else
-            fs_mat_xform4(o->tc, s->tex, v->tc);
+        if (s->normalize) {
+            float l2 = nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2];
+            if (l2 > 0.0f) {
+                float inv = 1.0f / sqrtf(l2);
+                nrm[0] *= inv; nrm[1] *= inv; nrm[2] *= inv;
+            }
+        }
+        fs_light_vertex(s, eye, nrm, v->col, o->col);
+    } else {
+        for (int k = 0; k < 4; k++)
+            o->col[0][k] = clamp01(v->col[k]);
     }
+    if (s->tex_identity)
+        memcpy(o->tc, v->tc, sizeof o->tc);
+    else
+        fs_mat_xform4(o->tc, s->tex, v->tc);
+}
+
+/* Whether a window-space box touches a tile of sampled mode's tile sample
+ * (one pixel of margin: fragments lie within the vertices' box). */
+static bool box_sampled(const fs_cycle_tiles *t, float x0, float y0, float x1, float y1)
+{
+    if (!(x0 <= x1 && y0 <= y1))
+        return true; /* NaN: let the rasterizer decide */
+    float lim = 65536.0f;
+    int ix0 = (int)fmaxf(x0 - 1.0f, 0.0f), iy0 = (int)fmaxf(y0 - 1.0f, 0.0f);
+    int ix1 = (int)fminf(x1 + 1.0f, lim), iy1 = (int)fminf(y1 + 1.0f, lim);
+    for (int ty = iy0 >> t->shift; ty <= iy1 >> t->shift; ty++)
+        for (int tx = ix0 >> t->shift; tx <= ix1 >> t->shift; tx++)
+            if (fs_cycle_tile_sampled(t, (uint32_t)tx, (uint32_t)ty))
+                return true;
+    return false;
+}
+
+void fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n, const fs_cycle_tiles *tiles)
+{
+    if (!tiles) {
+        for (size_t i = 0; i < n; i++) {
+            vs_position(s, &in[i], &out[i]);
+            vs_attributes(s, &in[i], &out[i]);
+        }
+        return;
+    }
+    /* Sampled mode's tile sample: a filled batch wholly inside the view
+     * volume whose window box misses every sampled tile makes no fragment,
+     * nor does one wholly outside one clip plane, so its lighting, the
+     * larger part of the vertex stage, is not needed (colours and texture
+     * coordinates are then zero). */
+    float x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+    bool inside = true;
+    unsigned all_out = ~0u;
+    for (size_t i = 0; i < n; i++) {
+        fs_pvert *o = &out[i];
+        vs_position(s, &in[i], o);
+        inside &= o->mask == 0;
+        all_out &= o->mask;
+        x0 = fminf(x0, o->win[0]);
+        x1 = fmaxf(x1, o->win[0]);
+        y0 = fminf(y0, o->win[1]);
+        y1 = fmaxf(y1, o->win[1]);
+    }
+    bool need = all_out == 0 && (!inside || box_sampled(tiles, x0, y0, x1, y1));
+    for (size_t i = 0; i < n; i++) {
+        if (need) {
+            vs_attributes(s, &in[i], &out[i]);
+        } else {
+            memset(out[i].col, 0, sizeof out[i].col);
+            memset(out[i].tc, 0, sizeof out[i].tc);
+        }
+    }
+}
+
+/* The tile sample fs_vs_process may use for a draw in `mode`: filled
+ * polygons only (points and wide lines reach beyond their vertices). */
+const fs_cycle_tiles *fs_vs_tile_sample(const fs_context *c, GLenum mode)
+{
+    if (!c->cycle || mode < GL_TRIANGLES || mode > GL_POLYGON)
+        return NULL;
+    const fs_cycle_tiles *t = fs_cycle_tile_sample(c->cycle);
+    if (t->every <= 1 || c->raster.polygon_mode[0] != GL_FILL || c->raster.polygon_mode[1] != GL_FILL)
+        return NULL;
+    return t;
 }
 
 /* ---- drawing ---- */
@@ -297,7 +363,7 @@ static void draw_batch(fs_context *c, GLenum mode, size_t n, const uint32_t *idx
         return;
     }
     fs_vs_prepare(c, &v->setup);
-    fs_vs_process(&v->setup, v->iv, v->pv, n);
+    fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_sample(c, mode));
     fs_prim_draw(c, &v->setup, mode, v->pv, idx, count, elements);
 }
 

@@ -112,7 +112,10 @@ void fs_light_vertex(const fs_vs_setup *s, const float eye[4], const float n[3],
 
 /* vertex_array.c: transformation of a batch of vertices */
 void fs_vs_prepare(fs_context *c, fs_vs_setup *s);
-void fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n);
+/* tiles: NULL, or sampled mode's tile sample (fs_vs_tile_sample), with
+ * which a batch that cannot reach a sampled tile skips its lighting. */
+void fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n, const fs_cycle_tiles *tiles);
+const fs_cycle_tiles *fs_vs_tile_sample(const fs_context *c, GLenum mode);
 
 /* primitive.c: assembles a primitive from processed vertices.  idx may be
  * NULL (vertices in order).  elements: the draw came as indices (glDrawElements

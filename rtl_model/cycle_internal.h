@@ -17,6 +17,7 @@ typedef struct fs_cyc_fifo {
     uint32_t depth;
     uint64_t count;     /* items taken so far */
     uint64_t sptr;      /* first item not known to have started (occupancy) */
+    uint32_t sidx;      /* sptr % depth */
     uint64_t hwm;       /* most items ever waiting, since the last reset */
 } fs_cyc_fifo;
 
@@ -56,6 +57,21 @@ typedef struct fs_cyc_kind {
     double sum, sumsq;
 } fs_cyc_kind;
 #define FS_CYC_KINDS 8192
+
+/* Tile sampling: what the sampled quads of one kind of draw (its fragment
+ * state) cost, as exponentially weighted sums (a window of about
+ * 1/FS_CYC_POOL_ALPHA quads), so the cost per quad follows a frame's
+ * changing depth complexity.  Each triangle is then timed with its own
+ * estimated quads at these costs (spread), not only the sampled quads
+ * (lumped). */
+typedef struct fs_cyc_pool {
+    uint64_t key;
+    double quads, frags, raster, tex_quads, tex, tex_bytes, tex_miss, frag, frag_bytes, frag_reads,
+        occ_quads, occ, occ_writes, frag_occ, tex_occ;
+} fs_cyc_pool;
+#define FS_CYC_POOL_FIELDS 15 /* the doubles after key */
+#define FS_CYC_POOLS 64
+#define FS_CYC_POOL_ALPHA (1.0 / 256.0)
 
 struct fs_cycle {
     fs_cycle_tiles tiles;     /* first: fs_cycle_quad_skipped reads it (cycle_model.h) */
@@ -132,6 +148,17 @@ struct fs_cycle {
     /* ratio estimator: areas and sampled fragments of the triangles done,
      * and the current triangle's */
     double area_done, frags_done, area_cur, frags_cur, kq;
+    /* spread timing of tile-sampled triangles: the current draw's pool,
+     * all pools, the one of every kind together (fallback), the current
+     * triangle's centre and whether it awaits its estimate, and the
+     * fractions of cycles, bytes and counts carried between items so that
+     * rounding does not bias the sums */
+    fs_cyc_pool *pool_cur, pools[FS_CYC_POOLS], pool_any;
+    int tri_cx, tri_cy;
+    double area_last;
+    bool tri_est;
+    uint64_t spread_items;
+    double carry[10];
 };
 
 /* ---- the recurrence (cycle_model.c) ---- */

@@ -66,10 +66,6 @@ void fs_cycle_stats_write_csv(FILE *f, const fs_cycle_stats *s)
 
 /* ---- stages and the recurrence ---- */
 
-typedef struct fifo_pos {
-    uint32_t head, sptr_pos;
-} fifo_pos;
-
 int fs_cyc_stage_init(fs_cyc_stage *st, uint32_t latency, uint32_t fifo_depth)
 {
     memset(st, 0, sizeof *st);
@@ -88,16 +84,38 @@ static inline void fifo_push(fs_cyc_fifo *f, uint64_t t)
     f->count++;
 }
 
-uint64_t fs_cyc_step(fs_cyc_stage *st, uint64_t arr, uint64_t service, uint64_t bytes, bool reads,
-                     fs_cyc_stage *next)
+/* The same for m quads taken one after another over `service` cycles (a
+ * train, sampled mode's spread items): the FIFOs count quads, so a train
+ * holds m places, as its quads would, not one. */
+static inline void fifo_push_n(fs_cyc_fifo *f, uint64_t t, uint64_t service, uint64_t m)
+{
+    uint64_t k = m < f->depth ? m : f->depth;
+    uint64_t idx = (f->count + m - k) % f->depth;
+    double per = (double)service / (double)m;
+    for (uint64_t i = m - k; i < m; i++) {
+        f->ring[idx] = t + (uint64_t)((double)i * per);
+        if (++idx == f->depth)
+            idx = 0;
+    }
+    f->count += m;
+}
+
+/* The recurrence for an item of m quads (m = 1: one quad or triangle) that
+ * keeps the stage `occupy` >= `service` cycles (a train: the sum over its
+ * quads of each one's service or memory time, whichever is longer). */
+static inline uint64_t step(fs_cyc_stage *st, uint64_t arr, uint64_t service, uint64_t occupy, uint64_t bytes,
+                            bool reads, fs_cyc_stage *next, uint64_t m)
 {
     uint64_t start = arr > st->free ? arr : st->free;
-    fifo_push(&st->in, start);
-    uint64_t finish = start + service, lat = st->latency;
+    if (m == 1)
+        fifo_push(&st->in, start);
+    else
+        fifo_push_n(&st->in, start, service, m);
+    uint64_t finish = start + occupy, lat = st->latency;
     if (bytes && st->mem) {
-        uint64_t m = fs_cyc_mem_reserve(st->mem, start, bytes);
-        if (m > finish)
-            finish = m;
+        uint64_t mem_done = fs_cyc_mem_reserve(st->mem, start, bytes);
+        if (mem_done > finish)
+            finish = mem_done;
         if (reads)
             lat += st->mem->latency;
     }
@@ -105,20 +123,27 @@ uint64_t fs_cyc_step(fs_cyc_stage *st, uint64_t arr, uint64_t service, uint64_t 
     if (next) {
         fs_cyc_fifo *nf = &next->in;
         uint32_t d = nf->depth;
-        /* Room when the item `depth` places ahead has left the FIFO. */
-        if (nf->count >= d) {
-            uint64_t slot = nf->ring[nf->count % d];
+        /* Room (for the train's last quad, or its d-th) when the quad
+         * `depth` places ahead has left the FIFO. */
+        uint64_t last = (m < d ? m : d) - 1;
+        if (nf->count + last >= d) {
+            uint64_t slot = nf->ring[(nf->count + last) % d];
             if (slot > depart)
                 depart = slot;
         }
         /* Occupancy on entry: earlier items not yet started.  Starts are in
          * order, so a pointer that only moves forward finds them. */
         uint64_t lo = nf->count > d ? nf->count - d : 0;
-        if (nf->sptr < lo)
+        if (nf->sptr < lo) {
             nf->sptr = lo;
-        while (nf->sptr < nf->count && nf->ring[nf->sptr % d] <= depart)
+            nf->sidx = (uint32_t)(lo % d);
+        }
+        while (nf->sptr < nf->count && nf->ring[nf->sidx] <= depart) {
             nf->sptr++;
-        uint64_t occ = nf->count - nf->sptr + 1;
+            if (++nf->sidx == d)
+                nf->sidx = 0;
+        }
+        uint64_t occ = nf->count - nf->sptr + 1 + last;
         if (occ > nf->hwm)
             nf->hwm = occ;
     }
@@ -126,6 +151,12 @@ uint64_t fs_cyc_step(fs_cyc_stage *st, uint64_t arr, uint64_t service, uint64_t 
     st->stalled += depart - start - service;
     st->free = depart;
     return depart + lat;
+}
+
+uint64_t fs_cyc_step(fs_cyc_stage *st, uint64_t arr, uint64_t service, uint64_t bytes, bool reads,
+                     fs_cyc_stage *next)
+{
+    return step(st, arr, service, service, bytes, reads, next, 1);
 }
 
 /* ---- creation ---- */
@@ -335,9 +366,131 @@ void fs_cycle_totals(const fs_cycle *cy, fs_cycle_stats *out)
 
 /* ---- triangles, draws ---- */
 
+/* ---- tile sampling: spread timing ---- */
+
+static fs_cyc_pool *pool_of(fs_cycle *cy, uint64_t flags)
+{
+    uint64_t key = flags + 1;
+    uint64_t h = (flags + 1) * 0x9e3779b97f4a7c15ull;
+    for (int i = 0; i < FS_CYC_POOLS; i++) {
+        fs_cyc_pool *p = &cy->pools[(h + (uint64_t)i) & (FS_CYC_POOLS - 1)];
+        if (p->key == key)
+            return p;
+        if (!p->key) {
+            p->key = key;
+            return p;
+        }
+    }
+    return &cy->pool_any; /* more kinds than slots: the kinds share one */
+}
+
+/* One sampled quad's costs into a pool (v in the order of the fields after
+ * `key`).  An exponential weight per quad rather than sums per draw: city
+ * draws 50,000 buildings of a few sampled quads each. */
+static void pool_add(fs_cyc_pool *p, const double v[FS_CYC_POOL_FIELDS])
+{
+    double *d = &p->quads;
+    for (int i = 0; i < FS_CYC_POOL_FIELDS; i++)
+        d[i] = d[i] * (1.0 - FS_CYC_POOL_ALPHA) + v[i];
+}
+
+/* Whole units of v, the fraction carried to the next call on this slot. */
+static uint64_t take(fs_cycle *cy, int slot, double v)
+{
+    double t = cy->carry[slot] + v, f = floor(t);
+    cy->carry[slot] = t - f;
+    return (uint64_t)f;
+}
+
+/* One item of q quads of the current triangle on image engine e, at the
+ * pool's cost per quad. */
+static void spread_item(fs_cycle *cy, const fs_cyc_pool *p, int e, double q)
+{
+    int b = e / (int)cy->cfg.fragment_image_engines;
+    double per = q / p->quads;
+    fs_cyc_stage *rs = &cy->u[FS_U_raster].st[b];
+    fs_cyc_stage *ts = 2.0 * p->tex_quads > p->quads ? &cy->u[FS_U_texture].st[b] : NULL;
+    fs_cyc_stage *fs = &cy->u[FS_U_fragment].st[e];
+    fs_cyc_stage *os = 2.0 * p->occ_quads > p->quads ? &cy->u[FS_U_occlusion].st[e] : NULL;
+    uint64_t arr = cy->tri_arrival;
+    if (!cy->tri_started) {
+        fifo_push(&cy->rtri.in, arr > rs->free ? arr : rs->free);
+        cy->tri_started = true;
+    }
+    uint64_t m = (uint64_t)llround(q);
+    if (m < 1)
+        m = 1;
+    uint64_t r = take(cy, 0, p->raster * per);
+    uint64_t a = step(rs, arr, r, r, 0, false, ts ? ts : fs, m);
+    if (ts) {
+        cy->u[FS_U_texture].active = true;
+        uint64_t t = take(cy, 1, p->tex * per), to = take(cy, 8, p->tex_occ * per);
+        a = step(ts, a, t, to > t ? to : t, take(cy, 2, p->tex_bytes * per),
+                 2.0 * p->tex_miss > p->tex_quads && !cy->cfg.memory_prefetch, fs, m);
+    }
+    uint64_t bytes = take(cy, 4, p->frag_bytes * per);
+    uint64_t f = take(cy, 3, p->frag * per), fo = take(cy, 9, p->frag_occ * per);
+    a = step(fs, a, f, fo > f ? fo : f, bytes, 2.0 * p->frag_reads > p->quads, os, m);
+    cy->acc.fb_bytes += bytes;
+    if (os) {
+        cy->u[FS_U_occlusion].active = true;
+        uint64_t o = take(cy, 5, p->occ * per);
+        a = step(os, a, o, o, 0, false, NULL, m);
+        if (2.0 * p->occ_writes > p->occ_quads)
+            a += (uint64_t)cy->cfg.occlusion_write_latency;
+    }
+    if (a > cy->done)
+        cy->done = a;
+    cy->acc.quads += take(cy, 6, q);
+    cy->acc.fragments += take(cy, 7, p->frags * per);
+    cy->spread_items++;
+}
+
+/* Times the current tile-sampled triangle as its estimated quads, spread
+ * over it instead of lumped on the few quads that fell in sampled tiles:
+ * charging 1 triangle in 16 with 16 times its work made the pipeline see
+ * bursts that stalled the front end where the real, even load did not
+ * (garbage came out 10% high).  Its fragments are its exact area times the
+ * ratio of sampled fragments to areas so far (Cochran, Sampling Techniques,
+ * 3rd ed., ch. 6, the ratio estimator); what a quad costs comes from the
+ * recent sampled quads of draws with the same fragment state.  Items of
+ * about `every` quads keep the units overlapping within a big triangle as
+ * they would quad by quad; on several image engines they are dealt out as
+ * the interleave would. */
+static void spread_triangle(fs_cycle *cy)
+{
+    cy->tri_est = false;
+    cy->area_done += cy->area_cur;
+    cy->frags_done += cy->frags_cur;
+    cy->area_cur = cy->frags_cur = 0;
+    cy->kq = cy->frags_done >= 256 && cy->area_done > 0 ? cy->area_done / cy->frags_done : (double)cy->tiles.every;
+    const fs_cyc_pool *p = cy->pool_cur && cy->pool_cur->quads >= 8.0 ? cy->pool_cur : &cy->pool_any;
+    double area = cy->area_last;
+    if (p->quads <= 0 || p->frags <= 0 || !(area > 0))
+        return;
+    double q = area * p->quads / p->frags;
+    double chunk = cy->tiles.every > 4 ? (double)cy->tiles.every : 4.0;
+    double nch = ceil(q / chunk);
+    if (nch < 1)
+        nch = 1;
+    double qc = q / nch;
+    int n = cy->engines_total;
+    int e0 = fs_cyc_route(cy, cy->tri_cx & ~1, cy->tri_cy & ~1);
+    for (uint64_t i = 0; i < (uint64_t)nch; i++) {
+        if (n > 1 && qc >= (double)n) {
+            for (int e = 0; e < n; e++)
+                spread_item(cy, p, e, qc / n);
+        } else {
+            spread_item(cy, p, (int)(((uint64_t)e0 + i) % (uint64_t)n), qc);
+        }
+    }
+}
+
 /* The rasterizer "starts" a triangle without quads when it reaches it. */
 static inline void close_triangle(fs_cycle *cy)
 {
+    if (cy->tri_est)
+        spread_triangle(cy);
     if (cy->tri_open && !cy->tri_started) {
         uint64_t t = cy->tri_arrival;
         for (int b = 0; b < cy->u[FS_U_raster].n; b++)
@@ -358,14 +511,20 @@ static uint64_t mix64(uint64_t h)
     return h ^ (h >> 31);
 }
 
-static fs_cyc_kind *kind_of(fs_cycle *cy, const fs_context *c, GLenum mode, size_t n)
+/* The state that decides what a fragment costs. */
+static uint64_t state_flags(const fs_context *c)
 {
     const fs_fragment_state *f = &c->frag;
-    uint64_t flags = (uint64_t)f->depth_enabled | (uint64_t)f->depth_write << 1 | (uint64_t)f->blend_enabled << 2 |
-                     (uint64_t)f->alpha_enabled << 3 | (uint64_t)f->stencil_enabled << 4 |
-                     (uint64_t)f->scissor_enabled << 5 | (uint64_t)f->suppress_writes << 6 |
-                     (uint64_t)c->raster.interpolate_tex << 7 | (uint64_t)c->raster.cull_enabled << 8 |
-                     (uint64_t)(c->occlusion_hook != NULL) << 9;
+    return (uint64_t)f->depth_enabled | (uint64_t)f->depth_write << 1 | (uint64_t)f->blend_enabled << 2 |
+           (uint64_t)f->alpha_enabled << 3 | (uint64_t)f->stencil_enabled << 4 |
+           (uint64_t)f->scissor_enabled << 5 | (uint64_t)f->suppress_writes << 6 |
+           (uint64_t)c->raster.interpolate_tex << 7 | (uint64_t)c->raster.cull_enabled << 8 |
+           (uint64_t)(c->occlusion_hook != NULL) << 9 | (uint64_t)f->logic_op_enabled << 10;
+}
+
+static fs_cyc_kind *kind_of(fs_cycle *cy, const fs_context *c, GLenum mode, size_t n)
+{
+    uint64_t flags = state_flags(c);
     uint64_t key = ((uint64_t)n << 16 | flags << 4 | (uint64_t)mode) + 1;
     uint64_t h = mix64(key);
     for (uint64_t i = 0; i < 64; i++) {
@@ -499,6 +658,8 @@ bool fs_cycle_draw(fs_cycle *cy, fs_context *c, GLenum mode, size_t n)
         fs_cyc_occlusion_hook(cy, c);
     cy->draw_mode = mode;
     cy->draw_vertices = n;
+    if (cy->tiles.every > 1)
+        cy->pool_cur = pool_of(cy, state_flags(c));
     cy->acc.draws++;
     cy->draw_kind = NULL;
     cy->draw_sampled = false;
@@ -563,15 +724,67 @@ void fs_cycle_triangle(fs_cycle *cy)
 
 /* ---- quads ---- */
 
-void fs_cycle_triangle_area(fs_cycle *cy, double area)
+void fs_cycle_triangle_area(fs_cycle *cy, double area, int x, int y)
 {
-    cy->area_done += cy->area_cur;
-    cy->frags_done += cy->frags_cur;
-    cy->area_cur = area;
+    if (cy->tri_est)
+        spread_triangle(cy); /* the previous piece of a clipped triangle */
+    cy->area_cur = cy->area_last = area;
     cy->frags_cur = 0;
-    /* Until enough fragments were sampled for a stable ratio, the
-     * design factor `every`. */
-    cy->kq = cy->frags_done >= 256 && cy->area_done > 0 ? cy->area_done / cy->frags_done : (double)cy->tiles.every;
+    cy->tri_cx = x;
+    cy->tri_cy = y;
+    cy->tri_est = true;
+}
+
+/* Tile sampling: a sampled quad of a triangle timed by spread_triangle.
+ * Its costs go into the pools; the units see it as part of its triangle's
+ * estimate. */
+static void sample_quad(fs_cycle *cy, fs_context *c, const fs_quad *q, unsigned n, unsigned reaching,
+                        unsigned passed, unsigned written)
+{
+    double v[FS_CYC_POOL_FIELDS] = {0};
+    v[0] = 1.0;
+    v[1] = (double)n;
+    v[2] = (double)fs_cyc_raster_cycles(&cy->cfg, n);
+    if (cy->tex_pending) { /* v[5], v[4] are read below */
+        v[3] = 1.0;
+        v[4] = (double)cy->tex_service;
+        v[5] = (double)cy->tex_bytes;
+        v[6] = cy->tex_misses ? 1.0 : 0.0;
+        cy->tex_pending = false;
+        cy->tex_service = cy->tex_bytes = cy->tex_misses = 0;
+    }
+    uint64_t service, bytes;
+    bool reads;
+    fs_cyc_fragment_work(c, cy, reaching, passed, written, &service, &bytes, &reads);
+    v[7] = (double)service;
+    v[8] = (double)bytes;
+    v[9] = reads ? 1.0 : 0.0;
+    /* What the quad occupies its stage for: its memory time where that is
+     * longer (a train's sums would hide quads limited by memory behind
+     * quads limited by service). */
+    uint64_t bw = cy->fbmem[0].bw, tbw = cy->texmem[0].bw;
+    uint64_t fm = (bytes + bw - 1) / bw, tm = ((uint64_t)v[5] + tbw - 1) / tbw;
+    v[13] = (double)(fm > service ? fm : service);
+    v[14] = v[4] > (double)tm ? v[4] : (double)tm;
+    if (cy->occ_pending) {
+        uint64_t os;
+        bool writes;
+        fs_cyc_occlusion_quad_end(cy, &os, &writes);
+        v[10] = 1.0;
+        v[11] = (double)os;
+        v[12] = writes ? 1.0 : 0.0;
+    }
+    fs_cyc_pool *p = cy->pool_cur ? cy->pool_cur : &cy->pool_any;
+    pool_add(p, v);
+    if (p != &cy->pool_any)
+        pool_add(&cy->pool_any, v);
+    cy->frags_cur += n;
+    if (cy->tile_work) {
+        int tx = q->x >> cy->tiles.shift, ty = q->y >> cy->tiles.shift;
+        if (tx >= 0 && ty >= 0 && tx < cy->tiles_x && ty < cy->tiles_y)
+            cy->tile_work[(size_t)ty * (size_t)cy->tiles_x + (size_t)tx] +=
+                v[2] + v[4] + v[7] + v[8] / (double)cy->cfg.memory_bytes_per_cycle;
+    }
 }
 
 void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q)
@@ -608,10 +821,12 @@ void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q)
      * areas, and only the per-fragment cost is sampled. */
     uint64_t k = cy->tiles.every;
     double kq = 1.0;
-    if (k > 1) {
-        cy->frags_cur += n;
-        kq = cy->kq;
+    if (k > 1 && cy->tri_est) {
+        sample_quad(cy, c, q, n, reaching, passed, written);
+        return;
     }
+    if (k > 1)
+        kq = cy->kq; /* lines and points: lumped on the sampled quads */
 #define FS_SCALE(v) (k > 1 ? (uint64_t)llround((double)(v) * kq) : (uint64_t)(v))
     uint64_t quad_work = FS_SCALE(fs_cyc_raster_cycles(&cy->cfg, n)) + FS_SCALE(cy->tex_service);
     uint64_t a = fs_cyc_step(rs, arr, FS_SCALE(fs_cyc_raster_cycles(&cy->cfg, n)), 0, false, ts ? ts : fs);

@@ -101,9 +101,9 @@ static inline bool fs_cycle_quad_skipped(const fs_cycle *cy, int x, int y)
         return false;
     return !fs_cycle_tile_sampled(t, (uint32_t)x >> t->shift, (uint32_t)y >> t->shift);
 }
-/* Tile sampling: a triangle of `area` pixels is about to be rasterized in
- * the sampled tiles only. */
-void fs_cycle_triangle_area(fs_cycle *cy, double area);
+/* Tile sampling: a triangle of `area` pixels whose bounding box is centred
+ * at window (x, y) is about to be rasterized in the sampled tiles only. */
+void fs_cycle_triangle_area(fs_cycle *cy, double area, int x, int y);
 /* A quad after the per-fragment operations ran on it. */
 void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q);
 /* The texture unit sampled quad q: levels (level1 < 0: one level), filter
