@@ -96,8 +96,9 @@ cpu=$(sed -nE 's/^model name\s*: (.*)/\1/p' /proc/cpuinfo | head -n 1)
     echo "$CYCLE_REPEAT run(s); times are per run.  Full cycle mode runs the functional model and the"
     echo "timing model (same images and counters as functional mode); sampled mode (default"
     echo "\`[sampling]\` keys) simulates one frame in sampling.frames plus the last of the 20-frame"
-    echo "traces and one screen tile in sampling.tiles of the one-frame traces, and estimates the"
-    echo "rest without rendering it (docs/cycle_model.md).  Error: sampled mode's total cycles"
+    echo "traces, rasterizing one screen tile in sampling.frame_tiles of them, and one tile in"
+    echo "sampling.tiles of the one-frame traces, and estimates the rest without rendering it"
+    echo "(docs/cycle_model.md).  Error: sampled mode's total cycles"
     echo "against full cycle mode's; estimate: the error sampled mode reports for itself."
     echo
     echo "| trace | scale | frames | functional s | cycle s | sampled s | cycles | M cycles/s (cycle) | M frag/s (functional) | M frag/s (cycle) | sampled speed-up | sampled error | error estimate |"

@@ -285,10 +285,9 @@ TEST(tile_sample_full_screen)
 {
     /* A screen-filling rectangle drawn 16 times: with one tile in 4
      * rasterized, the functional pipeline sees exactly the sampled quarter,
-     * and the model charges about every fragment (16 W x H; the ratio
-     * estimator starts from the design factor on the first triangle, hence
-     * the 2% tolerance) and stays within 2% of full cycle mode's cycles for
-     * this uniform load. */
+     * and the model charges about every fragment (16 W x H from the
+     * triangles' areas, whose rounding to quads is the 2% tolerance) and
+     * stays within 2% of full cycle mode's cycles for this uniform load. */
     uint64_t cycles[2] = {0, 0};
     for (int m = 0; m < 2; m++) {
         fs_config cfg;
