@@ -277,8 +277,8 @@ static bool box_sampled(const fs_cycle_tiles *t, float x0, float y0, float x1, f
     if (!(x0 <= x1 && y0 <= y1))
         return true; /* NaN: let the rasterizer decide */
     float lim = 65536.0f;
-    int ix0 = (int)fmaxf(x0 - 1.0f, 0.0f), iy0 = (int)fmaxf(y0 - 1.0f, 0.0f);
-    int ix1 = (int)fminf(x1 + 1.0f, lim), iy1 = (int)fminf(y1 + 1.0f, lim);
+    int ix0 = (int)fminf(fmaxf(x0 - 1.0f, 0.0f), lim), iy0 = (int)fminf(fmaxf(y0 - 1.0f, 0.0f), lim);
+    int ix1 = (int)fminf(fmaxf(x1 + 1.0f, 0.0f), lim), iy1 = (int)fminf(fmaxf(y1 + 1.0f, 0.0f), lim);
     for (int ty = iy0 >> t->shift; ty <= iy1 >> t->shift; ty++)
         for (int tx = ix0 >> t->shift; tx <= ix1 >> t->shift; tx++)
             if (fs_cycle_tile_sampled(t, (uint32_t)tx, (uint32_t)ty))
