@@ -67,12 +67,25 @@ typedef struct fs_cyc_kind {
  * (spread), not only the sampled quads (lumped). */
 typedef struct fs_cyc_pool {
     uint64_t key;
-    double quads, frags, raster, tex_quads, tex, tex_bytes, tex_miss, frag, frag_bytes, frag_reads,
-        occ_quads, occ, occ_writes, frag_occ, tex_occ;
+    /* Per quad (a sample) or weighted sums of them (a pool): quads;
+     * fragments; raster cycles; whether textured, texture cycles, bytes,
+     * whether it missed the cache, and the texture unit's occupancy (the
+     * longer of cycles and memory time); the same for the fragment stage
+     * (reads: it read the framebuffer); whether the Occlusion Unit saw it,
+     * its cycles, whether it wrote a hit. */
+    double quads, frags, raster;
+    double tex_quads, tex, tex_bytes, tex_miss, tex_occ;
+    double frag, frag_bytes, frag_reads, frag_occ;
+    double occ_quads, occ, occ_writes;
 } fs_cyc_pool;
-#define FS_CYC_POOL_FIELDS 15 /* the doubles after key */
 #define FS_CYC_POOLS 64
 #define FS_CYC_POOL_ALPHA (1.0 / 1024.0)
+
+/* What spread timing rounds to whole cycles, bytes and counts. */
+enum {
+    FS_CARRY_raster, FS_CARRY_tex, FS_CARRY_tex_occ, FS_CARRY_tex_bytes, FS_CARRY_frag, FS_CARRY_frag_occ,
+    FS_CARRY_frag_bytes, FS_CARRY_occ, FS_CARRY_quads, FS_CARRY_frags, FS_CARRY_COUNT
+};
 
 struct fs_cycle {
     fs_cycle_tiles tiles;     /* first: fs_cycle_quad_skipped reads it (cycle_model.h) */
@@ -151,15 +164,13 @@ struct fs_cycle {
     double area_done, frags_done, area_cur, frags_cur, kq;
     /* spread timing of tile-sampled triangles: the current draw's pool,
      * all pools, the one of every kind together (fallback), the current
-     * triangle's centre and whether it awaits its estimate, and the
-     * fractions of cycles, bytes and counts carried between items so that
-     * rounding does not bias the sums */
+     * triangle's centre and whether it awaits its estimate (its area is
+     * area_cur), and the fractions of cycles, bytes and counts carried
+     * between items so that rounding does not bias the sums */
     fs_cyc_pool *pool_cur, pools[FS_CYC_POOLS], pool_any;
     int tri_cx, tri_cy;
-    double area_last;
     bool tri_est;
-    uint64_t spread_items;
-    double carry[10];
+    double carry[FS_CARRY_COUNT];
 };
 
 /* ---- the recurrence (cycle_model.c) ---- */

@@ -5,6 +5,7 @@
  * synchronisation, sampled mode and the statistics records.
  */
 #include <math.h>
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include "cycle_internal.h"
@@ -368,10 +369,18 @@ void fs_cycle_totals(const fs_cycle *cy, fs_cycle_stats *out)
 
 /* ---- tile sampling: spread timing ---- */
 
+static uint64_t mix64(uint64_t h)
+{
+    /* splitmix64 finaliser */
+    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+    h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+    return h ^ (h >> 31);
+}
+
 static fs_cyc_pool *pool_of(fs_cycle *cy, uint64_t flags)
 {
     uint64_t key = flags + 1;
-    uint64_t h = (flags + 1) * 0x9e3779b97f4a7c15ull;
+    uint64_t h = mix64(key);
     for (int i = 0; i < FS_CYC_POOLS; i++) {
         fs_cyc_pool *p = &cy->pools[(h + (uint64_t)i) & (FS_CYC_POOLS - 1)];
         if (p->key == key)
@@ -384,13 +393,14 @@ static fs_cyc_pool *pool_of(fs_cycle *cy, uint64_t flags)
     return &cy->pool_any; /* more kinds than slots: the kinds share one */
 }
 
-/* One sampled quad's costs into a pool (v in the order of the fields after
- * `key`).  An exponential weight per quad rather than sums per draw: city
- * draws 50,000 buildings of a few sampled quads each. */
-static void pool_add(fs_cyc_pool *p, const double v[FS_CYC_POOL_FIELDS])
+/* One sampled quad's costs into a pool.  An exponential weight per quad
+ * rather than sums per draw: city draws 50,000 buildings of a few sampled
+ * quads each. */
+static void pool_add(fs_cyc_pool *p, const fs_cyc_pool *q)
 {
     double *d = &p->quads;
-    for (int i = 0; i < FS_CYC_POOL_FIELDS; i++)
+    const double *v = &q->quads;
+    for (size_t i = 0; i < (sizeof *p - offsetof(fs_cyc_pool, quads)) / sizeof(double); i++)
         d[i] = d[i] * (1.0 - FS_CYC_POOL_ALPHA) + v[i];
 }
 
@@ -420,52 +430,52 @@ static void spread_item(fs_cycle *cy, const fs_cyc_pool *p, int e, double q)
     uint64_t m = (uint64_t)llround(q);
     if (m < 1)
         m = 1;
-    uint64_t r = take(cy, 0, p->raster * per);
+    uint64_t r = take(cy, FS_CARRY_raster, p->raster * per);
     uint64_t a = step(rs, arr, r, r, 0, false, ts ? ts : fs, m);
     if (ts) {
         cy->u[FS_U_texture].active = true;
-        uint64_t t = take(cy, 1, p->tex * per), to = take(cy, 8, p->tex_occ * per);
-        a = step(ts, a, t, to > t ? to : t, take(cy, 2, p->tex_bytes * per),
+        uint64_t t = take(cy, FS_CARRY_tex, p->tex * per), to = take(cy, FS_CARRY_tex_occ, p->tex_occ * per);
+        a = step(ts, a, t, to > t ? to : t, take(cy, FS_CARRY_tex_bytes, p->tex_bytes * per),
                  2.0 * p->tex_miss > p->tex_quads && !cy->cfg.memory_prefetch, fs, m);
     }
-    uint64_t bytes = take(cy, 4, p->frag_bytes * per);
-    uint64_t f = take(cy, 3, p->frag * per), fo = take(cy, 9, p->frag_occ * per);
+    uint64_t bytes = take(cy, FS_CARRY_frag_bytes, p->frag_bytes * per);
+    uint64_t f = take(cy, FS_CARRY_frag, p->frag * per), fo = take(cy, FS_CARRY_frag_occ, p->frag_occ * per);
     a = step(fs, a, f, fo > f ? fo : f, bytes, 2.0 * p->frag_reads > p->quads, os, m);
     cy->acc.fb_bytes += bytes;
     if (os) {
         cy->u[FS_U_occlusion].active = true;
-        uint64_t o = take(cy, 5, p->occ * per);
+        uint64_t o = take(cy, FS_CARRY_occ, p->occ * per);
         a = step(os, a, o, o, 0, false, NULL, m);
         if (2.0 * p->occ_writes > p->occ_quads)
             a += (uint64_t)cy->cfg.occlusion_write_latency;
     }
     if (a > cy->done)
         cy->done = a;
-    cy->acc.quads += take(cy, 6, q);
-    cy->acc.fragments += take(cy, 7, p->frags * per);
-    cy->spread_items++;
+    cy->acc.quads += take(cy, FS_CARRY_quads, q);
+    cy->acc.fragments += take(cy, FS_CARRY_frags, p->frags * per);
 }
 
 /* Times the current tile-sampled triangle as its estimated quads, spread
  * over it instead of lumped on the few quads that fell in sampled tiles:
  * charging 1 triangle in 16 with 16 times its work made the pipeline see
  * bursts that stalled the front end where the real, even load did not
- * (garbage came out 10% high).  Its fragments are its exact area times the
- * ratio of sampled fragments to areas so far (Cochran, Sampling Techniques,
- * 3rd ed., ch. 6, the ratio estimator); what a quad costs comes from the
- * recent sampled quads of draws with the same fragment state.  Items of
- * about `every` quads keep the units overlapping within a big triangle as
- * they would quad by quad; on several image engines they are dealt out as
- * the interleave would. */
+ * (garbage came out 10% high).  Its fragments are its exact area (the
+ * pixel-centre rule makes that unbiased; scaling it by the sampled
+ * fragments per area, a ratio estimator, added the noise of few tiles:
+ * demo -12%); what a quad costs comes from the recent sampled quads of
+ * draws with the same fragment state.  Items of about `every` quads keep
+ * the units overlapping within a big triangle as they would quad by quad. */
 static void spread_triangle(fs_cycle *cy)
 {
     cy->tri_est = false;
     cy->area_done += cy->area_cur;
     cy->frags_done += cy->frags_cur;
+    double area = cy->area_cur;
     cy->area_cur = cy->frags_cur = 0;
+    /* The lumped charging of lines and points (fs_cycle_quad) scales by
+     * areas over sampled fragments. */
     cy->kq = cy->frags_done >= 256 && cy->area_done > 0 ? cy->area_done / cy->frags_done : (double)cy->tiles.every;
     const fs_cyc_pool *p = cy->pool_cur && cy->pool_cur->quads >= 8.0 ? cy->pool_cur : &cy->pool_any;
-    double area = cy->area_last;
     if (p->quads <= 0 || p->frags <= 0 || !(area > 0))
         return;
     double q = area * p->quads / p->frags;
@@ -505,14 +515,6 @@ static inline void close_triangle(fs_cycle *cy)
 }
 
 static uint64_t now_total(const fs_cycle *cy) { return fs_cyc_time(cy) + cy->est; }
-
-static uint64_t mix64(uint64_t h)
-{
-    /* splitmix64 finaliser */
-    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
-    h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
-    return h ^ (h >> 31);
-}
 
 /* The state that decides what a fragment costs. */
 static uint64_t state_flags(const fs_context *c)
@@ -731,11 +733,22 @@ void fs_cycle_triangle_area(fs_cycle *cy, double area, int x, int y)
 {
     if (cy->tri_est)
         spread_triangle(cy); /* the previous piece of a clipped triangle */
-    cy->area_cur = cy->area_last = area;
+    cy->area_cur = area;
     cy->frags_cur = 0;
     cy->tri_cx = x;
     cy->tri_cy = y;
     cy->tri_est = true;
+}
+
+/* Tile sampling's error estimate: unscaled work w of a sampled quad at its
+ * tile. */
+static void tile_work_add(fs_cycle *cy, const fs_quad *q, double w)
+{
+    if (!cy->tile_work)
+        return;
+    int tx = q->x >> cy->tiles.shift, ty = q->y >> cy->tiles.shift;
+    if (tx >= 0 && ty >= 0 && tx < cy->tiles_x && ty < cy->tiles_y)
+        cy->tile_work[(size_t)ty * (size_t)cy->tiles_x + (size_t)tx] += w;
 }
 
 /* Tile sampling: a sampled quad of a triangle timed by spread_triangle.
@@ -744,50 +757,46 @@ void fs_cycle_triangle_area(fs_cycle *cy, double area, int x, int y)
 static void sample_quad(fs_cycle *cy, fs_context *c, const fs_quad *q, unsigned n, unsigned reaching,
                         unsigned passed, unsigned written)
 {
-    double v[FS_CYC_POOL_FIELDS] = {0};
-    v[0] = 1.0;
-    v[1] = (double)n;
-    v[2] = (double)fs_cyc_raster_cycles(&cy->cfg, n);
-    if (cy->tex_pending) { /* v[5], v[4] are read below */
-        v[3] = 1.0;
-        v[4] = (double)cy->tex_service;
-        v[5] = (double)cy->tex_bytes;
-        v[6] = cy->tex_misses ? 1.0 : 0.0;
+    fs_cyc_pool v = {0};
+    v.quads = 1.0;
+    v.frags = (double)n;
+    v.raster = (double)fs_cyc_raster_cycles(&cy->cfg, n);
+    /* What the quad occupies a stage for: its memory time where that is
+     * longer (a train's sums would hide quads limited by memory behind
+     * quads limited by service). */
+    uint64_t bw = cy->fbmem[0].bw, tbw = cy->texmem[0].bw;
+    if (cy->tex_pending) {
+        uint64_t tm = (cy->tex_bytes + tbw - 1) / tbw;
+        v.tex_quads = 1.0;
+        v.tex = (double)cy->tex_service;
+        v.tex_bytes = (double)cy->tex_bytes;
+        v.tex_miss = cy->tex_misses ? 1.0 : 0.0;
+        v.tex_occ = (double)(tm > cy->tex_service ? tm : cy->tex_service);
         cy->tex_pending = false;
         cy->tex_service = cy->tex_bytes = cy->tex_misses = 0;
     }
     uint64_t service, bytes;
     bool reads;
     fs_cyc_fragment_work(c, cy, reaching, passed, written, &service, &bytes, &reads);
-    v[7] = (double)service;
-    v[8] = (double)bytes;
-    v[9] = reads ? 1.0 : 0.0;
-    /* What the quad occupies its stage for: its memory time where that is
-     * longer (a train's sums would hide quads limited by memory behind
-     * quads limited by service). */
-    uint64_t bw = cy->fbmem[0].bw, tbw = cy->texmem[0].bw;
-    uint64_t fm = (bytes + bw - 1) / bw, tm = ((uint64_t)v[5] + tbw - 1) / tbw;
-    v[13] = (double)(fm > service ? fm : service);
-    v[14] = v[4] > (double)tm ? v[4] : (double)tm;
+    uint64_t fm = (bytes + bw - 1) / bw;
+    v.frag = (double)service;
+    v.frag_bytes = (double)bytes;
+    v.frag_reads = reads ? 1.0 : 0.0;
+    v.frag_occ = (double)(fm > service ? fm : service);
     if (cy->occ_pending) {
         uint64_t os;
         bool writes;
         fs_cyc_occlusion_quad_end(cy, &os, &writes);
-        v[10] = 1.0;
-        v[11] = (double)os;
-        v[12] = writes ? 1.0 : 0.0;
+        v.occ_quads = 1.0;
+        v.occ = (double)os;
+        v.occ_writes = writes ? 1.0 : 0.0;
     }
     fs_cyc_pool *p = cy->pool_cur ? cy->pool_cur : &cy->pool_any;
-    pool_add(p, v);
+    pool_add(p, &v);
     if (p != &cy->pool_any)
-        pool_add(&cy->pool_any, v);
+        pool_add(&cy->pool_any, &v);
     cy->frags_cur += n;
-    if (cy->tile_work) {
-        int tx = q->x >> cy->tiles.shift, ty = q->y >> cy->tiles.shift;
-        if (tx >= 0 && ty >= 0 && tx < cy->tiles_x && ty < cy->tiles_y)
-            cy->tile_work[(size_t)ty * (size_t)cy->tiles_x + (size_t)tx] +=
-                v[2] + v[4] + v[7] + v[8] / (double)cy->cfg.memory_bytes_per_cycle;
-    }
+    tile_work_add(cy, q, v.raster + v.tex + v.frag + v.frag_bytes / (double)cy->cfg.memory_bytes_per_cycle);
 }
 
 void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q)
@@ -815,13 +824,14 @@ void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q)
         fifo_push(&cy->rtri.in, arr > rs->free ? arr : rs->free);
         cy->tri_started = true;
     }
-    /* Tile sampling: this quad stands for about `every` quads at its place
-     * in the other tiles of its block, processed one after another by the
-     * same units, so its service and memory traffic count that many times.
-     * The factor is the ratio of the triangles' areas to their sampled
-     * fragments so far (Cochran, Sampling Techniques, 3rd ed., ch. 6, the
-     * ratio estimator): the count of fragments then follows the exact
-     * areas, and only the per-fragment cost is sampled. */
+    /* Tile sampling: a quad of a triangle whose area is known is timed with
+     * its triangle (sample_quad, spread_triangle).  Other quads (lines,
+     * points, triangles reaching past the left or bottom edge) are lumped:
+     * the quad stands for about `every` quads at its place in the other
+     * tiles of its block, so its service and memory traffic count that
+     * many times, the factor being the ratio of the triangles' areas to
+     * their sampled fragments so far (Cochran, Sampling Techniques, 3rd
+     * ed., ch. 6, the ratio estimator). */
     uint64_t k = cy->tiles.every;
     double kq = 1.0;
     if (k > 1 && cy->tri_est) {
@@ -829,7 +839,7 @@ void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q)
         return;
     }
     if (k > 1)
-        kq = cy->kq; /* lines and points: lumped on the sampled quads */
+        kq = cy->kq;
 #define FS_SCALE(v) (k > 1 ? (uint64_t)llround((double)(v) * kq) : (uint64_t)(v))
     uint64_t quad_work = FS_SCALE(fs_cyc_raster_cycles(&cy->cfg, n)) + FS_SCALE(cy->tex_service);
     uint64_t a = fs_cyc_step(rs, arr, FS_SCALE(fs_cyc_raster_cycles(&cy->cfg, n)), 0, false, ts ? ts : fs);
@@ -857,11 +867,8 @@ void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q)
     }
     if (a > cy->done)
         cy->done = a;
-    if (k > 1 && cy->tile_work) {
-        int tx = q->x >> cy->tiles.shift, ty = q->y >> cy->tiles.shift;
-        if (tx >= 0 && ty >= 0 && tx < cy->tiles_x && ty < cy->tiles_y)
-            cy->tile_work[(size_t)ty * (size_t)cy->tiles_x + (size_t)tx] += (double)quad_work / kq;
-    }
+    if (k > 1)
+        tile_work_add(cy, q, (double)quad_work / kq);
     cy->acc.quads += FS_SCALE(1);
     cy->acc.fragments += FS_SCALE(n);
 #undef FS_SCALE
