@@ -129,43 +129,37 @@ typedef struct name_info {
     bool swap, winsys, user_end, frame_end;
 } name_info;
 
-static size_t ptr_slot(const void *p, size_t cap)
+/* The slot of `name` in a table of cap (a power of two) entries: its own
+ * or the empty one where it would go (linear probing). */
+static size_t seen_slot(const name_info *t, size_t cap, const char *name)
 {
-    uint64_t h = (uint64_t)(uintptr_t)p * 0x9e3779b97f4a7c15ull;
-    return (size_t)(h >> 32) & (cap - 1);
+    uint64_t h = (uint64_t)(uintptr_t)name * 0x9e3779b97f4a7c15ull;
+    size_t j = (size_t)(h >> 32) & (cap - 1);
+    while (t[j].name && t[j].name != name)
+        j = (j + 1) & (cap - 1);
+    return j;
 }
 
 static const name_info *name_info_of(fs_replayer *r, const char *name)
 {
     if (r->seen_cap) {
-        for (size_t j = ptr_slot(name, r->seen_cap);; j = (j + 1) & (r->seen_cap - 1)) {
-            if (r->seen[j].name == name)
-                return &r->seen[j];
-            if (!r->seen[j].name)
-                break;
-        }
+        const name_info *ni = &r->seen[seen_slot(r->seen, r->seen_cap, name)];
+        if (ni->name)
+            return ni;
     }
     if (2 * (r->nseen + 1) > r->seen_cap) {
         size_t cap = r->seen_cap ? 2 * r->seen_cap : 256;
         name_info *t = calloc(cap, sizeof *t);
         if (!t)
             return NULL;
-        for (size_t i = 0; i < r->seen_cap; i++) {
-            if (!r->seen[i].name)
-                continue;
-            size_t j = ptr_slot(r->seen[i].name, cap);
-            while (t[j].name)
-                j = (j + 1) & (cap - 1);
-            t[j] = r->seen[i];
-        }
+        for (size_t i = 0; i < r->seen_cap; i++)
+            if (r->seen[i].name)
+                t[seen_slot(t, cap, r->seen[i].name)] = r->seen[i];
         free(r->seen);
         r->seen = t;
         r->seen_cap = cap;
     }
-    size_t j = ptr_slot(name, r->seen_cap);
-    while (r->seen[j].name)
-        j = (j + 1) & (r->seen_cap - 1);
-    name_info *ni = &r->seen[j];
+    name_info *ni = &r->seen[seen_slot(r->seen, r->seen_cap, name)];
     ni->name = name;
     ni->cmd = lookup(r, name);
     ni->swap = is_swap(name);
