@@ -14,6 +14,7 @@
  *    single point through a pipeline of known latencies.
  */
 #include <stdint.h>
+#include <string.h>
 #include "check.h"
 #include "../pipeline/context.h"
 #include "../rtl_model/cycle_internal.h"
@@ -324,6 +325,65 @@ TEST(tile_sample_full_screen)
     CHECK(e <= 0.02);
 }
 
+TEST(tile_sample_lighting_exact)
+{
+    /* Lit quads of 8 x 8 pixels, each its own batch, most of which reach
+     * no sampled tile and so skip lighting in sampled mode: every pixel of
+     * a sampled tile must still equal full cycle mode's (the functional
+     * image), and the sample must leave other pixels unrendered. */
+    uint8_t img[2][WN * WN * 4];
+    fs_context *cs = NULL;
+    fs_cycle *cys = NULL;
+    for (int m = 0; m < 2; m++) {
+        fs_config cfg;
+        fs_config_defaults(&cfg);
+        cfg.sampling_tiles = 16;
+        cfg.sampling_tile_size = 4;
+        fs_cycle *cy;
+        fs_context *c = new_context(&cfg, &cy, m ? FS_CYCLE_SAMPLED : FS_CYCLE_FULL);
+        fs_cycle_set_frames(cy, 1);
+        const float pos[4] = {0.3f, 0.5f, 1.0f, 0.0f};
+        fsglEnable(c, GL_LIGHTING);
+        fsglEnable(c, GL_LIGHT0);
+        fsglLightfv(c, GL_LIGHT0, GL_POSITION, pos);
+        for (int gy = 0; gy < WN; gy += 8)
+            for (int gx = 0; gx < WN; gx += 8) {
+                fsglBegin(c, GL_QUADS);
+                fsglNormal3f(c, (float)(gx - WN / 2) / WN, (float)(gy - WN / 2) / WN, 1.0f);
+                fsglVertex2f(c, ndc(gx), ndc(gy));
+                fsglVertex2f(c, ndc(gx + 8), ndc(gy));
+                fsglVertex2f(c, ndc(gx + 8), ndc(gy + 8));
+                fsglVertex2f(c, ndc(gx), ndc(gy + 8));
+                fsglEnd(c);
+            }
+        memcpy(img[m], c->fb.color, sizeof img[m]);
+        if (m) {
+            cs = c;
+            cys = cy;
+        } else {
+            fs_cycle_destroy(cy);
+            fs_context_destroy(c);
+        }
+    }
+    int compared = 0, lit = 0, unrendered = 0;
+    for (int y = 0; y < WN; y++)
+        for (int x = 0; x < WN; x++) {
+            const uint8_t *a = &img[0][(y * WN + x) * 4], *b = &img[1][(y * WN + x) * 4];
+            if (fs_cycle_quad_skipped(cys, x & ~1, y & ~1)) {
+                unrendered += b[0] == 0 && b[1] == 0 && b[2] == 0;
+                continue;
+            }
+            compared++;
+            lit += b[0] != 0;
+            CHECK(memcmp(a, b, 4) == 0);
+        }
+    CHECK_EQ_INT(compared, WN * WN / 16);
+    CHECK_EQ_INT(lit, compared);
+    CHECK_EQ_INT(unrendered, WN * WN - compared);
+    fs_cycle_destroy(cys);
+    fs_context_destroy(cs);
+}
+
 TEST_LIST = {
     TEST_ENTRY(single_stage_closed_form),
     TEST_ENTRY(two_stage_bottleneck),
@@ -333,6 +393,7 @@ TEST_LIST = {
     TEST_ENTRY(rendermode_drain),
     TEST_ENTRY(tile_sample_lattice),
     TEST_ENTRY(tile_sample_full_screen),
+    TEST_ENTRY(tile_sample_lighting_exact),
     TEST_END,
 };
 
