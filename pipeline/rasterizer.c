@@ -339,7 +339,8 @@ static bool polygon_culled(const fs_raster_state *r, bool front)
     }
 }
 
-static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e);
+static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e, const fs_cycle_tiles *t);
+static bool tile_sample_begin(fs_context *c, const fs_cycle_tiles *t, const tri_edges *e);
 static void raster_tri_reference(fs_context *c, const fs_prim_setup *s, const tri_edges *e);
 
 void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2)
@@ -435,20 +436,6 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
         e.y0 = (int)by0;
         e.y1 = (int)by1;
     }
-    /* Small triangles land on cold framebuffer lines: start fetching the
-     * depth and colour rows now so the misses overlap the plane setup
-     * below instead of stalling the per-fragment operations. */
-    if (FS_RASTER_PREFETCH && e.y1 - e.y0 < 8 && e.x1 - e.x0 < 16) {
-        for (int ry = e.y0; ry <= e.y1; ry++) {
-            size_t o = (size_t)fs_raster_row_to_gl(H, ry) * (size_t)W + (size_t)e.x0;
-            __builtin_prefetch(&c->fb.depth[o], 1);
-            __builtin_prefetch(&c->fb.color[o * 4], 1);
-            if (((o + (size_t)(e.x1 - e.x0)) ^ o) >= 16) {
-                __builtin_prefetch(&c->fb.depth[o + (size_t)(e.x1 - e.x0)], 1);
-                __builtin_prefetch(&c->fb.color[(o + (size_t)(e.x1 - e.x0)) * 4], 1);
-            }
-        }
-    }
     for (int i = 0; i < 3; i++) {
         int j = (i + 1) % 3;
         int64_t dcdx = y[i] - y[j];
@@ -464,6 +451,32 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
         e.dcdy[i] = dcdy * (1 << order);
     }
 
+    /* Sampled mode's tile sample: a triangle none of whose box's tiles is
+     * sampled is charged its area and needs no attribute planes. */
+    const fs_cycle_tiles *ts = NULL;
+    if (c->cycle && !r->reference_path) {
+        ts = fs_cycle_tile_sample(c->cycle);
+        if (ts->every <= 1)
+            ts = NULL;
+        else if (!tile_sample_begin(c, ts, &e)) {
+            c->stats.triangles_rasterized++;
+            return;
+        }
+    }
+    /* Small triangles land on cold framebuffer lines: start fetching the
+     * depth and colour rows now so the misses overlap the plane setup
+     * below instead of stalling the per-fragment operations. */
+    if (FS_RASTER_PREFETCH && e.y1 - e.y0 < 8 && e.x1 - e.x0 < 16) {
+        for (int ry = e.y0; ry <= e.y1; ry++) {
+            size_t o = (size_t)fs_raster_row_to_gl(H, ry) * (size_t)W + (size_t)e.x0;
+            __builtin_prefetch(&c->fb.depth[o], 1);
+            __builtin_prefetch(&c->fb.color[o * 4], 1);
+            if (((o + (size_t)(e.x1 - e.x0)) ^ o) >= 16) {
+                __builtin_prefetch(&c->fb.depth[o + (size_t)(e.x1 - e.x0)], 1);
+                __builtin_prefetch(&c->fb.color[(o + (size_t)(e.x1 - e.x0)) * 4], 1);
+            }
+        }
+    }
     /* Attribute planes (lp_state_setup.c init_args/calc_coef4) from the
      * unsnapped float positions, in llvmpipe's vertex order. */
     const fs_rvertex *a = v[idx[0]], *b = v[idx[1]], *d = v[idx[2]];
@@ -530,7 +543,7 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     if (r->reference_path)
         raster_tri_reference(c, &s, &e);
     else
-        raster_tri_fast(c, &s, &e);
+        raster_tri_fast(c, &s, &e, ts);
 }
 
 /* ---- coverage: the plain reference and the incremental fast path ---- */
@@ -615,27 +628,40 @@ static inline void raster_tri_box(fs_context *c, const fs_prim_setup *s, const t
     }
 }
 
-static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e)
+/* Sampled mode's tile sample (docs/cycle_model.md): the triangle's area in
+ * pixels (the edge vectors' cross product is twice the area, in units of
+ * 2^(4 * subpixel bits)), at most its box, goes to the model, which charges
+ * the sampled quads so that their fragments add up to the areas (a ratio
+ * estimator).  True when a sampled tile meets the box (tiles are at least
+ * 2 pixels wide and aligned to even coordinates, so they hold whole quads). */
+static bool tile_sample_begin(fs_context *c, const fs_cycle_tiles *t, const tri_edges *e)
 {
-    const int H = s->height;
+    const int H = c->fb.height;
     const int gy0 = fs_raster_row_to_gl(H, e->y1), gy1 = fs_raster_row_to_gl(H, e->y0);
     const int qx0 = e->x0 & ~1, qy0 = gy0 & ~1;
-    const fs_cycle_tiles *t = c->cycle ? fs_cycle_tile_sample(c->cycle) : NULL;
-    if (!t || t->every <= 1 || qx0 < 0 || qy0 < 0) {
-        raster_tri_box(c, s, e, qx0, e->x1, qy0, gy1);
-        return;
-    }
-    /* Sampled mode's tile sample (docs/cycle_model.md): only the sampled
-     * tiles of the box are walked (tiles are at least 2 pixels wide and
-     * aligned to even coordinates, so they hold whole quads). */
-    /* The triangle's area in pixels (the edge vectors' cross product is
-     * twice the area, in units of 2^(4 * subpixel bits)), at most its box:
-     * the model charges the sampled quads so that their fragments add up to
-     * the areas (a ratio estimator, docs/cycle_model.md). */
     int64_t cross = e->dcdx[0] * e->dcdy[1] - e->dcdx[1] * e->dcdy[0];
     double area = fabs((double)cross) / 2.0 / ldexp(1.0, 4 * c->raster.subpixel_bits);
     double box = (double)(e->x1 - e->x0 + 1) * (double)(e->y1 - e->y0 + 1);
     fs_cycle_triangle_area(c->cycle, area < box ? area : box, (e->x0 + e->x1) / 2, (gy0 + gy1) / 2);
+    const int sh = t->shift;
+    for (int ty = qy0 >> sh; ty <= gy1 >> sh; ty++)
+        for (int tx = qx0 >> sh; tx <= e->x1 >> sh; tx++)
+            if (fs_cycle_tile_sampled(t, (uint32_t)tx, (uint32_t)ty))
+                return true;
+    return false;
+}
+
+/* t: the tile sample, NULL outside tile sampling; then only its tiles of
+ * the box are walked. */
+static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e, const fs_cycle_tiles *t)
+{
+    const int H = s->height;
+    const int gy0 = fs_raster_row_to_gl(H, e->y1), gy1 = fs_raster_row_to_gl(H, e->y0);
+    const int qx0 = e->x0 & ~1, qy0 = gy0 & ~1;
+    if (!t) {
+        raster_tri_box(c, s, e, qx0, e->x1, qy0, gy1);
+        return;
+    }
     const int sh = t->shift;
     for (int ty = qy0 >> sh; ty <= gy1 >> sh; ty++)
         for (int tx = qx0 >> sh; tx <= e->x1 >> sh; tx++) {

@@ -143,6 +143,12 @@ static void fetch(const fs_client_array *a, size_t i, float out[4], bool norm)
     int esz = fs_type_size(a->type);
     size_t stride = a->stride ? (size_t)a->stride : (size_t)esz * (size_t)a->size;
     const unsigned char *p = (const unsigned char *)a->pointer + i * stride;
+    if (a->type == GL_FLOAT) {
+        /* The common case, and a copy: one memcpy instead of a switch per
+         * component. */
+        memcpy(out, p, 4 * (size_t)a->size);
+        return;
+    }
     for (int k = 0; k < a->size; k++) {
         float v;
         switch (a->type) {
@@ -308,10 +314,12 @@ void fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size
         vs_position(s, &in[i], o);
         inside &= o->mask == 0;
         all_out &= o->mask;
-        x0 = fminf(x0, o->win[0]);
-        x1 = fmaxf(x1, o->win[0]);
-        y0 = fminf(y0, o->win[1]);
-        y1 = fmaxf(y1, o->win[1]);
+        /* Compares, not fminf/fmaxf (library calls here): a NaN position
+         * leaves the box as they would. */
+        x0 = o->win[0] < x0 ? o->win[0] : x0;
+        x1 = o->win[0] > x1 ? o->win[0] : x1;
+        y0 = o->win[1] < y0 ? o->win[1] : y0;
+        y1 = o->win[1] > y1 ? o->win[1] : y1;
     }
     bool need = all_out == 0 && (!inside || box_sampled(tiles, x0, y0, x1, y1));
     for (size_t i = 0; i < n; i++) {
@@ -353,11 +361,16 @@ void fs_exec_ArrayElement(fs_context *c, GLint i)
     if (c->arrays.vertex.enabled) fs_exec_Vertex4fv(c, v.obj);
 }
 
+/* Sampled mode: the draw is estimated, not executed; asked before any
+ * vertex is fetched, which is then not needed. */
+static bool draw_estimated(fs_context *c, GLenum mode, size_t count)
+{
+    return c->cycle && !fs_cycle_draw(c->cycle, c, mode, count);
+}
+
 static void draw_batch(fs_context *c, GLenum mode, size_t n, const uint32_t *idx, size_t count, bool elements)
 {
     fs_vs_impl *v = fs_vs(c);
-    if (c->cycle && !fs_cycle_draw(c->cycle, c, mode, count))
-        return; /* sampled mode: this draw is estimated, not executed */
     if (!fs_vs_reserve_pv(c, n)) {
         fs_error(c, GL_OUT_OF_MEMORY);
         return;
@@ -373,6 +386,10 @@ void fs_exec_DrawArrays(fs_context *c, GLenum mode, GLint first, GLsizei count)
     if (count < 0 || first < 0) { fs_error(c, GL_INVALID_VALUE); return; }
     if (!c->arrays.vertex.enabled || count == 0 || !fs_vs(c))
         return;
+    if (draw_estimated(c, mode, (size_t)count)) {
+        c->stats.vertices += (uint64_t)count;
+        return;
+    }
     if (!fs_vs_reserve_iv(c, (size_t)count)) { fs_error(c, GL_OUT_OF_MEMORY); return; }
     fs_vs_impl *v = fs_vs(c);
     for (GLsizei i = 0; i < count; i++)
@@ -404,6 +421,8 @@ static void draw_elements(fs_context *c, GLenum mode, GLsizei count, GLenum type
     size_t range = (size_t)(hi - lo) + 1;
     fs_vs_impl *v;
     c->stats.vertices += n;
+    if (draw_estimated(c, mode, n))
+        return;
     if (range <= 2 * n + 64) {
         /* Dense indices: transform each referenced vertex once. */
         if (!fs_vs_reserve_iv(c, range) || !fs_vs_reserve_idx(c, n)) { fs_error(c, GL_OUT_OF_MEMORY); return; }

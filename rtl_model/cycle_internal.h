@@ -158,6 +158,7 @@ struct fs_cycle {
      * of the screen in this frame, for the error estimate */
     double *tile_work;
     int tiles_x, tiles_y, fb_width, fb_height;
+    uint8_t *tile_map;    /* what tiles.map points to */
     double tile_var;            /* variance of the tile-sampled frames' cycles so far */
     /* ratio estimator: areas and sampled fragments of the triangles done,
      * and the current triangle's */

@@ -257,6 +257,7 @@ void fs_cycle_destroy(fs_cycle *cy)
     fs_cyc_stage_free(&cy->rtri);
     free(cy->frame_cycles);
     free(cy->tile_work);
+    free(cy->tile_map);
     free(cy->seq);
     free(cy->frame_was_skipped);
     free(cy->fbmem);
@@ -271,13 +272,28 @@ static void resync_counters(fs_cycle *cy, const fs_context *c);
 static void tile_work_alloc(fs_cycle *cy)
 {
     free(cy->tile_work);
+    free(cy->tile_map);
     cy->tile_work = NULL;
+    cy->tile_map = NULL;
+    cy->tiles.map = NULL;
+    cy->tiles.map_w = cy->tiles.map_h = 0;
     if (cy->tiles.every <= 1 || cy->fb_width <= 0 || cy->fb_height <= 0)
         return;
     int side = 1 << cy->tiles.shift;
     cy->tiles_x = (cy->fb_width + side - 1) / side;
     cy->tiles_y = (cy->fb_height + side - 1) / side;
-    cy->tile_work = calloc((size_t)cy->tiles_x * (size_t)cy->tiles_y, sizeof *cy->tile_work);
+    size_t n = (size_t)cy->tiles_x * (size_t)cy->tiles_y;
+    cy->tile_work = calloc(n, sizeof *cy->tile_work);
+    cy->tile_map = malloc(n);
+    if (!cy->tile_map)
+        return; /* the hash alone answers */
+    for (int ty = 0; ty < cy->tiles_y; ty++)
+        for (int tx = 0; tx < cy->tiles_x; tx++)
+            cy->tile_map[(size_t)ty * (size_t)cy->tiles_x + (size_t)tx] =
+                fs_cycle_tile_hashed(&cy->tiles, (uint32_t)tx, (uint32_t)ty);
+    cy->tiles.map = cy->tile_map;
+    cy->tiles.map_w = (uint32_t)cy->tiles_x;
+    cy->tiles.map_h = (uint32_t)cy->tiles_y;
 }
 
 /* Sampled mode's tile sample: one tile in each block of n tiles, the

@@ -69,6 +69,10 @@ typedef struct fs_cycle_tiles {
     uint32_t every;   /* one tile in `every` is rasterized */
     uint32_t step;    /* width in tiles of a block of `every` tiles (one sampled per block) */
     int shift;        /* log2 of the tile side */
+    /* The screen's tiles, 1 where sampled: the rasterizer asks per
+     * triangle, and the hash below costs five divisions. */
+    uint32_t map_w, map_h;
+    const uint8_t *map;
 } fs_cycle_tiles;
 static inline const fs_cycle_tiles *fs_cycle_tile_sample(const fs_cycle *cy)
 {
@@ -83,7 +87,7 @@ static inline const fs_cycle_tiles *fs_cycle_tile_sample(const fs_cycle *cy)
  * random, sampling: even coverage of the screen like a lattice, but
  * unbiased whatever regular structure the scene has, which a fixed
  * lattice is not). */
-static inline bool fs_cycle_tile_sampled(const fs_cycle_tiles *t, uint32_t tx, uint32_t ty)
+static inline bool fs_cycle_tile_hashed(const fs_cycle_tiles *t, uint32_t tx, uint32_t ty)
 {
     uint32_t bw = t->step, bh = t->every / t->step;
     uint32_t bx = tx / bw, by = ty / bh;
@@ -93,6 +97,12 @@ static inline bool fs_cycle_tile_sampled(const fs_cycle_tiles *t, uint32_t tx, u
     h ^= h >> 12;
     h %= t->every;
     return tx - bx * bw == h % bw && ty - by * bh == h / bw;
+}
+static inline bool fs_cycle_tile_sampled(const fs_cycle_tiles *t, uint32_t tx, uint32_t ty)
+{
+    if (tx < t->map_w && ty < t->map_h)
+        return t->map[(size_t)ty * t->map_w + tx];
+    return fs_cycle_tile_hashed(t, tx, ty);
 }
 static inline bool fs_cycle_quad_skipped(const fs_cycle *cy, int x, int y)
 {
