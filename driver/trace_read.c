@@ -194,7 +194,7 @@ struct fs_trace_reader {
     size_t frames_bytes;
 
     pending **q;             /* ring of calls waiting to be returned, in call order */
-    size_t qhead, qcount, qcap;
+    size_t qhead, qcount, qcap; /* qcap: 0 or a power of two, so indices wrap with a mask */
     pending *returned;
     pending *free_list;
     uint64_t next_call_no;
@@ -289,26 +289,32 @@ static int have_data(fs_trace_reader *r)
     return load_chunk(r);
 }
 
-static int rd_byte(fs_trace_reader *r, unsigned *b)
+/* The byte reader's slow half: the chunk is used up. */
+static __attribute__((noinline)) int rd_byte_next_chunk(fs_trace_reader *r, unsigned *b)
 {
-    if (r->pos >= r->len) {
-        int rc = have_data(r);
-        if (rc <= 0) {
-            *b = 0;
-            if (rc == 0) {
-                r->cut_in_event = 1;
-                rfail(r, "unexpected end of the trace inside an event (truncated file?)");
-            }
-            return -1;
+    int rc = have_data(r);
+    if (rc <= 0) {
+        *b = 0;
+        if (rc == 0) {
+            r->cut_in_event = 1;
+            rfail(r, "unexpected end of the trace inside an event (truncated file?)");
         }
+        return -1;
     }
     *b = r->buf[r->pos++];
     return 0;
 }
 
-static int rd_bytes(fs_trace_reader *r, void *dst, size_t n)
+static inline int rd_byte(fs_trace_reader *r, unsigned *b)
 {
-    unsigned char *d = dst;
+    if (__builtin_expect(r->pos >= r->len, 0))
+        return rd_byte_next_chunk(r, b);
+    *b = r->buf[r->pos++];
+    return 0;
+}
+
+static __attribute__((noinline)) int rd_bytes_across(fs_trace_reader *r, unsigned char *d, size_t n)
+{
     while (n) {
         if (r->pos >= r->len) {
             int rc = have_data(r);
@@ -328,8 +334,48 @@ static int rd_bytes(fs_trace_reader *r, void *dst, size_t n)
     return 0;
 }
 
+/* Inline so that the fixed-size reads (floats, doubles) become plain loads. */
+static inline int rd_bytes(fs_trace_reader *r, void *dst, size_t n)
+{
+    if (__builtin_expect(r->len - r->pos < n, 0))
+        return rd_bytes_across(r, dst, n);
+    if (dst)
+        memcpy(dst, r->buf + r->pos, n);
+    r->pos += n;
+    return 0;
+}
+
+/*
+ * A whole, well-formed varint in [*pp, end): 1 with *pp moved past it, else
+ * 0 with *pp unchanged.  The fast paths use it and leave anything else
+ * (a varint cut by the chunk's end, an over-long one) to the byte-by-byte
+ * reader, which owns the error messages.
+ */
+static inline int cur_uint(const unsigned char **pp, const unsigned char *end, uint64_t *v)
+{
+    const unsigned char *p = *pp;
+    if (__builtin_expect(p < end && *p < 0x80, 1)) {
+        *v = *p;
+        *pp = p + 1;
+        return 1;
+    }
+    uint64_t x = 0;
+    for (unsigned i = 0; i < 10 && p < end; i++, p++) {
+        unsigned b = *p;
+        if (i == 9 && (b & 0x7e))
+            return 0;
+        x |= (uint64_t)(b & 0x7f) << (7 * i);
+        if (!(b & 0x80)) {
+            *v = x;
+            *pp = p + 1;
+            return 1;
+        }
+    }
+    return 0;
+}
+
 /* "uint": 7 bits per byte, least significant first; at most 10 bytes. */
-static int rd_uint(fs_trace_reader *r, uint64_t *v)
+static __attribute__((noinline)) int rd_uint_slow(fs_trace_reader *r, uint64_t *v)
 {
     uint64_t off = stream_off(r), x = 0;
     for (unsigned i = 0; i < 10; i++) {
@@ -345,6 +391,16 @@ static int rd_uint(fs_trace_reader *r, uint64_t *v)
         }
     }
     return rfail_at(r, off, "bad varint (more than 10 bytes)");
+}
+
+static inline int rd_uint(fs_trace_reader *r, uint64_t *v)
+{
+    const unsigned char *p = r->buf + r->pos;
+    if (__builtin_expect(cur_uint(&p, r->buf + r->len, v), 1)) {
+        r->pos = (size_t)(p - r->buf);
+        return 0;
+    }
+    return rd_uint_slow(r, v);
 }
 
 /* Upper bound of the decompressed bytes still to come. */
@@ -830,14 +886,27 @@ static int parse_details(fs_trace_reader *r, pending *p, int leave, int follow_o
 static pending *pending_new(fs_trace_reader *r)
 {
     pending *p = r->free_list;
-    if (p) {
-        r->free_list = p->next_free;
-        arena a = p->a;
-        memset(p, 0, sizeof *p);
-        p->a = a;
-    } else {
-        p = calloc(1, sizeof *p);
-    }
+    if (!p)
+        return calloc(1, sizeof *p);
+    r->free_list = p->next_free;
+    /* Member by member, keeping the arena: gcc turns a memset of the whole
+     * struct (or of the whole fs_tcall) into rep stos, whose start-up cost
+     * was a tenth of decoding a small call. */
+    p->call.no = 0;
+    p->call.thread = 0;
+    p->call.name = NULL;
+    p->call.nargs = 0;
+    p->call.arg_names = NULL;
+    p->call.args = NULL;
+    p->call.ret = (fs_tval){0};
+    p->call.has_ret = 0;
+    p->call.flags = 0;
+    p->call.offset = 0;
+    p->call.out_args = 0;
+    p->args = NULL;
+    p->sig = NULL;
+    p->complete = 0;
+    p->next_free = NULL;
     return p;
 }
 
@@ -856,13 +925,13 @@ static int queue_push(fs_trace_reader *r, pending *p)
         if (!nq)
             return -1;
         for (size_t i = 0; i < r->qcount; i++)
-            nq[i] = r->q[(r->qhead + i) % r->qcap];
+            nq[i] = r->q[(r->qhead + i) & (r->qcap - 1)];
         free(r->q);
         r->q = nq;
         r->qcap = ncap;
         r->qhead = 0;
     }
-    r->q[(r->qhead + r->qcount) % r->qcap] = p;
+    r->q[(r->qhead + r->qcount) & (r->qcap - 1)] = p;
     r->qcount++;
     return 0;
 }
@@ -870,7 +939,7 @@ static int queue_push(fs_trace_reader *r, pending *p)
 static pending *queue_pop(fs_trace_reader *r)
 {
     pending *p = r->q[r->qhead];
-    r->qhead = (r->qhead + 1) % r->qcap;
+    r->qhead = (r->qhead + 1) & (r->qcap - 1);
     r->qcount--;
     return p;
 }
@@ -913,7 +982,7 @@ static int parse_leave(fs_trace_reader *r, uint64_t off)
         return -1;
     pending *p = NULL;
     for (size_t i = r->qcount; i-- > 0;) {
-        pending *q = r->q[(r->qhead + i) % r->qcap];
+        pending *q = r->q[(r->qhead + i) & (r->qcap - 1)];
         if (q->call.no == no) {
             p = q;
             break;
@@ -948,6 +1017,238 @@ static int parse_leave(fs_trace_reader *r, uint64_t off)
         return -1;
     p->complete = 1;
     return 0;
+}
+
+/*
+ * Fast paths for the events that make up nearly all of a trace: a call of
+ * a known function signature whose values are scalars, enums and bitmasks
+ * of known signatures, short strings/blobs and short arrays of scalars,
+ * with every byte inside the current chunk.  They read from a local cursor
+ * without the per-byte end-of-chunk test and the error bookkeeping of the
+ * general parser.  On anything else (a chunk boundary, a new signature,
+ * any malformed or unusual input) they give up, and the general parser
+ * reads the event again from its first byte: it alone reports errors, so
+ * messages, offsets and limits are those of the general parser.
+ *
+ * Giving up leaves no trace: an enter's call is discarded before it is
+ * queued, and what a leave wrote into its call before giving up the general
+ * parser writes again, identically, from the same bytes.
+ */
+enum { FAST_MAX_ELEMS = 32 };
+
+static int fast_value(fs_trace_reader *r, arena *a, fs_tval *v, const unsigned char **pp,
+                      const unsigned char *end, int top)
+{
+    const unsigned char *q = *pp;
+    uint64_t n;
+    if (q >= end)
+        return 0;
+    unsigned tag = *q++;
+    memset(v, 0, sizeof *v);
+    v->type = (fs_tv_type)tag;
+    switch (tag) {
+    case FS_TV_NULL:
+    case FS_TV_FALSE:
+    case FS_TV_TRUE:
+        break;
+    case FS_TV_SINT:
+        if (!cur_uint(&q, end, &n) || n > (uint64_t)INT64_MAX + 1)
+            return 0;
+        v->i = n == (uint64_t)INT64_MAX + 1 ? INT64_MIN : -(int64_t)n;
+        break;
+    case FS_TV_UINT:
+    case FS_TV_OPAQUE:
+        if (!cur_uint(&q, end, &v->u))
+            return 0;
+        break;
+    case FS_TV_FLOAT: {
+        float f;
+        if (end - q < 4)
+            return 0;
+        memcpy(&f, q, 4);
+        q += 4;
+        v->d = f;
+        break;
+    }
+    case FS_TV_DOUBLE:
+        if (end - q < 8)
+            return 0;
+        memcpy(&v->d, q, 8);
+        q += 8;
+        break;
+    case FS_TV_ENUM: {
+        const fs_tsig *s;
+        if (!cur_uint(&q, end, &n) || n >= r->nenums || !(s = r->enums[n]))
+            return 0;
+        if (r->version < 3) {
+            v->i = s->values[0];
+        } else {
+            if (q >= end || (*q != FS_TV_SINT && *q != FS_TV_UINT))
+                return 0;
+            unsigned itag = *q++;
+            if (!cur_uint(&q, end, &n))
+                return 0;
+            if (itag == FS_TV_SINT) {
+                if (n > (uint64_t)INT64_MAX + 1)
+                    return 0;
+                v->i = n == (uint64_t)INT64_MAX + 1 ? INT64_MIN : -(int64_t)n;
+            } else {
+                v->i = (int64_t)n;
+            }
+        }
+        v->sig = s;
+        for (unsigned k = 0; k < s->n; k++)
+            if (s->values[k] == v->i) {
+                v->enum_name = s->names[k];
+                break;
+            }
+        break;
+    }
+    case FS_TV_BITMASK:
+        if (!cur_uint(&q, end, &n) || n >= r->nbitmasks || !r->bitmasks[n])
+            return 0;
+        v->sig = r->bitmasks[n];
+        if (!cur_uint(&q, end, &v->u))
+            return 0;
+        break;
+    case FS_TV_STRING:
+    case FS_TV_BLOB: {
+        /* Only lengths the general reader would also take from the arena
+         * (n <= 16384), and wholly in this chunk, which also passes its
+         * bound on the remaining data. */
+        char *str;
+        if (!cur_uint(&q, end, &n) || n > 16384 || n > (uint64_t)(end - q) ||
+            a->total + n > MAX_CALL_BYTES || !(str = arena_alloc(a, (size_t)n + 1)))
+            return 0;
+        memcpy(str, q, (size_t)n);
+        str[n] = '\0';
+        q += n;
+        v->str.ptr = str;
+        v->str.len = (size_t)n;
+        break;
+    }
+    case FS_TV_ARRAY: {
+        /* Each element takes a byte at least, so a length within the chunk
+         * passes the general reader's bound on the remaining data. */
+        if (!top || !cur_uint(&q, end, &n) || n > FAST_MAX_ELEMS || n > (uint64_t)(end - q) ||
+            a->total + n * sizeof(fs_tval) > MAX_CALL_BYTES)
+            return 0;
+        v->arr.n = (size_t)n;
+        if (n) {
+            fs_tval *e = arena_alloc(a, (size_t)n * sizeof *e);
+            if (!e)
+                return 0;
+            for (size_t i = 0; i < n; i++)
+                if (!fast_value(r, a, &e[i], &q, end, 0))
+                    return 0;
+            v->arr.elems = e;
+        }
+        break;
+    }
+    default:
+        return 0;
+    }
+    *pp = q;
+    return 1;
+}
+
+static int fast_details(fs_trace_reader *r, pending *p, int leave, const unsigned char **pp,
+                        const unsigned char *end)
+{
+    const unsigned char *q = *pp;
+    for (;;) {
+        uint64_t u;
+        if (q >= end)
+            return 0;
+        switch (*q++) {
+        case CD_END:
+            *pp = q;
+            return 1;
+        case CD_ARG:
+            if (!cur_uint(&q, end, &u) || u >= p->call.nargs ||
+                !fast_value(r, &p->a, &p->args[u], &q, end, 1))
+                return 0;
+            if (u < 64) {
+                if (leave)
+                    p->call.out_args |= 1ull << u;
+                else
+                    p->call.out_args &= ~(1ull << u);
+            }
+            break;
+        case CD_RET:
+            if (!fast_value(r, &p->a, &p->call.ret, &q, end, 1))
+                return 0;
+            p->call.has_ret = 1;
+            break;
+        case CD_THREAD:
+            if (!cur_uint(&q, end, &u) || u > UINT32_MAX)
+                return 0;
+            p->call.thread = (uint32_t)u;
+            break;
+        case CD_FLAGS:
+            if (!cur_uint(&q, end, &u))
+                return 0;
+            if (u & FLAG_FAKE)
+                p->call.flags |= FS_TCALL_FAKE;
+            break;
+        default:
+            return 0;
+        }
+    }
+}
+
+/* The enter event at r->pos, of a known signature.  1 when read and queued;
+ * 0 when the general parser must read it (nothing changed). */
+static int fast_enter(fs_trace_reader *r)
+{
+    const unsigned char *q = r->buf + r->pos + 1, *end = r->buf + r->len;
+    uint64_t thread = 0, id;
+    if (r->version >= 4 && (!cur_uint(&q, end, &thread) || thread > UINT32_MAX))
+        return 0;
+    if (!cur_uint(&q, end, &id) || id >= r->nfuncs || !r->funcs[id])
+        return 0;
+    const fsig *s = r->funcs[id];
+    pending *p = pending_new(r);
+    if (!p)
+        return 0;
+    p->sig = s;
+    p->call.no = r->next_call_no;
+    p->call.thread = (uint32_t)thread;
+    p->call.name = s->name;
+    p->call.nargs = s->nargs;
+    p->call.arg_names = s->arg_names;
+    p->call.offset = stream_off(r);
+    p->args = arena_zalloc(&p->a, s->nargs * sizeof *p->args);
+    p->call.args = p->args;
+    if (!p->args || !fast_details(r, p, 0, &q, end) || queue_push(r, p)) {
+        pending_free(r, p);
+        return 0;
+    }
+    r->next_call_no++;
+    r->pos = (size_t)(q - r->buf);
+    return 1;
+}
+
+/* The leave event at r->pos of a call waiting for it; 1 or 0 as fast_enter. */
+static int fast_leave(fs_trace_reader *r)
+{
+    const unsigned char *q = r->buf + r->pos + 1, *end = r->buf + r->len;
+    uint64_t no;
+    if (!cur_uint(&q, end, &no))
+        return 0;
+    pending *p = NULL;
+    for (size_t i = r->qcount; i-- > 0;) {
+        pending *c = r->q[(r->qhead + i) & (r->qcap - 1)];
+        if (c->call.no == no) {
+            p = c;
+            break;
+        }
+    }
+    if (!p || p->complete || !fast_details(r, p, 1, &q, end))
+        return 0;
+    p->complete = 1;
+    r->pos = (size_t)(q - r->buf);
+    return 1;
 }
 
 void fs_trace_set_strict_end(fs_trace_reader *r, int strict) { r->strict_end = strict; }
@@ -989,8 +1290,11 @@ int fs_trace_next(fs_trace_reader *r, fs_tcall *call)
             r->eof = 1;
             continue;
         }
+        unsigned ev = r->buf[r->pos];
+        if (ev == EV_ENTER ? fast_enter(r) : ev == EV_LEAVE && fast_leave(r))
+            continue;
         uint64_t off = stream_off(r);
-        unsigned ev = r->buf[r->pos++];
+        r->pos++;
         size_t queued = r->qcount;
         if (ev == EV_ENTER)
             rc = parse_enter(r, off);
@@ -1006,7 +1310,7 @@ int fs_trace_next(fs_trace_reader *r, fs_tcall *call)
              * flushes whole chunks on SIGTERM).  The partial event is
              * dropped; calls before it are returned as usual. */
             if (ev == EV_ENTER && r->qcount > queued) {
-                pending *last = r->q[(r->qhead + r->qcount - 1) % r->qcap];
+                pending *last = r->q[(r->qhead + r->qcount - 1) & (r->qcap - 1)];
                 r->qcount--;
                 pending_free(r, last);
             }

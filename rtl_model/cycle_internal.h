@@ -16,6 +16,7 @@ typedef struct fs_cyc_fifo {
     uint64_t *ring;
     uint32_t depth;
     uint64_t count;     /* items taken so far */
+    uint32_t widx;      /* count % depth, kept so that no step divides */
     uint64_t sptr;      /* first item not known to have started (occupancy) */
     uint32_t sidx;      /* sptr % depth */
     uint64_t hwm;       /* most items ever waiting, since the last reset */

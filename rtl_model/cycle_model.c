@@ -81,7 +81,9 @@ void fs_cyc_stage_free(fs_cyc_stage *st) { free(st->in.ring); }
 /* Records that the stage owning fifo started its next item at time t. */
 static inline void fifo_push(fs_cyc_fifo *f, uint64_t t)
 {
-    f->ring[f->count % f->depth] = t;
+    f->ring[f->widx] = t;
+    if (++f->widx == f->depth)
+        f->widx = 0;
     f->count++;
 }
 
@@ -91,13 +93,14 @@ static inline void fifo_push(fs_cyc_fifo *f, uint64_t t)
 static inline void fifo_push_n(fs_cyc_fifo *f, uint64_t t, uint64_t service, uint64_t m)
 {
     uint64_t k = m < f->depth ? m : f->depth;
-    uint64_t idx = (f->count + m - k) % f->depth;
+    uint32_t idx = m > f->depth ? (uint32_t)((f->widx + m) % f->depth) : f->widx;
     double per = (double)service / (double)m;
     for (uint64_t i = m - k; i < m; i++) {
         f->ring[idx] = t + (uint64_t)((double)i * per);
         if (++idx == f->depth)
             idx = 0;
     }
+    f->widx = idx; /* k places on from where the loop began: (count + m) % depth */
     f->count += m;
 }
 
@@ -128,7 +131,8 @@ static inline uint64_t step(fs_cyc_stage *st, uint64_t arr, uint64_t service, ui
          * `depth` places ahead has left the FIFO. */
         uint64_t last = (m < d ? m : d) - 1;
         if (nf->count + last >= d) {
-            uint64_t slot = nf->ring[(nf->count + last) % d];
+            uint64_t at = nf->widx + last; /* (count + last) % d, last < d */
+            uint64_t slot = nf->ring[at >= d ? at - d : at];
             if (slot > depart)
                 depart = slot;
         }
@@ -137,7 +141,7 @@ static inline uint64_t step(fs_cyc_stage *st, uint64_t arr, uint64_t service, ui
         uint64_t lo = nf->count > d ? nf->count - d : 0;
         if (nf->sptr < lo) {
             nf->sptr = lo;
-            nf->sidx = (uint32_t)(lo % d);
+            nf->sidx = lo ? nf->widx : 0; /* lo % d: lo is 0 or count - d */
         }
         while (nf->sptr < nf->count && nf->ring[nf->sidx] <= depart) {
             nf->sptr++;
