@@ -159,8 +159,8 @@ void fs_exec_End(fs_context *c)
         return;
     }
     fs_vs_prepare(c, &v->setup);
-    fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_sample(c, c->prim.mode));
-    fs_prim_draw(c, &v->setup, c->prim.mode, v->pv, NULL, n, c->prim.list_depth > 0);
+    bool lazy = fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_sample(c, c->prim.mode));
+    fs_prim_draw(c, &v->setup, c->prim.mode, v->pv, lazy ? v->iv : NULL, NULL, n, c->prim.list_depth > 0);
 }
 
 /* Appends a vertex with the current attributes (GL 1.5 spec 2.7).  Outside

@@ -29,14 +29,53 @@ bool fs_prim_mode_valid(GLenum mode)
 typedef struct prim_ctx {
     fs_context *c;
     const fs_vs_setup *s;
-    const fs_pvert *pv;
+    fs_pvert *pv;
+    const fs_ivert *iv;  /* lazy attributes: the inputs, else NULL */
     const uint32_t *idx;
     int prov;            /* provoking position in each triangle, -1 smooth */
 } prim_ctx;
 
-static inline const fs_pvert *V(const prim_ctx *p, size_t i)
+static inline size_t I(const prim_ctx *p, size_t i)
 {
-    return p->idx ? &p->pv[p->idx[i]] : &p->pv[i];
+    return p->idx ? p->idx[i] : i;
+}
+
+static inline fs_pvert *V(const prim_ctx *p, size_t i)
+{
+    return &p->pv[I(p, i)];
+}
+
+static inline float lo3(float a, float b, float c)
+{
+    float m = b < a ? b : a;
+    return c < m ? c : m;
+}
+
+static inline float hi3(float a, float b, float c)
+{
+    float m = b > a ? b : a;
+    return c > m ? c : m;
+}
+
+/* Sampled mode's tile sample: lights the lazy vertices of a triangle that
+ * may make fragments in a sampled tile (its box meets one, or it is
+ * clipped); the others are charged by area and never read their colours. */
+static void tri_attributes(const prim_ctx *p, size_t a, size_t b, size_t cc)
+{
+    fs_pvert *v0 = V(p, a), *v1 = V(p, b), *v2 = V(p, cc);
+    if (!(v0->lazy | v1->lazy | v2->lazy) || (v0->mask & v1->mask & v2->mask))
+        return;
+    if ((v0->mask | v1->mask | v2->mask) == 0) {
+        /* Compares (a NaN makes the box NaN, which counts as sampled). */
+        float x0 = lo3(v0->win[0], v1->win[0], v2->win[0]), x1 = hi3(v0->win[0], v1->win[0], v2->win[0]);
+        float y0 = lo3(v0->win[1], v1->win[1], v2->win[1]), y1 = hi3(v0->win[1], v1->win[1], v2->win[1]);
+        if (!fs_vs_box_sampled(fs_cycle_tile_sample(p->c->cycle), x0, y0, x1, y1))
+            return;
+    }
+    const size_t k[3] = {I(p, a), I(p, b), I(p, cc)};
+    for (int i = 0; i < 3; i++)
+        if (p->pv[k[i]].lazy)
+            fs_vs_attributes(p->s, &p->iv[k[i]], &p->pv[k[i]]);
 }
 
 static void tri(const prim_ctx *p, size_t a, size_t b, size_t cc)
@@ -46,6 +85,8 @@ static void tri(const prim_ctx *p, size_t a, size_t b, size_t cc)
     c->stats.triangles_in++;
     if (c->cycle)
         fs_cycle_triangle(c->cycle);
+    if (p->iv)
+        tri_attributes(p, a, b, cc);
     if ((v0->mask | v1->mask | v2->mask) == 0) {
         fs_emit_triangle(c, p->s, v0, v1, v2, p->prov);
     } else if (v0->mask & v1->mask & v2->mask) {
@@ -61,10 +102,10 @@ static void line(const prim_ctx *p, size_t a, size_t b)
     fs_clip_line(p->c, p->s, V(p, a), V(p, b));
 }
 
-void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, const fs_pvert *pv,
+void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv, const fs_ivert *iv,
                   const uint32_t *idx, size_t count, bool elements)
 {
-    prim_ctx p = {c, s, pv, idx, s->flat ? 2 : -1};
+    prim_ctx p = {c, s, pv, iv, idx, s->flat ? 2 : -1};
     bool pipeline = false;
     for (size_t i = 0; i < count && !pipeline; i++)
         pipeline = V(&p, i)->mask != 0;

@@ -278,7 +278,7 @@ static inline void vs_attributes(const fs_vs_setup *s, const fs_ivert *v, fs_pve
 
 /* Whether a window-space box touches a tile of sampled mode's tile sample
  * (one pixel of margin: fragments lie within the vertices' box). */
-static bool box_sampled(const fs_cycle_tiles *t, float x0, float y0, float x1, float y1)
+bool fs_vs_box_sampled(const fs_cycle_tiles *t, float x0, float y0, float x1, float y1)
 {
     if (!(x0 <= x1 && y0 <= y1))
         return true; /* NaN: let the rasterizer decide */
@@ -292,14 +292,21 @@ static bool box_sampled(const fs_cycle_tiles *t, float x0, float y0, float x1, f
     return false;
 }
 
-void fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n, const fs_cycle_tiles *tiles)
+void fs_vs_attributes(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out)
+{
+    vs_attributes(s, in, out);
+    out->lazy = false;
+}
+
+bool fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n, const fs_cycle_tiles *tiles)
 {
     if (!tiles) {
         for (size_t i = 0; i < n; i++) {
             vs_position(s, &in[i], &out[i]);
             vs_attributes(s, &in[i], &out[i]);
+            out[i].lazy = false;
         }
-        return;
+        return false;
     }
     /* Sampled mode's tile sample: a filled batch wholly inside the view
      * volume whose window box misses every sampled tile makes no fragment,
@@ -321,15 +328,16 @@ void fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size
         y0 = o->win[1] < y0 ? o->win[1] : y0;
         y1 = o->win[1] > y1 ? o->win[1] : y1;
     }
-    bool need = all_out == 0 && (!inside || box_sampled(tiles, x0, y0, x1, y1));
+    bool need = all_out == 0 && (!inside || fs_vs_box_sampled(tiles, x0, y0, x1, y1));
+    /* A batch that may reach a sampled tile is lit per triangle by
+     * fs_prim_draw, only where a triangle's box meets one: big batches
+     * (whole objects) touch some sampled tile almost always. */
     for (size_t i = 0; i < n; i++) {
-        if (need) {
-            vs_attributes(s, &in[i], &out[i]);
-        } else {
-            memset(out[i].col, 0, sizeof out[i].col);
-            memset(out[i].tc, 0, sizeof out[i].tc);
-        }
+        memset(out[i].col, 0, sizeof out[i].col);
+        memset(out[i].tc, 0, sizeof out[i].tc);
+        out[i].lazy = need;
     }
+    return need;
 }
 
 /* The tile sample fs_vs_process may use for a draw in `mode`: filled
@@ -376,8 +384,8 @@ static void draw_batch(fs_context *c, GLenum mode, size_t n, const uint32_t *idx
         return;
     }
     fs_vs_prepare(c, &v->setup);
-    fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_sample(c, mode));
-    fs_prim_draw(c, &v->setup, mode, v->pv, idx, count, elements);
+    bool lazy = fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_sample(c, mode));
+    fs_prim_draw(c, &v->setup, mode, v->pv, lazy ? v->iv : NULL, idx, count, elements);
 }
 
 void fs_exec_DrawArrays(fs_context *c, GLenum mode, GLint first, GLsizei count)

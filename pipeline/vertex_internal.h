@@ -30,6 +30,7 @@ typedef struct fs_pvert {
     float col[2][4];  /* front and back colour, clamped */
     float tc[4];
     unsigned mask;    /* bit i: outside clip plane i (clip.c's order) */
+    bool lazy;        /* col and tc not computed yet (fs_vs_process, tiles) */
 } fs_pvert;
 
 typedef struct fs_light_setup {
@@ -113,14 +114,21 @@ void fs_light_vertex(const fs_vs_setup *s, const float eye[4], const float n[3],
 /* vertex_array.c: transformation of a batch of vertices */
 void fs_vs_prepare(fs_context *c, fs_vs_setup *s);
 /* tiles: NULL, or sampled mode's tile sample (fs_vs_tile_sample), with
- * which a batch that cannot reach a sampled tile skips its lighting. */
-void fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n, const fs_cycle_tiles *tiles);
+ * which a batch that cannot reach a sampled tile skips its lighting, and
+ * one that may leaves it to fs_prim_draw per triangle (the vertices are
+ * then `lazy`; returns true). */
+bool fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n, const fs_cycle_tiles *tiles);
 const fs_cycle_tiles *fs_vs_tile_sample(const fs_context *c, GLenum mode);
+/* Colours and texture coordinates of one lazy vertex. */
+void fs_vs_attributes(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out);
+/* Whether a window-space box can make fragments in a sampled tile. */
+bool fs_vs_box_sampled(const fs_cycle_tiles *t, float x0, float y0, float x1, float y1);
 
 /* primitive.c: assembles a primitive from processed vertices.  idx may be
  * NULL (vertices in order).  elements: the draw came as indices (glDrawElements
- * or a display list), which Mesa splits quads differently for. */
-void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, const fs_pvert *pv,
+ * or a display list), which Mesa splits quads differently for.  iv: the
+ * input vertices when fs_vs_process left the attributes lazy, else NULL. */
+void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv, const fs_ivert *iv,
                   const uint32_t *idx, size_t count, bool elements);
 bool fs_prim_mode_valid(GLenum mode);
 
