@@ -215,7 +215,11 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     c->raster.use_y_raster = true; /* every fs_rvertex from here carries it */
     s->flat = c->lighting.shade_model == GL_FLAT;
     fs_lighting_setup(c, s);
-    if (s->lighting) {
+    /* Draws of one object share a modelview: invert it once (the
+     * persistent setup of the context keeps the last one). */
+    if (s->lighting && !(s->nmat_valid && memcmp(s->nmat_of, mv, sizeof s->nmat_of) == 0)) {
+        memcpy(s->nmat_of, mv, sizeof s->nmat_of);
+        s->nmat_valid = true;
         float inv[16];
         fs_mat_invert(inv, mv);
         for (int r = 0; r < 3; r++)

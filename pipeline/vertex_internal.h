@@ -49,6 +49,8 @@ typedef struct fs_vs_setup {
     float mv[16];
     float nmat[9];      /* rows of the inverse transpose (upper 3x3) */
     float nscale;       /* GL_RESCALE_NORMAL factor */
+    float nmat_of[16];  /* the modelview nmat and nscale were computed from */
+    bool nmat_valid;
     float tex[16];
     bool tex_identity;
     float vp_scale[3], vp_trans[3];
