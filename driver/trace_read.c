@@ -62,7 +62,7 @@ static void arena_release(arena *a)
 }
 
 /* Keeps one ordinary block, so a reused arena does not malloc per call. */
-static void arena_reset(arena *a)
+static __attribute__((noinline)) void arena_reset_blocks(arena *a)
 {
     block *keep = NULL;
     for (block *b = a->head, *n; b; b = n) {
@@ -79,14 +79,20 @@ static void arena_reset(arena *a)
     a->total = keep ? keep->size : 0;
 }
 
-static void *arena_alloc(arena *a, size_t n)
+/* Inline for the usual arena of a small call: one ordinary block. */
+static inline void arena_reset(arena *a)
 {
-    n = ALIGN16(n ? n : 1);
-    if (a->head && a->head->size - a->head->used >= n) {
-        void *p = a->head->data + a->head->used;
-        a->head->used += n;
-        return p;
+    block *b = a->head;
+    if (b && !b->next && b->size == 65536) {
+        b->used = 0;
+        a->total = b->size;
+    } else {
+        arena_reset_blocks(a);
     }
+}
+
+static __attribute__((noinline)) void *arena_alloc_block(arena *a, size_t n)
+{
     size_t size = n > 16384 ? n : 65536;
     block *b = malloc(sizeof *b + size);
     if (!b)
@@ -104,6 +110,17 @@ static void *arena_alloc(arena *a, size_t n)
         a->head = b;
     }
     return b->data;
+}
+
+static inline void *arena_alloc(arena *a, size_t n)
+{
+    n = ALIGN16(n ? n : 1);
+    if (__builtin_expect(a->head && a->head->size - a->head->used >= n, 1)) {
+        void *p = a->head->data + a->head->used;
+        a->head->used += n;
+        return p;
+    }
+    return arena_alloc_block(a, n);
 }
 
 static void *arena_zalloc(arena *a, size_t n)
@@ -920,20 +937,25 @@ static void pending_free(fs_trace_reader *r, pending *p)
     r->free_list = p;
 }
 
-static int queue_push(fs_trace_reader *r, pending *p)
+static __attribute__((noinline)) int queue_grow(fs_trace_reader *r)
 {
-    if (r->qcount == r->qcap) {
-        size_t ncap = r->qcap ? r->qcap * 2 : 16;
-        pending **nq = malloc(ncap * sizeof *nq);
-        if (!nq)
-            return -1;
-        for (size_t i = 0; i < r->qcount; i++)
-            nq[i] = r->q[(r->qhead + i) & (r->qcap - 1)];
-        free(r->q);
-        r->q = nq;
-        r->qcap = ncap;
-        r->qhead = 0;
-    }
+    size_t ncap = r->qcap ? r->qcap * 2 : 16;
+    pending **nq = malloc(ncap * sizeof *nq);
+    if (!nq)
+        return -1;
+    for (size_t i = 0; i < r->qcount; i++)
+        nq[i] = r->q[(r->qhead + i) & (r->qcap - 1)];
+    free(r->q);
+    r->q = nq;
+    r->qcap = ncap;
+    r->qhead = 0;
+    return 0;
+}
+
+static inline int queue_push(fs_trace_reader *r, pending *p)
+{
+    if (r->qcount == r->qcap && queue_grow(r))
+        return -1;
     r->q[(r->qhead + r->qcount) & (r->qcap - 1)] = p;
     r->qcount++;
     return 0;
@@ -1039,8 +1061,29 @@ static int parse_leave(fs_trace_reader *r, uint64_t off)
  */
 enum { FAST_MAX_ELEMS = 32 };
 
-static int fast_value(fs_trace_reader *r, arena *a, fs_tval *v, const unsigned char **pp,
-                      const unsigned char *end, int top)
+static __attribute__((noinline)) int fast_value_any(fs_trace_reader *r, arena *a, fs_tval *v,
+                                                    const unsigned char **pp,
+                                                    const unsigned char *end, int top);
+
+/* Floats are most of the values of immediate-mode traces: read inline. */
+static inline int fast_value(fs_trace_reader *r, arena *a, fs_tval *v, const unsigned char **pp,
+                             const unsigned char *end, int top)
+{
+    const unsigned char *q = *pp;
+    if (__builtin_expect(end - q >= 5 && *q == FS_TV_FLOAT, 1)) {
+        float f;
+        memcpy(&f, q + 1, 4);
+        memset(v, 0, sizeof *v);
+        v->type = FS_TV_FLOAT;
+        v->d = f;
+        *pp = q + 5;
+        return 1;
+    }
+    return fast_value_any(r, a, v, pp, end, top);
+}
+
+static int fast_value_any(fs_trace_reader *r, arena *a, fs_tval *v, const unsigned char **pp,
+                          const unsigned char *end, int top)
 {
     const unsigned char *q = *pp;
     uint64_t n;
@@ -1155,8 +1198,9 @@ static int fast_value(fs_trace_reader *r, arena *a, fs_tval *v, const unsigned c
     return 1;
 }
 
-static int fast_details(fs_trace_reader *r, pending *p, int leave, const unsigned char **pp,
-                        const unsigned char *end)
+static inline __attribute__((always_inline)) int fast_details(fs_trace_reader *r, pending *p,
+                                                              int leave, const unsigned char **pp,
+                                                              const unsigned char *end)
 {
     const unsigned char *q = *pp;
     for (;;) {
@@ -1221,7 +1265,12 @@ static int fast_enter(fs_trace_reader *r)
     p->call.nargs = s->nargs;
     p->call.arg_names = s->arg_names;
     p->call.offset = stream_off(r);
-    p->args = arena_zalloc(&p->a, s->nargs * sizeof *p->args);
+    /* Zeroed value by value: small fixed-size memsets become vector stores,
+     * where one of variable size is a libc call. */
+    p->args = arena_alloc(&p->a, s->nargs * sizeof *p->args);
+    if (p->args)
+        for (unsigned i = 0; i < s->nargs; i++)
+            memset(&p->args[i], 0, sizeof p->args[i]);
     p->call.args = p->args;
     if (!p->args || !fast_details(r, p, 0, &q, end) || queue_push(r, p)) {
         pending_free(r, p);
