@@ -901,7 +901,7 @@ static int parse_details(fs_trace_reader *r, pending *p, int leave, int follow_o
 }
 
 /* ---- pending calls ---- */
-static pending *pending_new(fs_trace_reader *r)
+static inline pending *pending_new(fs_trace_reader *r)
 {
     pending *p = r->free_list;
     if (!p)
