@@ -134,15 +134,21 @@ static void *arena_zalloc(arena *a, size_t n)
 /* A growable buffer that becomes an arena block when complete. */
 typedef struct growbuf { block *b; } growbuf;
 
-static int grow_reserve(growbuf *g, size_t need)
+/* The block size grow_reserve picks for `need` bytes, from `size`. */
+static size_t grow_size(size_t size, size_t need)
 {
-    if (g->b && g->b->size >= need)
-        return 0;
-    size_t size = g->b ? g->b->size : 0;
     if (size < 256)
         size = 256;
     while (size < need)
         size *= 2;
+    return size;
+}
+
+static int grow_reserve(growbuf *g, size_t need)
+{
+    if (g->b && g->b->size >= need)
+        return 0;
+    size_t size = grow_size(g->b ? g->b->size : 0, need);
     block *nb = realloc(g->b, sizeof *nb + size);
     if (!nb)
         return -1;
@@ -177,6 +183,7 @@ typedef struct fsig {
 
 typedef struct pending {
     arena a;
+    arena elems;  /* the fast path's arrays (see fast_value_any), outside a's count */
     fs_tcall call;
     fs_tval *args;
     const fsig *sig;
@@ -933,6 +940,8 @@ static inline pending *pending_new(fs_trace_reader *r)
 static void pending_free(fs_trace_reader *r, pending *p)
 {
     arena_reset(&p->a);
+    if (p->elems.head)
+        arena_reset(&p->elems);
     p->next_free = r->free_list;
     r->free_list = p;
 }
@@ -1057,17 +1066,23 @@ static int parse_leave(fs_trace_reader *r, uint64_t off)
  *
  * Giving up leaves no trace: an enter's call is discarded before it is
  * queued, and what a leave wrote into its call before giving up the general
- * parser writes again, identically, from the same bytes.
+ * parser writes again, identically, from the same bytes (a leave's fast
+ * path allocates nothing, so it leaves no memory behind either).
+ *
+ * The call's arena sees the very allocations of the general parser, so
+ * its memory count (a->total, held to MAX_CALL_BYTES) and blocks stay what
+ * they would be there; see fast_value_any for arrays.
  */
 enum { FAST_MAX_ELEMS = 32 };
+enum { FAST_ALLOC = 1, FAST_ARRAY = 2 }; /* what fast_value may read: strings, arrays */
 
-static __attribute__((noinline)) int fast_value_any(fs_trace_reader *r, arena *a, fs_tval *v,
-                                                    const unsigned char **pp,
-                                                    const unsigned char *end, int top);
+static __attribute__((noinline)) int fast_value_any(fs_trace_reader *r, pending *p, arena *a,
+                                                    fs_tval *v, const unsigned char **pp,
+                                                    const unsigned char *end, unsigned allow);
 
 /* Floats are most of the values of immediate-mode traces: read inline. */
-static inline int fast_value(fs_trace_reader *r, arena *a, fs_tval *v, const unsigned char **pp,
-                             const unsigned char *end, int top)
+static inline int fast_value(fs_trace_reader *r, pending *p, arena *a, fs_tval *v,
+                             const unsigned char **pp, const unsigned char *end, unsigned allow)
 {
     const unsigned char *q = *pp;
     if (__builtin_expect(end - q >= 5 && *q == FS_TV_FLOAT, 1)) {
@@ -1079,11 +1094,11 @@ static inline int fast_value(fs_trace_reader *r, arena *a, fs_tval *v, const uns
         *pp = q + 5;
         return 1;
     }
-    return fast_value_any(r, a, v, pp, end, top);
+    return fast_value_any(r, p, a, v, pp, end, allow);
 }
 
-static int fast_value_any(fs_trace_reader *r, arena *a, fs_tval *v, const unsigned char **pp,
-                          const unsigned char *end, int top)
+static int fast_value_any(fs_trace_reader *r, pending *p, arena *a, fs_tval *v,
+                          const unsigned char **pp, const unsigned char *end, unsigned allow)
 {
     const unsigned char *q = *pp;
     uint64_t n;
@@ -1163,8 +1178,9 @@ static int fast_value_any(fs_trace_reader *r, arena *a, fs_tval *v, const unsign
          * (n <= 16384), and wholly in this chunk, which also passes its
          * bound on the remaining data. */
         char *str;
-        if (!cur_uint(&q, end, &n) || n > 16384 || n > (uint64_t)(end - q) ||
-            a->total + n > MAX_CALL_BYTES || !(str = arena_alloc(a, (size_t)n + 1)))
+        if (!(allow & FAST_ALLOC) || !cur_uint(&q, end, &n) || n > 16384 ||
+            n > (uint64_t)(end - q) || a->total + n > MAX_CALL_BYTES ||
+            !(str = arena_alloc(a, (size_t)n + 1)))
             return 0;
         memcpy(str, q, (size_t)n);
         str[n] = '\0';
@@ -1175,19 +1191,23 @@ static int fast_value_any(fs_trace_reader *r, arena *a, fs_tval *v, const unsign
     }
     case FS_TV_ARRAY: {
         /* Each element takes a byte at least, so a length within the chunk
-         * passes the general reader's bound on the remaining data. */
-        if (!top || !cur_uint(&q, end, &n) || n > FAST_MAX_ELEMS || n > (uint64_t)(end - q) ||
-            a->total + n * sizeof(fs_tval) > MAX_CALL_BYTES)
+         * passes the general reader's bound on the remaining data.  The
+         * general parser gives an array a malloc'd block of its own and
+         * counts its size; here the elements go to the call's second arena
+         * (no malloc per array) and the count grows by that same size. */
+        fs_tval *e;
+        if (!(allow & FAST_ARRAY) || !cur_uint(&q, end, &n) || n > FAST_MAX_ELEMS ||
+            n > (uint64_t)(end - q) || a->total + n * sizeof(fs_tval) > MAX_CALL_BYTES)
             return 0;
         v->arr.n = (size_t)n;
         if (n) {
-            fs_tval *e = arena_alloc(a, (size_t)n * sizeof *e);
-            if (!e)
+            if (!(e = arena_alloc(&p->elems, (size_t)n * sizeof *e)))
                 return 0;
             for (size_t i = 0; i < n; i++)
-                if (!fast_value(r, a, &e[i], &q, end, 0))
+                if (!fast_value(r, p, a, &e[i], &q, end, FAST_ALLOC))
                     return 0;
             v->arr.elems = e;
+            a->total += grow_size(0, (size_t)n * sizeof(fs_tval));
         }
         break;
     }
@@ -1213,7 +1233,7 @@ static inline __attribute__((always_inline)) int fast_details(fs_trace_reader *r
             return 1;
         case CD_ARG:
             if (!cur_uint(&q, end, &u) || u >= p->call.nargs ||
-                !fast_value(r, &p->a, &p->args[u], &q, end, 1))
+                !fast_value(r, p, &p->a, &p->args[u], &q, end, leave ? 0 : FAST_ALLOC | FAST_ARRAY))
                 return 0;
             if (u < 64) {
                 if (leave)
@@ -1223,7 +1243,7 @@ static inline __attribute__((always_inline)) int fast_details(fs_trace_reader *r
             }
             break;
         case CD_RET:
-            if (!fast_value(r, &p->a, &p->call.ret, &q, end, 1))
+            if (!fast_value(r, p, &p->a, &p->call.ret, &q, end, leave ? 0 : FAST_ALLOC | FAST_ARRAY))
                 return 0;
             p->call.has_ret = 1;
             break;
@@ -1478,6 +1498,7 @@ void fs_trace_close(fs_trace_reader *r)
     for (pending *p = r->free_list, *n; p; p = n) {
         n = p->next_free;
         arena_release(&p->a);
+        arena_release(&p->elems);
         free(p);
     }
     arena_release(&r->sigs);
