@@ -937,7 +937,7 @@ static inline pending *pending_new(fs_trace_reader *r)
     return p;
 }
 
-static void pending_free(fs_trace_reader *r, pending *p)
+static inline void pending_free(fs_trace_reader *r, pending *p)
 {
     arena_reset(&p->a);
     if (p->elems.head)
@@ -1265,8 +1265,9 @@ static inline __attribute__((always_inline)) int fast_details(fs_trace_reader *r
 }
 
 /* The enter event at r->pos, of a known signature.  1 when read and queued;
- * 0 when the general parser must read it (nothing changed). */
-static int fast_enter(fs_trace_reader *r)
+ * 2 when its leave followed and the call is in *call, as fs_trace_next
+ * returns it; 0 when the general parser must read it (nothing changed). */
+static int fast_enter(fs_trace_reader *r, fs_tcall *call)
 {
     const unsigned char *q = r->buf + r->pos + 1, *end = r->buf + r->len;
     uint64_t thread = 0, id;
@@ -1292,7 +1293,28 @@ static int fast_enter(fs_trace_reader *r)
         for (unsigned i = 0; i < s->nargs; i++)
             memset(&p->args[i], 0, sizeof p->args[i]);
     p->call.args = p->args;
-    if (!p->args || !fast_details(r, p, 0, &q, end) || queue_push(r, p)) {
+    if (!p->args || !fast_details(r, p, 0, &q, end)) {
+        pending_free(r, p);
+        return 0;
+    }
+    /* The usual case, no other call waiting and the leave right behind:
+     * the call is complete and first in call order, so it is returned
+     * without a trip through the queue.  If the leave has to be left to
+     * the general parser after all, what this wrote into the call it
+     * writes again (see above). */
+    if (r->qcount == 0 && q < end && *q == EV_LEAVE) {
+        const unsigned char *lq = q + 1;
+        uint64_t no;
+        if (cur_uint(&lq, end, &no) && no == p->call.no && fast_details(r, p, 1, &lq, end)) {
+            r->next_call_no++;
+            r->pos = (size_t)(lq - r->buf);
+            p->complete = 1;
+            r->returned = p;
+            *call = p->call;
+            return 2;
+        }
+    }
+    if (queue_push(r, p)) {
         pending_free(r, p);
         return 0;
     }
@@ -1363,8 +1385,15 @@ int fs_trace_next(fs_trace_reader *r, fs_tcall *call)
             continue;
         }
         unsigned ev = r->buf[r->pos];
-        if (ev == EV_ENTER ? fast_enter(r) : ev == EV_LEAVE && fast_leave(r))
+        if (ev == EV_ENTER) {
+            int fast = fast_enter(r, call);
+            if (fast == 2)
+                return 1;
+            if (fast)
+                continue;
+        } else if (ev == EV_LEAVE && fast_leave(r)) {
             continue;
+        }
         uint64_t off = stream_off(r);
         r->pos++;
         size_t queued = r->qcount;
