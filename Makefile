@@ -6,8 +6,11 @@ CXX ?= c++
 BUILD ?= build
 OPT ?= -O2
 PKGS_CORE := osmesa snappy inih
+# -ffp-contract=off: every float operation rounds separately, as llvmpipe's
+# do, also in the functions built for FMA (clang would otherwise fuse a*b+c
+# there, and gcc outside strict ISO modes).
 CFLAGS_BASE := -std=c11 -D_POSIX_C_SOURCE=200809L -g $(OPT) -Wall -Wextra -Werror \
-	-fno-strict-aliasing -Wno-missing-field-initializers
+	-fno-strict-aliasing -Wno-missing-field-initializers -ffp-contract=off
 CFLAGS += $(CFLAGS_BASE) $(SAN)
 CXXFLAGS += -std=c++17 -g $(OPT) -Wall -Wextra -Werror $(SAN)
 LDFLAGS += $(SAN)

@@ -14,6 +14,16 @@
 #include <string.h>
 #include "vertex_internal.h"
 
+/* x86 builds carry an FMA variant of the batch transform, chosen at run
+ * time, so that the four fmaf of each vertex's viewport transform are one
+ * instruction each instead of library calls (fmaf rounds once either way,
+ * so both variants give the same bits). */
+#if (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__))
+#define FS_VS_HAVE_FMA 1
+#else
+#define FS_VS_HAVE_FMA 0
+#endif
+
 int fs_type_size(GLenum type)
 {
     switch (type) {
@@ -208,6 +218,7 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     fs_mat_identity(id);
     s->tex_identity = memcmp(s->tex, id, sizeof id) == 0;
     fs_viewport_xform(c, s->vp_scale, s->vp_trans);
+    s->has_fma = c->raster.has_fma;
     /* llvmpipe draws OSMesa's buffer y-down: Mesa's state tracker negates the
      * y scale and takes the translation from the framebuffer height. */
     s->yr_scale = -s->vp_scale[1];
@@ -302,7 +313,8 @@ void fs_vs_attributes(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out)
     out->lazy = false;
 }
 
-bool fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n, const fs_cycle_tiles *tiles)
+static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n,
+                                                             const fs_cycle_tiles *tiles)
 {
     if (!tiles) {
         for (size_t i = 0; i < n; i++) {
@@ -342,6 +354,23 @@ bool fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size
         out[i].lazy = need;
     }
     return need;
+}
+
+#if FS_VS_HAVE_FMA
+__attribute__((target("fma"))) static bool vs_process_fma(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out,
+                                                          size_t n, const fs_cycle_tiles *tiles)
+{
+    return vs_process(s, in, out, n, tiles);
+}
+#endif
+
+bool fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n, const fs_cycle_tiles *tiles)
+{
+#if FS_VS_HAVE_FMA
+    if (s->has_fma)
+        return vs_process_fma(s, in, out, n, tiles);
+#endif
+    return vs_process(s, in, out, n, tiles);
 }
 
 /* The tile sample fs_vs_process may use for a draw in `mode`: filled

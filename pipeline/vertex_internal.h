@@ -50,6 +50,7 @@ typedef struct fs_vs_setup {
     float nmat[9];      /* rows of the inverse transpose (upper 3x3) */
     float nscale;       /* GL_RESCALE_NORMAL factor */
     float nmat_of[16];  /* the modelview nmat and nscale were computed from */
+    bool has_fma;       /* the CPU has FMA: fs_vs_process's FMA variant */
     bool nmat_valid;
     float tex[16];
     bool tex_identity;
@@ -113,7 +114,8 @@ void fs_lighting_setup(fs_context *c, fs_vs_setup *s);
 void fs_light_vertex(const fs_vs_setup *s, const float eye[4], const float n[3],
                      const float col[4], float out[2][4]);
 
-/* vertex_array.c: transformation of a batch of vertices */
+/* vertex_array.c: transformation of a batch of vertices.  s persists from
+ * draw to draw (it caches the normal matrix): zero it before its first use. */
 void fs_vs_prepare(fs_context *c, fs_vs_setup *s);
 /* tiles: NULL, or sampled mode's tile sample (fs_vs_tile_sample), with
  * which a batch that cannot reach a sampled tile skips its lighting, and

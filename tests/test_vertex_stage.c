@@ -212,6 +212,7 @@ TEST(lighting_single_vertex_vs_equation)
     fsglEnable(c, GL_LIGHT0);
     fsglEnable(c, GL_LIGHT1);
     fs_vs_setup s;
+    memset(&s, 0, sizeof s); /* fs_vs_prepare keeps a cache in it */
     fs_vs_prepare(c, &s);
     const double P[3] = {0.1, -0.2, -0.5}, N0[3] = {0.2, 0.3, 1.0};
     double nl = sqrt(N0[0] * N0[0] + N0[1] * N0[1] + N0[2] * N0[2]);
@@ -800,6 +801,72 @@ TEST(draw_arrays_100k_triangles)
     fs_context_destroy(c);
 }
 
+/* Bit for bit, except that any NaN equals any NaN: a NaN's sign and
+ * payload differ between library and instruction (and between compilers)
+ * and carry nothing, since such a vertex is culled. */
+static bool same_floats(const float *a, const float *b, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (!(isnan(a[i]) && isnan(b[i])) && memcmp(&a[i], &b[i], sizeof a[i]) != 0)
+            return false;
+    return true;
+}
+
+/* The FMA variant of the batch transform (chosen at run time) and the
+ * library-fmaf one give the same bits for every vertex, extreme ones too. */
+TEST(fma_variant_identical)
+{
+    fs_context *c = ctx(640, 480);
+    REQUIRE(c);
+    fsglMatrixMode(c, GL_PROJECTION);
+    fsglFrustum(c, -1.1, 0.9, -0.7, 0.8, 1.3, 90.0);
+    fsglMatrixMode(c, GL_MODELVIEW);
+    fsglRotatef(c, 33, 0.3f, 1, 0.2f);
+    fsglTranslatef(c, 0.7f, -0.4f, -5.0f);
+    fsglEnable(c, GL_LIGHTING);
+    fsglEnable(c, GL_LIGHT0);
+    enum { N = 20000 };
+    fs_ivert *in = calloc(N, sizeof *in);
+    fs_pvert *a = calloc(N, sizeof *a), *b = calloc(N, sizeof *b);
+    REQUIRE(in && a && b);
+    uint32_t r = 12345;
+    const float odd[] = {0.0f, -0.0f, 1e30f, -1e30f, 1e-30f, INFINITY, -INFINITY, NAN};
+    for (int i = 0; i < N; i++) {
+        for (int k = 0; k < 4; k++) {
+            r = r * 1664525u + 1013904223u;
+            float v = ((float)(r >> 8) / 16777216.0f - 0.5f) * (k == 3 ? 2.0f : 40.0f);
+            in[i].obj[k] = (i % 97 == 0) ? odd[(i / 97 + k) % 8] : v;
+        }
+        if (i % 3)
+            in[i].obj[3] = 1.0f;
+        in[i].nrm[0] = 0.2f;
+        in[i].nrm[1] = 0.9f;
+        in[i].nrm[2] = 0.3f;
+        for (int k = 0; k < 4; k++)
+            in[i].col[k] = 0.5f;
+    }
+    fs_vs_setup s;
+    memset(&s, 0, sizeof s);
+    fs_vs_prepare(c, &s);
+    bool hw = s.has_fma;
+    s.has_fma = false;
+    fs_vs_process(&s, in, a, N, NULL);
+    s.has_fma = hw;
+    fs_vs_process(&s, in, b, N, NULL);
+    long differ = 0;
+    for (int i = 0; i < N; i++) {
+        bool same = a[i].mask == b[i].mask && same_floats(a[i].clip, b[i].clip, 4) && same_floats(a[i].win, b[i].win, 5) &&
+                    same_floats(a[i].col[0], b[i].col[0], 8);
+        differ += !same;
+    }
+    printf("    fma_variant_identical: %d vertices, hardware FMA %s, %ld differ\n", N, hw ? "yes" : "no", differ);
+    CHECK_EQ_INT(differ, 0);
+    free(in);
+    free(a);
+    free(b);
+    fs_context_destroy(c);
+}
+
 TEST_LIST = {
     TEST_ENTRY(matrix_defaults_and_products),
     TEST_ENTRY(rotate_matches_spec_formula),
@@ -817,6 +884,7 @@ TEST_LIST = {
     TEST_ENTRY(arrays_vs_osmesa),
     TEST_ENTRY(two_side_vs_osmesa),
     TEST_ENTRY(draw_arrays_100k_triangles),
+    TEST_ENTRY(fma_variant_identical),
     TEST_END,
 };
 
