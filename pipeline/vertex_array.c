@@ -154,10 +154,14 @@ static void fetch(const fs_client_array *a, size_t i, float out[4], bool norm)
     size_t stride = a->stride ? (size_t)a->stride : (size_t)esz * (size_t)a->size;
     const unsigned char *p = (const unsigned char *)a->pointer + i * stride;
     if (a->type == GL_FLOAT) {
-        /* The common case, and a copy: one memcpy instead of a switch per
-         * component. */
-        memcpy(out, p, 4 * (size_t)a->size);
-        return;
+        /* The common case, and a copy of constant size (inlined, unlike a
+         * memcpy of 4 * size bytes) instead of a switch per component. */
+        switch (a->size) {
+        case 4: memcpy(out, p, 16); return;
+        case 3: memcpy(out, p, 12); return;
+        case 2: memcpy(out, p, 8); return;
+        default: memcpy(out, p, 4); return;
+        }
     }
     for (int k = 0; k < a->size; k++) {
         float v;

@@ -737,8 +737,9 @@ void fs_cycle_triangle(fs_cycle *cy)
     uint64_t fe = cy->fe_frac >> 8;
     cy->fe_frac &= 255u;
     fs_cyc_stage *fst = cy->u[FS_U_front_end].st, *sst = cy->u[FS_U_setup].st;
-    uint64_t a = fs_cyc_step(fst, cy->cmd, fe, 0, false, sst);
-    a = fs_cyc_step(sst, a, fs_cyc_setup_cycles(&cy->cfg), 0, false, &cy->rtri);
+    uint64_t setup = fs_cyc_setup_cycles(&cy->cfg);
+    uint64_t a = step(fst, cy->cmd, fe, fe, 0, false, sst, 1);
+    a = step(sst, a, setup, setup, 0, false, &cy->rtri, 1);
     cy->tri_arrival = a;
     cy->tri_open = true;
     cy->tri_started = false;
