@@ -839,6 +839,17 @@ static int parse_backtrace(fs_trace_reader *r)
     return 0;
 }
 
+/* Argument u came with the leave event (an output) or the enter. */
+static inline void mark_arg(pending *p, uint64_t u, int leave)
+{
+    if (u < 64) {
+        if (leave)
+            p->call.out_args |= 1ull << u;
+        else
+            p->call.out_args &= ~(1ull << u);
+    }
+}
+
 static int parse_details(fs_trace_reader *r, pending *p, int leave, int follow_on_sig, uint64_t sig_id)
 {
     char hint[160];
@@ -858,12 +869,7 @@ static int parse_details(fs_trace_reader *r, pending *p, int leave, int follow_o
                                 (unsigned long long)u, p->call.name, p->call.nargs);
             if (parse_value(r, &p->a, &p->args[u], 0))
                 return -1;
-            if (u < 64) {
-                if (leave)
-                    p->call.out_args |= 1ull << u;
-                else
-                    p->call.out_args &= ~(1ull << u);
-            }
+            mark_arg(p, u, leave);
             break;
         }
         case CD_RET:
@@ -1235,12 +1241,7 @@ static inline __attribute__((always_inline)) int fast_details(fs_trace_reader *r
             if (!cur_uint(&q, end, &u) || u >= p->call.nargs ||
                 !fast_value(r, p, &p->a, &p->args[u], &q, end, leave ? 0 : FAST_ALLOC | FAST_ARRAY))
                 return 0;
-            if (u < 64) {
-                if (leave)
-                    p->call.out_args |= 1ull << u;
-                else
-                    p->call.out_args &= ~(1ull << u);
-            }
+            mark_arg(p, u, leave);
             break;
         case CD_RET:
             if (!fast_value(r, p, &p->a, &p->call.ret, &q, end, leave ? 0 : FAST_ALLOC | FAST_ARRAY))
