@@ -12,7 +12,7 @@ PKGS_CORE := osmesa snappy inih
 CFLAGS_BASE := -std=c11 -D_POSIX_C_SOURCE=200809L -g $(OPT) -Wall -Wextra -Werror \
 	-fno-strict-aliasing -Wno-missing-field-initializers -ffp-contract=off
 CFLAGS += $(CFLAGS_BASE) $(SAN)
-CXXFLAGS += -std=c++17 -g $(OPT) -Wall -Wextra -Werror $(SAN)
+CXXFLAGS += -std=c++17 -g $(OPT) -Wall -Wextra -Werror -ffp-contract=off $(SAN)
 LDFLAGS += $(SAN)
 PKG_LIBS = $(shell pkg-config --libs $(PKGS_CORE) 2>/dev/null || echo -lOSMesa -lsnappy -linih)
 OIIO_LIBS = $(shell pkg-config --libs OpenImageIO 2>/dev/null || echo -lOpenImageIO -lOpenImageIO_Util)

@@ -66,7 +66,10 @@ static void tri_attributes(const prim_ctx *p, size_t a, size_t b, size_t cc)
     if (!(v0->lazy | v1->lazy | v2->lazy) || (v0->mask & v1->mask & v2->mask))
         return;
     if ((v0->mask | v1->mask | v2->mask) == 0) {
-        /* Compares (a NaN makes the box NaN, which counts as sampled). */
+        /* Compares, not fminf/fmaxf (library calls).  A NaN in the first
+         * vertex makes the box NaN, which counts as sampled; one in another
+         * is dropped, which is harmless: the rasterizer culls a triangle
+         * with a NaN position before it reads a colour. */
         float x0 = lo3(v0->win[0], v1->win[0], v2->win[0]), x1 = hi3(v0->win[0], v1->win[0], v2->win[0]);
         float y0 = lo3(v0->win[1], v1->win[1], v2->win[1]), y1 = hi3(v0->win[1], v1->win[1], v2->win[1]);
         if (!fs_vs_box_sampled(fs_cycle_tile_sample(p->c->cycle), x0, y0, x1, y1))
