@@ -118,6 +118,27 @@ static fs_context *new_context(const fs_config *cfg, fs_cycle **cy, fs_cycle_mod
     return c;
 }
 
+/* Enters GL_BRIEF_OCCLUSION with T occlusion tiles, each the whole window. */
+#define MAX_TILES 13
+static void brief_occlusion_tiles(fs_context *c, int T)
+{
+    GLint tiles[MAX_TILES * 4];
+    GLsizei sizes[MAX_TILES];
+    static GLuint store[MAX_TILES][16];
+    GLuint *bufs[MAX_TILES];
+    if (T > MAX_TILES)
+        T = MAX_TILES;
+    for (int t = 0; t < T; t++) {
+        tiles[4 * t] = tiles[4 * t + 1] = 0;
+        tiles[4 * t + 2] = tiles[4 * t + 3] = WN;
+        sizes[t] = 16;
+        bufs[t] = store[t];
+    }
+    fsglScissors(c, T, tiles);
+    fsglOcclusionBuffers(c, sizes, bufs);
+    fsglRenderMode(c, GL_BRIEF_OCCLUSION);
+}
+
 TEST(occlusion_engines_ceil_t_over_e)
 {
     static const int T_list[] = {1, 3, 5, 8, 13};
@@ -129,19 +150,7 @@ TEST(occlusion_engines_ceil_t_over_e)
             cfg.occlusion_engines = E;
             fs_cycle *cy;
             fs_context *c = new_context(&cfg, &cy, FS_CYCLE_FULL);
-            GLint tiles[13 * 4];
-            GLsizei sizes[13];
-            static GLuint store[13][16];
-            GLuint *bufs[13];
-            for (int t = 0; t < T; t++) {
-                tiles[4 * t] = tiles[4 * t + 1] = 0;
-                tiles[4 * t + 2] = tiles[4 * t + 3] = WN;
-                sizes[t] = 16;
-                bufs[t] = store[t];
-            }
-            fsglScissors(c, T, tiles);
-            fsglOcclusionBuffers(c, sizes, bufs);
-            fsglRenderMode(c, GL_BRIEF_OCCLUSION);
+            brief_occlusion_tiles(c, T);
             const int x0 = 8, x1 = 40, y0 = 6, y1 = 31;
             fsglBegin(c, GL_QUADS);
             fsglVertex2f(c, ndc(x0), ndc(y0));
@@ -196,19 +205,7 @@ TEST(rendermode_drain)
         cfg.memory_latency = 0;
         fs_cycle *cy;
         fs_context *c = new_context(&cfg, &cy, FS_CYCLE_FULL);
-        GLint tiles[6 * 4];
-        GLsizei sizes[6];
-        static GLuint store[6][16];
-        GLuint *bufs[6];
-        for (int t = 0; t < T; t++) {
-            tiles[4 * t] = tiles[4 * t + 1] = 0;
-            tiles[4 * t + 2] = tiles[4 * t + 3] = WN;
-            sizes[t] = 16;
-            bufs[t] = store[t];
-        }
-        fsglScissors(c, T, tiles);
-        fsglOcclusionBuffers(c, sizes, bufs);
-        fsglRenderMode(c, GL_BRIEF_OCCLUSION);
+        brief_occlusion_tiles(c, T);
         fsglBegin(c, GL_POINTS);
         fsglVertex2f(c, (ndc(20) + ndc(21)) / 2, (ndc(9) + ndc(10)) / 2);
         fsglEnd(c);
