@@ -584,6 +584,21 @@ static int upload_grid(fs_context *c, const uint8_t *big, int n, int m, int tw, 
     return 0;
 }
 
+/* The square [lo, hi]^2 at z = 0 with texture coordinates 0..1. */
+static void tex_square(fs_context *c, float lo, float hi)
+{
+    fsglBegin(c, GL_QUADS);
+    fsglTexCoord2f(c, 0, 0);
+    fsglVertex3f(c, lo, lo, 0);
+    fsglTexCoord2f(c, 1, 0);
+    fsglVertex3f(c, hi, lo, 0);
+    fsglTexCoord2f(c, 1, 1);
+    fsglVertex3f(c, hi, hi, 0);
+    fsglTexCoord2f(c, 0, 1);
+    fsglVertex3f(c, lo, hi, 0);
+    fsglEnd(c);
+}
+
 static void draw_quad_mag(fs_context *c, GLenum min_filter, GLenum mag_filter, float tilt)
 {
     fsglViewport(c, 0, 0, 96, 96);
@@ -602,16 +617,7 @@ static void draw_quad_mag(fs_context *c, GLenum min_filter, GLenum mag_filter, f
     fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     fsglTexEnvi(c, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
     fsglEnable(c, GL_TEXTURE_2D);
-    fsglBegin(c, GL_QUADS);
-    fsglTexCoord2f(c, 0, 0);
-    fsglVertex3f(c, -1.8f, -1.8f, 0);
-    fsglTexCoord2f(c, 1, 0);
-    fsglVertex3f(c, 1.8f, -1.8f, 0);
-    fsglTexCoord2f(c, 1, 1);
-    fsglVertex3f(c, 1.8f, 1.8f, 0);
-    fsglTexCoord2f(c, 0, 1);
-    fsglVertex3f(c, -1.8f, 1.8f, 0);
-    fsglEnd(c);
+    tex_square(c, -1.8f, 1.8f);
     fsglDisable(c, GL_TEXTURE_2D);
 }
 
@@ -671,6 +677,39 @@ TEST(gl_quad_matches_ordinary_texture)
     free(big);
 }
 
+/* A 2 x 2 MP-Grid of 32 x 32 pyramids from a 64 x 64 image, bound as
+ * texture `name`, for the GL adaptation tests. */
+static int grid_2x2(fs_context *c, const uint8_t *big, GLuint name)
+{
+    fsglPixelStorei(c, GL_UNPACK_ALIGNMENT, 1);
+    fsglBindTexture(c, GL_TEXTURE_2D, name);
+    return upload_grid(c, big, 2, 2, 32, 32, 0);
+}
+
+/* Boxes in object space: pyramid (i, j) covers [i, i+1] x [j, j+1] of a
+ * 2 x 2 square. */
+static void unit_square_boxes(fs_context *c)
+{
+    for (int j = 0; j < 2; j++)
+        for (int i = 0; i < 2; i++) {
+            GLfloat box[6] = {(GLfloat)i, (GLfloat)j, 0, (GLfloat)i + 1, (GLfloat)j + 1, 0};
+            fsglMPGridBoundingBox(c, GL_TEXTURE_2D, i, j, box, GL_FALSE);
+        }
+}
+
+/* A 96 x 96 view of that square from `dist` away: each unit square is
+ * 96 * 2 / dist / 2 pixels wide. */
+static void camera_at(fs_context *c, float dist)
+{
+    fsglViewport(c, 0, 0, 96, 96);
+    fsglMatrixMode(c, GL_PROJECTION);
+    fsglLoadIdentity(c);
+    fsglFrustum(c, -1, 1, -1, 1, 2, 400);
+    fsglMatrixMode(c, GL_MODELVIEW);
+    fsglLoadIdentity(c);
+    fsglTranslatef(c, -1, -1, -dist);
+}
+
 /* Adaptation through the GL: a far-away viewer frees the fine levels and
  * the sampler substitutes the best resident one. */
 TEST(gl_adapt_and_substitute)
@@ -678,28 +717,15 @@ TEST(gl_adapt_and_substitute)
     fs_context *c = fs_context_create(NULL, 96, 96);
     REQUIRE(c);
     uint8_t *big = random_rgba(64, 64, 9);
-    fsglPixelStorei(c, GL_UNPACK_ALIGNMENT, 1);
-    fsglBindTexture(c, GL_TEXTURE_2D, 3);
-    REQUIRE(upload_grid(c, big, 2, 2, 32, 32, 0) == 0);
+    REQUIRE(big && grid_2x2(c, big, 3) == 0);
     GLint v = 0;
     fsglGetMPGridiv(c, GL_TEXTURE_2D, GL_MPGRID_BYTES_RESIDENT, &v);
     CHECK_EQ_INT(v, 4 * 4 * ((4 * 32 * 32 - 1) / 3)); /* everything resident at first */
     fsglGetMPGridiv(c, GL_TEXTURE_2D, GL_MPGRID_IMAGES_MISSING, &v);
     CHECK_EQ_INT(v, 0);
-    /* Boxes in object space: pyramid (i, j) covers [i, i+1] x [j, j+1]
-     * of a 2 x 2 square; the viewer far away. */
-    for (int j = 0; j < 2; j++)
-        for (int i = 0; i < 2; i++) {
-            GLfloat box[6] = {(GLfloat)i, (GLfloat)j, 0, (GLfloat)i + 1, (GLfloat)j + 1, 0};
-            fsglMPGridBoundingBox(c, GL_TEXTURE_2D, i, j, box, GL_FALSE);
-        }
-    fsglViewport(c, 0, 0, 96, 96);
-    fsglMatrixMode(c, GL_PROJECTION);
-    fsglLoadIdentity(c);
-    fsglFrustum(c, -1, 1, -1, 1, 2, 400);
-    fsglMatrixMode(c, GL_MODELVIEW);
-    fsglLoadIdentity(c);
-    fsglTranslatef(c, -1, -1, -96); /* each unit square: 96 * 2 / 96 / 2 = 1 px */
+    /* The viewer far away. */
+    unit_square_boxes(c);
+    camera_at(c, 96); /* each unit square: 96 * 2 / 96 / 2 = 1 px */
     fsglMPGridAdapt(c, GL_TEXTURE_2D);
     CHECK_EQ_INT(err(c), GL_NO_ERROR);
     fsglGetMPGridiv(c, GL_TEXTURE_2D, GL_MPGRID_BYTES_RESIDENT, &v);
@@ -715,16 +741,7 @@ TEST(gl_adapt_and_substitute)
     fsglEnable(c, GL_TEXTURE_2D);
     fsglLoadIdentity(c);
     fsglTranslatef(c, 0, 0, -4);
-    fsglBegin(c, GL_QUADS);
-    fsglTexCoord2f(c, 0, 0);
-    fsglVertex3f(c, -1, -1, 0);
-    fsglTexCoord2f(c, 1, 0);
-    fsglVertex3f(c, 1, -1, 0);
-    fsglTexCoord2f(c, 1, 1);
-    fsglVertex3f(c, 1, 1, 0);
-    fsglTexCoord2f(c, 0, 1);
-    fsglVertex3f(c, -1, 1, 0);
-    fsglEnd(c);
+    tex_square(c, -1, 1);
     fsglGetMPGridiv(c, GL_TEXTURE_2D, GL_MPGRID_SUBSTITUTIONS, &v);
     CHECK(v > 0);
     CHECK_EQ_UINT(c->stats.mpgrid_substitutions, (uint64_t)v);
@@ -733,19 +750,7 @@ TEST(gl_adapt_and_substitute)
     free(big);
 }
 
-static void unit_quad(fs_context *c)
-{
-    fsglBegin(c, GL_QUADS);
-    fsglTexCoord2f(c, 0, 0);
-    fsglVertex3f(c, 0, 0, 0);
-    fsglTexCoord2f(c, 1, 0);
-    fsglVertex3f(c, 2, 0, 0);
-    fsglTexCoord2f(c, 1, 1);
-    fsglVertex3f(c, 2, 2, 0);
-    fsglTexCoord2f(c, 0, 1);
-    fsglVertex3f(c, 0, 2, 0);
-    fsglEnd(c);
-}
+static void unit_quad(fs_context *c) { tex_square(c, 0, 2); }
 
 /* GL_MPGRID_AUTO_ADAPT: the grid adapts before texturing when the camera
  * changed, and only then; a NaN camera leaves it as it is. */
@@ -754,14 +759,8 @@ TEST(gl_auto_adapt)
     fs_context *c = fs_context_create(NULL, 96, 96);
     REQUIRE(c);
     uint8_t *big = random_rgba(64, 64, 11);
-    fsglPixelStorei(c, GL_UNPACK_ALIGNMENT, 1);
-    fsglBindTexture(c, GL_TEXTURE_2D, 4);
-    REQUIRE(upload_grid(c, big, 2, 2, 32, 32, 0) == 0);
-    for (int j = 0; j < 2; j++)
-        for (int i = 0; i < 2; i++) {
-            GLfloat box[6] = {(GLfloat)i, (GLfloat)j, 0, (GLfloat)i + 1, (GLfloat)j + 1, 0};
-            fsglMPGridBoundingBox(c, GL_TEXTURE_2D, i, j, box, GL_FALSE);
-        }
+    REQUIRE(big && grid_2x2(c, big, 4) == 0);
+    unit_square_boxes(c);
     fsglMPGridParameteri(c, GL_TEXTURE_2D, GL_MPGRID_AUTO_ADAPT, 2);
     CHECK_EQ_INT(err(c), GL_INVALID_VALUE);
     fsglMPGridParameteri(c, GL_TEXTURE_2D, GL_MPGRID_AUTO_ADAPT, GL_TRUE);
@@ -770,13 +769,7 @@ TEST(gl_auto_adapt)
     CHECK_EQ_INT(v, GL_TRUE);
     fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST_MIPMAP_NEAREST);
     fsglEnable(c, GL_TEXTURE_2D);
-    fsglViewport(c, 0, 0, 96, 96);
-    fsglMatrixMode(c, GL_PROJECTION);
-    fsglLoadIdentity(c);
-    fsglFrustum(c, -1, 1, -1, 1, 2, 400);
-    fsglMatrixMode(c, GL_MODELVIEW);
-    fsglLoadIdentity(c);
-    fsglTranslatef(c, -1, -1, -96); /* unit square ~1 px: only 1x1 levels */
+    camera_at(c, 96); /* unit square ~1 px: only 1x1 levels */
     unit_quad(c);
     fsglGetMPGridiv(c, GL_TEXTURE_2D, GL_MPGRID_BYTES_RESIDENT, &v);
     CHECK_EQ_INT(v, 4 * 4);
