@@ -271,9 +271,10 @@ void fs_cycle_destroy(fs_cycle *cy)
 
 static void resync_counters(fs_cycle *cy, const fs_context *c);
 
-/* The per-tile work of the error estimate, once the tile sample and the
- * screen are known (no estimate without memory for it). */
-static void tile_work_alloc(fs_cycle *cy)
+/* The per-screen tables of the tile sample, once it and the screen are
+ * known: the per-tile work of the error estimate (no estimate without
+ * memory for it) and the map of sampled tiles (the hash answers without). */
+static void tile_tables_alloc(fs_cycle *cy)
 {
     free(cy->tile_work);
     free(cy->tile_map);
@@ -317,7 +318,7 @@ static void set_tiles(fs_cycle *cy, uint32_t n)
     cy->kq = (double)cy->tiles.every;
     cy->tiles.step = st;
     cy->tiles.shift = sh;
-    tile_work_alloc(cy);
+    tile_tables_alloc(cy);
 }
 
 void fs_cycle_attach(fs_cycle *cy, fs_context *c)
@@ -326,7 +327,7 @@ void fs_cycle_attach(fs_cycle *cy, fs_context *c)
     resync_counters(cy, c);
     cy->fb_width = c->fb.width;
     cy->fb_height = c->fb.height;
-    tile_work_alloc(cy);
+    tile_tables_alloc(cy);
 }
 
 void fs_cycle_set_record_fn(fs_cycle *cy, fs_cycle_record_fn fn, void *user, bool draws)
