@@ -453,15 +453,10 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
 
     /* Sampled mode's tile sample: a triangle none of whose box's tiles is
      * sampled is charged its area and needs no attribute planes. */
-    const fs_cycle_tiles *ts = NULL;
-    if (c->cycle && !r->reference_path) {
-        ts = fs_cycle_tile_sample(c->cycle);
-        if (ts->every <= 1)
-            ts = NULL;
-        else if (!tile_sample_begin(c, ts, &e)) {
-            c->stats.triangles_rasterized++;
-            return;
-        }
+    const fs_cycle_tiles *ts = r->reference_path ? NULL : fs_cycle_tiles_active(c->cycle);
+    if (ts && !tile_sample_begin(c, ts, &e)) {
+        c->stats.triangles_rasterized++;
+        return;
     }
     /* Small triangles land on cold framebuffer lines: start fetching the
      * depth and colour rows now so the misses overlap the plane setup

@@ -383,8 +383,8 @@ const fs_cycle_tiles *fs_vs_tile_sample(const fs_context *c, GLenum mode)
 {
     if (!c->cycle || mode < GL_TRIANGLES || mode > GL_POLYGON)
         return NULL;
-    const fs_cycle_tiles *t = fs_cycle_tile_sample(c->cycle);
-    if (t->every <= 1 || c->raster.polygon_mode[0] != GL_FILL || c->raster.polygon_mode[1] != GL_FILL)
+    const fs_cycle_tiles *t = fs_cycle_tiles_active(c->cycle);
+    if (!t || c->raster.polygon_mode[0] != GL_FILL || c->raster.polygon_mode[1] != GL_FILL)
         return NULL;
     return t;
 }

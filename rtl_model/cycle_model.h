@@ -104,6 +104,12 @@ static inline bool fs_cycle_tile_sampled(const fs_cycle_tiles *t, uint32_t tx, u
         return t->map[(size_t)ty * t->map_w + tx];
     return fs_cycle_tile_hashed(t, tx, ty);
 }
+/* The tile sample when tile sampling is on, else NULL (cy may be NULL). */
+static inline const fs_cycle_tiles *fs_cycle_tiles_active(const fs_cycle *cy)
+{
+    const fs_cycle_tiles *t = cy ? fs_cycle_tile_sample(cy) : NULL;
+    return t && t->every > 1 ? t : NULL;
+}
 static inline bool fs_cycle_quad_skipped(const fs_cycle *cy, int x, int y)
 {
     const fs_cycle_tiles *t = fs_cycle_tile_sample(cy);
