@@ -617,10 +617,11 @@ static int run_diff(int argc, char **argv)
 /* `fragsim bench`: times the replay of a trace on one engine, so that
  * scripts/bench.sh can run the model, llvmpipe and softpipe in separate
  * processes (Mesa picks its driver once per process from GALLIUM_DRIVER). */
-/* Seconds to decode TRACE `repeat` times without executing a call: the
- * part of a bench replay no mode can avoid (its ceiling on speed-ups).
- * Negative when the trace cannot be read. */
-static double time_decode(const char *trace, const fs_replay_opts *ro, long repeat)
+/* Seconds to go through TRACE's calls `repeat` times without executing
+ * one (after fs_replay_open has decoded them): the part of a bench replay
+ * no mode can avoid (its ceiling on speed-ups).  Negative when the trace
+ * cannot be read. */
+static double time_floor(const char *trace, const fs_replay_opts *ro, long repeat)
 {
     double seconds = 0;
     char err[1024];
@@ -653,9 +654,10 @@ static int run_bench(int argc, char **argv)
             printf("usage: fragsim bench [--engine model|osmesa] [--repeat N] [--size WxH]\n"
                    "                     [--mode functional|cycle|sampled] [--config FILE] TRACE\n\n"
                    "Replays TRACE once untimed, then N times on one engine, and prints one JSON\nline: seconds of"
-                   " rendering (trace decoding included, the same for every engine),\n"
-                   "decode_seconds (N decodes alone: no engine can be faster), frames, and the\n"
-                   "model's fragment count.  `make bench` compares the engines.\n");
+                   " rendering (from the decoded calls), load_seconds (opening the\ntrace: decoding and"
+                   " validating it, the same for every engine), floor_seconds\n(going through the decoded"
+                   " calls without executing them: no engine can be\nfaster), frames, and the model's"
+                   " fragment count.  `make bench` compares the engines.\n");
             return 0;
         } else if (!strcmp(argv[i], "--engine") && i + 1 < argc) {
             engine = argv[++i];
@@ -697,7 +699,7 @@ static int run_bench(int argc, char **argv)
     fs_cycle_stats cstats, cframe;
     memset(&cstats, 0, sizeof cstats);
     double cerror = 0;
-    fs_replay_opts ro = {NULL, width, height};
+    fs_replay_opts ro = {NULL, width, height, 0};
     double seconds = 0;
     uint64_t fragments = 0, frames = 0;
     const char *renderer = "fragsim";
@@ -705,8 +707,12 @@ static int run_bench(int argc, char **argv)
     fs_osmesa *ref = NULL;
     /* Repetition -1 is an untimed warm-up: llvmpipe compiles its shader
      * variants with LLVM on first use, which is not rendering throughput. */
+    double load = 0;
     for (long rep = -1; rep < repeat; rep++) {
+        double tl = now_seconds();
         fs_replayer *r = fs_replay_open(trace, &ro, err, sizeof err);
+        if (rep >= 0)
+            load += now_seconds() - tl;
         if (!r) {
             fprintf(stderr, "%s: %s\n", prog, err);
             return 1;
@@ -775,10 +781,10 @@ static int run_bench(int argc, char **argv)
     }
     if (model)
         fragments = c->stats.fragments_generated; /* counted over every frame: stats reset only by replay */
-    double decode = time_decode(trace, &ro, repeat);
-    printf("{\"engine\": \"%s\", \"renderer\": \"%s\", \"seconds\": %.6f, \"decode_seconds\": %.6f, \"frames\": %llu, "
-           "\"fragments\": %llu, \"cycles\": %llu, \"estimated_cycles\": %llu, \"error_estimate\": %.6f}\n",
-           engine, renderer, seconds, decode, (unsigned long long)frames, (unsigned long long)fragments,
+    double floor_s = time_floor(trace, &ro, repeat);
+    printf("{\"engine\": \"%s\", \"renderer\": \"%s\", \"seconds\": %.6f, \"load_seconds\": %.6f, \"floor_seconds\": %.6f, "
+           "\"frames\": %llu, \"fragments\": %llu, \"cycles\": %llu, \"estimated_cycles\": %llu, \"error_estimate\": %.6f}\n",
+           engine, renderer, seconds, load, floor_s, (unsigned long long)frames, (unsigned long long)fragments,
            (unsigned long long)cstats.cycles, (unsigned long long)cstats.estimated_cycles, cerror);
     fs_cycle_destroy(cy);
     fs_context_destroy(c);

@@ -62,6 +62,13 @@ struct fs_replayer {
     /* Per call name of this pass, what next_call asks of it (name_info). */
     struct name_info *seen;
     size_t nseen, seen_cap;
+    /* Pass 1's decoded calls, replayed by pass 2 instead of decoding the
+     * file again (see "the decoded trace" below). */
+    fs_trace_reader *rec_tr; /* pass 1's reader, kept for its name strings */
+    struct rec_block *rec, *rec_last, *rec_at;
+    size_t rec_pos, rec_bytes, rec_max;
+    bool rec_on;   /* pass 1 is recording */
+    bool rec_read; /* pass 2 reads the record */
 };
 
 static const char *const swap_calls[] = {
@@ -467,7 +474,221 @@ static bool draw_is_safe(fs_replayer *r, const fs_call *call)
     return true;
 }
 
-/* ---- the two passes ---- */
+/* ---- the decoded trace, kept from pass 1 ----
+ *
+ * Pass 1 decodes every call anyway (to validate the trace and count its
+ * frames), so it keeps what pass 2 needs: per call its name and, for a GL
+ * command, the converted fs_call with copies of the data its pointers reach.
+ * Pass 2 then replays that record instead of decompressing and parsing the
+ * file a second time, which was as long as executing a small trace in
+ * sampled mode (docs/performance.md).  A record that would outgrow
+ * rec_max bytes is dropped, and pass 2 reads the file as before. */
+
+typedef struct rec_block {
+    struct rec_block *next;
+    size_t used, size;
+    _Alignas(16) unsigned char data[];
+} rec_block;
+
+/* One call, then 8 bytes per argument: the scalar (fs_arg's union), or for
+ * an argument with data its count and is_data, the data following the
+ * arguments.  Compact because pass 2 is bound by reading it from memory. */
+typedef struct rec_head {
+    const char *name; /* the pass-1 reader's string for the call's name */
+    uint32_t size;    /* of the whole entry, a multiple of 8 */
+    uint32_t flags;
+    uint16_t cmd;
+    uint16_t data;   /* bit k: argument k has data */
+    uint8_t nargs;
+    uint8_t unsafe;  /* a draw pass 2 skips: its client arrays are not in the trace */
+} rec_head;
+_Static_assert(FS_MAX_ARGS <= 16, "rec_head.data has a bit per argument");
+_Static_assert(sizeof(rec_head) % 8 == 0 && sizeof(fs_arg) == 16, "record layout");
+
+#define REC_ALIGN(n) (((n) + 7) & ~(size_t)7)
+#define REC_BLOCK (4u << 20)
+#define REC_MAX_DEFAULT ((size_t)1 << 30)
+
+static void rec_free(fs_replayer *r)
+{
+    while (r->rec) {
+        rec_block *n = r->rec->next;
+        free(r->rec);
+        r->rec = n;
+    }
+    r->rec_last = r->rec_at = NULL;
+    r->rec_pos = r->rec_bytes = 0;
+    r->rec_on = r->rec_read = false;
+}
+
+/* Bytes of the data argument k of `call` points to, or -1 when it points
+ * at none (a scalar, an output, an address in the traced program). */
+static int64_t rec_payload(const fs_call *call, int k)
+{
+    const fs_arg *a = &call->a[k];
+    int kind = fs_cmd_table[call->cmd].kinds[k];
+    if (!a->p)
+        return -1;
+    if (kind == FS_K_CPTR)
+        return a->is_data ? (int64_t)a->count : -1;
+    size_t es = fs_kind_elem_size(kind);
+    return es ? (int64_t)(es * a->count) : -1;
+}
+
+/* Appends a call (call NULL: a name fragsim cannot execute).  Out of
+ * memory, over rec_max, or given a call it cannot hold exactly, the record
+ * is dropped (pass 2 reads the file), not the replay. */
+static void rec_add(fs_replayer *r, const char *name, const fs_call *call, bool unsafe)
+{
+    int nargs = call && !unsafe ? call->nargs : 0;
+    size_t size = sizeof(rec_head) + 8 * (size_t)nargs;
+    for (int k = 0; k < nargs; k++) {
+        int64_t n = rec_payload(call, k);
+        if (n >= 0)
+            size += REC_ALIGN((size_t)n + 1); /* +1: a NUL, as the reader leaves after strings */
+        else if (call->a[k].count || call->a[k].is_data)
+            goto drop; /* not a plain scalar: would not round-trip through 8 bytes */
+    }
+    if (size > UINT32_MAX || r->rec_bytes + size > r->rec_max)
+        goto drop;
+    rec_block *b = r->rec_last;
+    if (!b || b->size - b->used < size) {
+        size_t bs = size > REC_BLOCK ? size : REC_BLOCK;
+        b = malloc(sizeof *b + bs);
+        if (!b)
+            goto drop;
+        b->next = NULL;
+        b->used = 0;
+        b->size = bs;
+        if (r->rec_last)
+            r->rec_last->next = b;
+        else
+            r->rec = b;
+        r->rec_last = b;
+    }
+    unsigned char *at = b->data + b->used;
+    rec_head *h = (rec_head *)at;
+    *h = (rec_head){name, (uint32_t)size, call ? call->flags : 0, call ? call->cmd : 0, 0, (uint8_t)nargs, unsafe};
+    unsigned char *slot = at + sizeof *h, *data = slot + 8 * (size_t)nargs;
+    for (int k = 0; k < nargs; k++, slot += 8) {
+        const fs_arg *a = &call->a[k];
+        int64_t n = rec_payload(call, k);
+        if (n < 0) {
+            memcpy(slot, &a->i, 8);
+            continue;
+        }
+        h->data |= (uint16_t)(1u << k);
+        memcpy(slot, &a->count, 4);
+        memcpy(slot + 4, &a->is_data, 4);
+        memcpy(data, a->p, (size_t)n);
+        data[n] = 0;
+        data += REC_ALIGN((size_t)n + 1);
+    }
+    b->used += size;
+    r->rec_bytes += size;
+    return;
+drop:
+    rec_free(r);
+}
+
+/* Pass 2 from the record: 1 with *ni, *unsafe and (for a command) *call
+ * set, 0 at the end. */
+static int rec_next(fs_replayer *r, fs_call *call, const struct name_info **ni, bool *unsafe)
+{
+    while (r->rec_at && r->rec_pos >= r->rec_at->used) {
+        r->rec_at = r->rec_at->next;
+        r->rec_pos = 0;
+    }
+    if (!r->rec_at)
+        return 0;
+    const unsigned char *at = r->rec_at->data + r->rec_pos;
+    const rec_head *h = (const rec_head *)at;
+    r->rec_pos += h->size;
+    if (!(*ni = name_info_of(r, h->name))) {
+        snprintf(r->err, sizeof r->err, "%s: out of memory", r->path);
+        return -1;
+    }
+    *unsafe = h->unsafe;
+    if ((*ni)->cmd < 0 || h->unsafe)
+        return 1;
+    for (int k = 0; k < FS_MAX_ARGS; k++)
+        memset(&call->a[k], 0, sizeof call->a[k]);
+    memset(&call->ret, 0, sizeof call->ret);
+    call->cmd = h->cmd;
+    call->nargs = h->nargs;
+    call->flags = h->flags;
+    const unsigned char *slot = at + sizeof *h, *data = slot + 8 * (size_t)h->nargs;
+    for (int k = 0; k < h->nargs; k++, slot += 8) {
+        fs_arg *a = &call->a[k];
+        if (!(h->data >> k & 1)) {
+            memcpy(&a->i, slot, 8);
+            continue;
+        }
+        memcpy(&a->count, slot, 4);
+        memcpy(&a->is_data, slot + 4, 4);
+        a->p = data;
+        data += REC_ALIGN((size_t)rec_payload(call, k) + 1);
+    }
+    return 1;
+}
+
+/* Decodes the next call from the file: 1 with *nip, *unsafe and, for a
+ * command, *call set; 0 at the end; -1 on error. */
+static int decode_next(fs_replayer *r, fs_call *call, bool pass1, const name_info **nip, bool *unsafe)
+{
+    fs_tcall tc;
+    arena_reset(r);
+    int got = fs_trace_next(r->tr, &tc);
+    if (got < 0) {
+        snprintf(r->err, sizeof r->err, "%s", fs_trace_error(r->tr));
+        return -1;
+    }
+    if (got == 0)
+        return 0;
+    const name_info *ni = name_info_of(r, tc.name);
+    if (!ni) {
+        snprintf(r->err, sizeof r->err, "%s: out of memory", r->path);
+        return -1;
+    }
+    *nip = ni;
+    *unsafe = false;
+    if (pass1) {
+        r->info.calls++;
+        r->p1_swaps += ni->swap;
+        r->p1_named += ni->user_end;
+    }
+    int cmd = ni->cmd;
+    if (cmd < 0) {
+        if (r->rec_on)
+            rec_add(r, tc.name, NULL, false);
+        return 1;
+    }
+    if (pass1 && cmd == FS_CMD_Finish)
+        r->p1_finishes++;
+    if (pass1 && (cmd == FS_CMD_BeginQuery || cmd == FS_CMD_BeginQueryARB))
+        r->info.uses_queries = true;
+    if (convert(r, &tc, cmd, call) != 0)
+        return -1;
+    if (pass1 && cmd == FS_CMD_Viewport && r->info.width == 0) {
+        int64_t w = call->a[0].i + call->a[2].i, h = call->a[1].i + call->a[3].i;
+        if (w > 0 && h > 0 && w <= 16384 && h <= 16384) {
+            r->info.width = (int)w;
+            r->info.height = (int)h;
+        }
+    }
+    int slot = array_slot(cmd);
+    if (slot >= 0 && track_pointer(r, &tc, call, slot) != 0)
+        return -1;
+    if (cmd == FS_CMD_EnableClientState || cmd == FS_CMD_DisableClientState) {
+        int s = client_state_slot((GLenum)call->a[0].i);
+        if (s >= 0)
+            r->arr[s].enabled = cmd == FS_CMD_EnableClientState;
+    }
+    *unsafe = (fs_cmd_table[cmd].flags & FS_F_DRAW) && !draw_is_safe(r, call);
+    if (r->rec_on)
+        rec_add(r, tc.name, call, *unsafe);
+    return 1;
+}
 
 /* Reads the next call the model can execute (skipping and counting the
  * rest).  Returns 1 with *call set, 2 for a frame-end call that is not a GL
@@ -475,59 +696,23 @@ static bool draw_is_safe(fs_replayer *r, const fs_call *call)
 static int next_call(fs_replayer *r, fs_call *call, bool pass1)
 {
     for (;;) {
-        fs_tcall tc;
-        arena_reset(r);
-        int got = fs_trace_next(r->tr, &tc);
-        if (got < 0) {
-            snprintf(r->err, sizeof r->err, "%s", fs_trace_error(r->tr));
-            return -1;
-        }
-        if (got == 0)
-            return 0;
-        const name_info *ni = name_info_of(r, tc.name);
-        if (!ni) {
-            snprintf(r->err, sizeof r->err, "%s: out of memory", r->path);
-            return -1;
-        }
-        if (pass1) {
-            r->info.calls++;
-            r->p1_swaps += ni->swap;
-            r->p1_named += ni->user_end;
-        }
-        int cmd = ni->cmd;
+        const name_info *ni;
+        bool unsafe;
+        int got = r->rec_read ? rec_next(r, call, &ni, &unsafe) : decode_next(r, call, pass1, &ni, &unsafe);
+        if (got <= 0)
+            return got;
         bool ends_frame = !pass1 && (r->frame_end_is_swap ? ni->swap : ni->frame_end);
-        if (cmd < 0) {
+        if (ni->cmd < 0) {
             if (!pass1)
-                count_skip(r, tc.name, ni->winsys ? SKIP_WINSYS : SKIP_UNKNOWN);
+                count_skip(r, ni->name, ni->winsys ? SKIP_WINSYS : SKIP_UNKNOWN);
             if (ends_frame)
                 return 2;
             continue;
         }
-        if (pass1 && cmd == FS_CMD_Finish)
-            r->p1_finishes++;
-        if (pass1 && (cmd == FS_CMD_BeginQuery || cmd == FS_CMD_BeginQueryARB))
-            r->info.uses_queries = true;
-        if (convert(r, &tc, cmd, call) != 0)
-            return -1;
-        if (pass1 && cmd == FS_CMD_Viewport && r->info.width == 0) {
-            int64_t w = call->a[0].i + call->a[2].i, h = call->a[1].i + call->a[3].i;
-            if (w > 0 && h > 0 && w <= 16384 && h <= 16384) {
-                r->info.width = (int)w;
-                r->info.height = (int)h;
-            }
-        }
-        int slot = array_slot(cmd);
-        if (slot >= 0 && track_pointer(r, &tc, call, slot) != 0)
-            return -1;
-        if (cmd == FS_CMD_EnableClientState || cmd == FS_CMD_DisableClientState) {
-            int s = client_state_slot((GLenum)call->a[0].i);
-            if (s >= 0)
-                r->arr[s].enabled = cmd == FS_CMD_EnableClientState;
-        }
-        if ((fs_cmd_table[cmd].flags & FS_F_DRAW) && !draw_is_safe(r, call)) {
+        if (unsafe) {
             if (!pass1) {
                 char what[96];
-                snprintf(what, sizeof what, "%s (client arrays not recorded in the trace)", tc.name);
+                snprintf(what, sizeof what, "%s (client arrays not recorded in the trace)", ni->name);
                 count_skip(r, what, SKIP_UNSAFE);
             }
             continue;
@@ -570,8 +755,11 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
     }
     if (!start_pass(r, err, errlen))
         return NULL;
-    /* Pass 1: validate everything, count frame ends, find the window size. */
+    /* Pass 1: validate everything, count frame ends, find the window size,
+     * and keep the decoded calls for pass 2. */
     r->user_frame_end = opts ? opts->frame_end : NULL;
+    r->rec_max = opts && opts->max_record_bytes ? opts->max_record_bytes : REC_MAX_DEFAULT;
+    r->rec_on = true;
     fs_call call;
     int got;
     while ((got = next_call(r, &call, true)) > 0)
@@ -583,7 +771,15 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
     }
     if (fs_trace_warning(r->tr))
         snprintf(r->info.warning, sizeof r->info.warning, "%s", fs_trace_warning(r->tr));
-    fs_trace_close(r->tr);
+    if (r->rec_on) {
+        r->rec_on = false;
+        r->rec_read = true;
+        r->rec_at = r->rec;
+        r->rec_pos = 0;
+        r->rec_tr = r->tr; /* the record points at its name strings */
+    } else {
+        fs_trace_close(r->tr);
+    }
     r->tr = NULL;
     reset_arrays(r);
     r->pending_frame_end = false;
@@ -611,6 +807,10 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
         snprintf(err, errlen, "%s: no glViewport in the trace to take the window size from; give --size WxH", path);
         fs_replay_close(r);
         return NULL;
+    }
+    if (r->rec_read) {
+        forget_names(r); /* frame_end of each name is known only now */
+        return r;
     }
     return start_pass(r, err, errlen);
 }
@@ -686,6 +886,9 @@ void fs_replay_close(fs_replayer *r)
         return;
     if (r->tr)
         fs_trace_close(r->tr);
+    rec_free(r);
+    if (r->rec_tr)
+        fs_trace_close(r->rec_tr);
     reset_arrays(r);
     for (size_t i = 0; i < r->nskips; i++)
         free(r->skips[i].name);

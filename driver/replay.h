@@ -5,7 +5,8 @@
  *
  * The trace is read twice: a first pass validates the whole file, finds the
  * frame boundaries and the window size, so a malformed trace is reported
- * before any image is written.
+ * before any image is written.  The first pass keeps the decoded calls
+ * (fs_replay_opts.max_record_bytes), and the second replays them from memory.
  */
 #ifndef FS_REPLAY_H
 #define FS_REPLAY_H
@@ -17,6 +18,9 @@
 typedef struct fs_replay_opts {
     const char *frame_end; /* call name that ends a frame, or NULL for automatic */
     int width, height;     /* 0: from the first glViewport */
+    /* Pass 1 keeps the decoded calls for pass 2 up to this many bytes
+     * (0: 1 GiB); a longer trace is read from the file twice. */
+    size_t max_record_bytes;
 } fs_replay_opts;
 
 typedef struct fs_replay_info {

@@ -67,12 +67,43 @@ typedef struct run_result {
     char skipped[4096];
     uint64_t skipped_total;
     int width, height;
+    uint64_t digest; /* of every event: commands, arguments, the data they point to */
 } run_result;
 
-static void run(const char *path, const char *frame_end, run_result *res)
+static uint64_t mix(uint64_t h, const void *p, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        h = (h ^ ((const unsigned char *)p)[i]) * 1099511628211ull; /* FNV-1a */
+    return h;
+}
+
+static uint64_t event_digest(uint64_t h, fs_replay_event ev, const fs_call *c)
+{
+    h = mix(h, &ev, sizeof ev);
+    if (ev != FS_REPLAY_CALL)
+        return h;
+    h = mix(h, &c->cmd, sizeof c->cmd);
+    h = mix(h, &c->nargs, sizeof c->nargs);
+    h = mix(h, &c->flags, sizeof c->flags);
+    for (int k = 0; k < FS_MAX_ARGS; k++) {
+        const fs_arg *a = &c->a[k];
+        int kind = k < c->nargs ? fs_cmd_table[c->cmd].kinds[k] : -1;
+        size_t es = kind >= 0 ? fs_kind_elem_size(kind) : 0;
+        size_t bytes = kind == FS_K_CPTR && a->is_data ? a->count : es * a->count;
+        h = mix(h, &a->count, sizeof a->count);
+        h = mix(h, &a->is_data, sizeof a->is_data);
+        if ((es || (kind == FS_K_CPTR && a->is_data)) && a->p)
+            h = mix(h, a->p, bytes); /* where the data lives may differ, not what it is */
+        else
+            h = mix(h, &a->i, sizeof a->i);
+    }
+    return mix(h, &c->ret, sizeof c->ret);
+}
+
+static void run_once(const char *path, const char *frame_end, size_t max_record, run_result *res)
 {
     memset(res, 0, sizeof *res);
-    fs_replay_opts o = {frame_end, 0, 0};
+    fs_replay_opts o = {frame_end, 0, 0, max_record};
     fs_replayer *r = fs_replay_open(path, &o, res->err, sizeof res->err);
     if (!r) {
         res->error = 1;
@@ -90,6 +121,7 @@ static void run(const char *path, const char *frame_end, run_result *res)
         }
         if (ev == FS_REPLAY_CALL) res->calls++;
         if (ev == FS_REPLAY_FRAME_END) res->frames++;
+        res->digest = event_digest(res->digest, ev, &c);
     }
     FILE *m = fmemopen(res->skipped, sizeof res->skipped - 1, "w");
     if (m) {
@@ -98,6 +130,22 @@ static void run(const char *path, const char *frame_end, run_result *res)
     }
     res->skipped_total = fs_replay_skipped_total(r);
     fs_replay_close(r);
+}
+
+/* Replays twice: pass 2 from pass 1's record of decoded calls (the default)
+ * and, with a record limit of one byte, from the file; both must give the
+ * same events, arguments and data. */
+static void run(check_state *check_st_, const char *path, const char *frame_end, run_result *res)
+{
+    run_result file;
+    run_once(path, frame_end, 1, &file);
+    run_once(path, frame_end, 0, res);
+    CHECK_EQ_INT(res->error, file.error);
+    CHECK_EQ_INT(res->calls, file.calls);
+    CHECK_EQ_INT(res->frames, file.frames);
+    CHECK(res->digest == file.digest);
+    CHECK_STR(res->skipped, file.skipped);
+    CHECK_STR(res->err, file.err);
 }
 
 TEST(frames_from_swaps_and_size_from_viewport)
@@ -113,14 +161,14 @@ TEST(frames_from_swaps_and_size_from_viewport)
     }
     REQUIRE(fs_trace_finish(t.w) == 0);
     run_result r;
-    run(t.path, NULL, &r);
+    run(check_st_, t.path, NULL, &r);
     CHECK_EQ_INT(r.error, 0);
     CHECK_EQ_INT(r.frames, 3);
     CHECK_EQ_INT(r.width, 64);
     CHECK_EQ_INT(r.height, 48);
     CHECK(strstr(r.skipped, "glXSwapBuffers") != NULL);
     CHECK_EQ_UINT(r.skipped_total, 0); /* window-system calls are not "unsupported" */
-    run(t.path, "glFinish", &r);
+    run(check_st_, t.path, "glFinish", &r);
     CHECK_EQ_INT(r.frames, 3);
     unlink(t.path);
 }
@@ -136,7 +184,7 @@ TEST(frames_from_glfinish_without_swaps)
     }
     REQUIRE(fs_trace_finish(t.w) == 0);
     run_result r;
-    run(t.path, NULL, &r);
+    run(check_st_, t.path, NULL, &r);
     CHECK_EQ_INT(r.error, 0);
     CHECK_EQ_INT(r.frames, 4);
     unlink(t.path);
@@ -154,7 +202,7 @@ TEST(unknown_calls_are_counted_by_name)
     triangle(&t);
     REQUIRE(fs_trace_finish(t.w) == 0);
     run_result r;
-    run(t.path, NULL, &r);
+    run(check_st_, t.path, NULL, &r);
     CHECK_EQ_INT(r.error, 0);
     CHECK(strstr(r.skipped, "\"glFogf\": {\"count\": 2") != NULL);
     CHECK(strstr(r.skipped, "glNoSuchCall") != NULL);
@@ -186,7 +234,7 @@ TEST(draw_without_recorded_arrays_is_refused)
     call(&t, "glDrawArrays", 3, d, 0);
     REQUIRE(fs_trace_finish(t.w) == 0);
     run_result r;
-    run(t.path, NULL, &r);
+    run(check_st_, t.path, NULL, &r);
     CHECK_EQ_INT(r.error, 0);
     CHECK(strstr(r.skipped, "glDrawArrays (client arrays not recorded in the trace)\": {\"count\": 2") != NULL);
     unlink(t.path);
@@ -207,7 +255,7 @@ TEST(short_array_argument_is_malformed)
     triangle(&t);
     REQUIRE(fs_trace_finish(t.w) == 0);
     run_result r;
-    run(t.path, NULL, &r);
+    run(check_st_, t.path, NULL, &r);
     CHECK_EQ_INT(r.error, 1); /* found by the first pass: nothing executed */
     CHECK(strstr(r.err, "glLoadMatrixf") != NULL);
     CHECK(strstr(r.err, "offset") != NULL);
@@ -221,9 +269,64 @@ TEST(no_viewport_and_no_size_is_an_error)
     triangle(&t);
     REQUIRE(fs_trace_finish(t.w) == 0);
     run_result r;
-    run(t.path, NULL, &r);
+    run(check_st_, t.path, NULL, &r);
     CHECK_EQ_INT(r.error, 1);
     CHECK(strstr(r.err, "--size") != NULL);
+    unlink(t.path);
+}
+
+/* Every kind of argument pass 2 takes from pass 1's record: scalars,
+ * arrays decoded into C arrays, blobs (vertex data, an image), an
+ * address never read, a string, unknown calls and skipped draws. */
+TEST(record_replays_what_the_file_holds)
+{
+    tb t;
+    REQUIRE(tb_open(&t, "record") == 0);
+    viewport(&t, 32, 32);
+    fs_tval elems[16];
+    for (int i = 0; i < 16; i++)
+        elems[i] = fval(i == 0 || i == 5 || i == 10 || i == 15 ? 1 : 0.25 * i);
+    fs_tval m;
+    memset(&m, 0, sizeof m);
+    m.type = FS_TV_ARRAY;
+    m.arr.elems = elems;
+    m.arr.n = 16;
+    call(&t, "glLoadMatrixf", 1, &m, 0);
+    static const float verts[9] = {-1, -1, 0, 1, -1, 0, 0, 1, 0};
+    static const unsigned char texels[4 * 4 * 4] = {1, 2, 3, 4, 5, 6, 7, 8, 9};
+    for (int f = 0; f < 2; f++) {
+        fs_tval vp[4] = {ival(3), eval(GL_FLOAT, "GL_FLOAT"), ival(0), ival(0)};
+        vp[3].type = FS_TV_BLOB;
+        vp[3].str.ptr = (const char *)verts;
+        vp[3].str.len = f ? sizeof verts : 0; /* an empty blob: the draw is then refused */
+        call(&t, "glVertexPointer", 4, vp, 1);
+        fs_tval e = eval(GL_VERTEX_ARRAY, "GL_VERTEX_ARRAY");
+        call(&t, "glEnableClientState", 1, &e, 0);
+        fs_tval d[3] = {eval(GL_TRIANGLES, "GL_TRIANGLES"), ival(0), ival(3)};
+        call(&t, "glDrawArrays", 3, d, 0);
+        fs_tval ti[9] = {eval(GL_TEXTURE_2D, "GL_TEXTURE_2D"), ival(0), ival(GL_RGBA), ival(4), ival(4), ival(0),
+                         eval(GL_RGBA, "GL_RGBA"), eval(GL_UNSIGNED_BYTE, "GL_UNSIGNED_BYTE"), ival(0)};
+        ti[8].type = FS_TV_BLOB;
+        ti[8].str.ptr = (const char *)texels;
+        ti[8].str.len = sizeof texels;
+        call(&t, "glTexImage2D", 9, ti, 0);
+        fs_tval s;
+        memset(&s, 0, sizeof s);
+        s.type = FS_TV_STRING;
+        s.str.ptr = "frame";
+        s.str.len = 5;
+        call(&t, "glStringMarkerGREMEDY", 1, &s, 0);
+        triangle(&t);
+        fs_tval a[2] = {ival(0), ival(0)};
+        call(&t, "glXSwapBuffers", 2, a, 0);
+    }
+    REQUIRE(fs_trace_finish(t.w) == 0);
+    run_result r;
+    run(check_st_, t.path, NULL, &r);
+    CHECK_EQ_INT(r.error, 0);
+    CHECK_EQ_INT(r.frames, 2);
+    CHECK(strstr(r.skipped, "glDrawArrays (client arrays not recorded in the trace)\": {\"count\": 1") != NULL);
+    CHECK(strstr(r.skipped, "glStringMarkerGREMEDY") != NULL);
     unlink(t.path);
 }
 
@@ -234,6 +337,7 @@ TEST_LIST = {
     TEST_ENTRY(draw_without_recorded_arrays_is_refused),
     TEST_ENTRY(short_array_argument_is_malformed),
     TEST_ENTRY(no_viewport_and_no_size_is_an_error),
+    TEST_ENTRY(record_replays_what_the_file_holds),
     TEST_END,
 };
 
