@@ -69,6 +69,7 @@ struct fs_replayer {
     size_t rec_pos, rec_bytes, rec_max;
     bool rec_on;   /* pass 1 is recording */
     bool rec_read; /* pass 2 reads the record */
+    struct name_info *cmd_info; /* pass 2 from the record: name_info per command */
 };
 
 static const char *const swap_calls[] = {
@@ -148,6 +149,16 @@ static size_t seen_slot(const name_info *t, size_t cap, const char *name)
     return j;
 }
 
+static void name_info_fill(const fs_replayer *r, name_info *ni, const char *name, int cmd)
+{
+    ni->name = name;
+    ni->cmd = cmd;
+    ni->swap = is_swap(name);
+    ni->winsys = is_winsys(name);
+    ni->user_end = r->user_frame_end && !strcmp(name, r->user_frame_end);
+    ni->frame_end = !strcmp(name, r->info.frame_end);
+}
+
 static const name_info *name_info_of(fs_replayer *r, const char *name)
 {
     if (r->seen_cap) {
@@ -168,12 +179,7 @@ static const name_info *name_info_of(fs_replayer *r, const char *name)
         r->seen_cap = cap;
     }
     name_info *ni = &r->seen[seen_slot(r->seen, r->seen_cap, name)];
-    ni->name = name;
-    ni->cmd = lookup(r, name);
-    ni->swap = is_swap(name);
-    ni->winsys = is_winsys(name);
-    ni->user_end = r->user_frame_end && !strcmp(name, r->user_frame_end);
-    ni->frame_end = !strcmp(name, r->info.frame_end);
+    name_info_fill(r, ni, name, lookup(r, name));
     r->nseen++;
     return ni;
 }
@@ -497,7 +503,7 @@ typedef struct rec_head {
     const char *name; /* the pass-1 reader's string for the call's name */
     uint32_t size;    /* of the whole entry, a multiple of 8 */
     uint32_t flags;
-    uint16_t cmd;
+    uint16_t cmd;    /* REC_NOT_CMD: a name fragsim cannot execute */
     uint16_t data;   /* bit k: argument k has data */
     uint8_t nargs;
     uint8_t unsafe;  /* a draw pass 2 skips: its client arrays are not in the trace */
@@ -506,6 +512,8 @@ _Static_assert(FS_MAX_ARGS <= 16, "rec_head.data has a bit per argument");
 _Static_assert(sizeof(rec_head) % 8 == 0 && sizeof(fs_arg) == 16, "record layout");
 
 #define REC_ALIGN(n) (((n) + 7) & ~(size_t)7)
+#define REC_NOT_CMD 0xffffu
+_Static_assert(FS_CMD_COUNT < REC_NOT_CMD, "rec_head.cmd holds every command");
 #define REC_BLOCK (4u << 20)
 #define REC_MAX_DEFAULT ((size_t)1 << 30)
 
@@ -568,7 +576,7 @@ static void rec_add(fs_replayer *r, const char *name, const fs_call *call, bool 
     }
     unsigned char *at = b->data + b->used;
     rec_head *h = (rec_head *)at;
-    *h = (rec_head){name, (uint32_t)size, call ? call->flags : 0, call ? call->cmd : 0, 0, (uint8_t)nargs, unsafe};
+    *h = (rec_head){name, (uint32_t)size, call ? call->flags : 0, call ? call->cmd : REC_NOT_CMD, 0, (uint8_t)nargs, unsafe};
     unsigned char *slot = at + sizeof *h, *data = slot + 8 * (size_t)nargs;
     for (int k = 0; k < nargs; k++, slot += 8) {
         const fs_arg *a = &call->a[k];
@@ -604,7 +612,10 @@ static int rec_next(fs_replayer *r, fs_call *call, const struct name_info **ni, 
     const unsigned char *at = r->rec_at->data + r->rec_pos;
     const rec_head *h = (const rec_head *)at;
     r->rec_pos += h->size;
-    if (!(*ni = name_info_of(r, h->name))) {
+    /* A command's name_info from its number: no hash lookup per call. */
+    if (h->cmd != REC_NOT_CMD)
+        *ni = &r->cmd_info[h->cmd];
+    else if (!(*ni = name_info_of(r, h->name))) {
         snprintf(r->err, sizeof r->err, "%s: out of memory", r->path);
         return -1;
     }
@@ -810,6 +821,13 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
     }
     if (r->rec_read) {
         forget_names(r); /* frame_end of each name is known only now */
+        if (!(r->cmd_info = calloc(FS_CMD_COUNT, sizeof *r->cmd_info))) {
+            snprintf(err, errlen, "%s: out of memory", path);
+            fs_replay_close(r);
+            return NULL;
+        }
+        for (int i = 0; i < FS_CMD_COUNT; i++)
+            name_info_fill(r, &r->cmd_info[i], fs_cmd_table[i].name, i);
         return r;
     }
     return start_pass(r, err, errlen);
@@ -887,6 +905,7 @@ void fs_replay_close(fs_replayer *r)
     if (r->tr)
         fs_trace_close(r->tr);
     rec_free(r);
+    free(r->cmd_info);
     if (r->rec_tr)
         fs_trace_close(r->rec_tr);
     reset_arrays(r);
