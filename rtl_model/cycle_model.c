@@ -448,7 +448,10 @@ static void spread_item(fs_cycle *cy, const fs_cyc_pool *p, int e, double q)
         fifo_push(&cy->rtri.in, arr > rs->free ? arr : rs->free);
         cy->tri_started = true;
     }
-    uint64_t m = (uint64_t)llround(q);
+    /* llround for q >= 0 (half away from zero), inline: a libm call per
+     * triangle showed in the profile.  q - floor(q) is exact below 2^52. */
+    double qf = floor(q);
+    uint64_t m = (uint64_t)qf + (q - qf >= 0.5);
     if (m < 1)
         m = 1;
     uint64_t r = take(cy, FS_CARRY_raster, p->raster * per);
