@@ -11,7 +11,7 @@
 #include "../driver/replay.h"
 #include "../driver/trace.h"
 
-#define MAXV 8
+#define MAXV 10
 
 typedef struct tb {
     fs_trace_writer *w;
@@ -32,7 +32,7 @@ static fs_tval eval(int64_t v, const char *name) { fs_tval x = ival(v); x.type =
 
 static void call(tb *t, const char *name, int n, const fs_tval *args, uint32_t flags)
 {
-    static const char *const argnames[MAXV] = {"a", "b", "c", "d", "e", "f", "g", "h"};
+    static const char *const argnames[MAXV] = {"a", "b", "c", "d", "e", "f", "g", "h", "i", "j"};
     fs_tcall c;
     memset(&c, 0, sizeof c);
     c.name = name;
