@@ -85,50 +85,61 @@ static void interp(const fs_vs_setup *s, cvert *d, float t, const cvert *out, co
             d->col[1][k] = LERP(t, out->col[1][k], in->col[1][k]);
 }
 
-static void to_rvertex(fs_rvertex *r, const cvert *v, const float *col)
+static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const float *tc)
 {
-    r->x = v->win[0];
-    r->y = v->win[1];
-    r->z = v->win[2];
-    r->inv_w = v->win[3];
-    r->y_raster = v->win[4];
+    r->x = win[0];
+    r->y = win[1];
+    r->z = win[2];
+    r->inv_w = win[3];
+    r->y_raster = win[4];
     memcpy(r->color, col, sizeof r->color);
-    memcpy(r->tex, v->tc, sizeof r->tex);
+    memcpy(r->tex, tc, sizeof r->tex);
 }
 
 /* Facing decides which colour two-sided lighting uses (2.14.1); the
  * rasterizer repeats the test on snapped positions for culling. */
-static int back_side(const fs_context *c, const cvert *a, const cvert *b, const cvert *d)
+static int back_side(const fs_context *c, const float *a, const float *b, const float *d)
 {
-    float det = (a->win[0] - d->win[0]) * (b->win[1] - d->win[1]) - (b->win[0] - d->win[0]) * (a->win[1] - d->win[1]);
+    float det = (a[0] - d[0]) * (b[1] - d[1]) - (b[0] - d[0]) * (a[1] - d[1]);
     bool ccw = det > 0.0f;
     bool front = c->raster.front_face == GL_CCW ? ccw : !ccw;
     return front ? 0 : 1;
 }
 
-static void emit3(fs_context *c, const fs_vs_setup *s, const cvert *a, const cvert *b, const cvert *d,
-                  const float *flat_col2)
+/* One triangle to the rasterizer from each vertex's window position,
+ * colours (front then back, 8 floats) and texture coordinates. */
+static void emit3(fs_context *c, const fs_vs_setup *s, const float *const win[3], const float *const col[3],
+                  const float *const tc[3], const float *flat_col2)
 {
-    int side = s->two_side ? back_side(c, a, b, d) : 0;
+    int side = s->two_side ? back_side(c, win[0], win[1], win[2]) : 0;
     fs_rvertex r[3];
-    const cvert *v[3] = {a, b, d};
     for (int i = 0; i < 3; i++)
-        to_rvertex(&r[i], v[i], flat_col2 ? flat_col2 + 4 * side : v[i]->col[side]);
+        to_rvertex(&r[i], win[i], (flat_col2 ? flat_col2 : col[i]) + 4 * side, tc[i]);
     fs_vs_impl *vi = fs_vs(c);
     if (vi->tri_hook)
         vi->tri_hook(vi->hook_user, &r[0], &r[1], &r[2]);
     fs_raster_triangle(c, &r[0], &r[1], &r[2]);
 }
 
+static void emit_cverts(fs_context *c, const fs_vs_setup *s, const cvert *a, const cvert *b, const cvert *d,
+                        const float *flat_col2)
+{
+    const float *const win[3] = {a->win, b->win, d->win};
+    const float *const col[3] = {a->col[0], b->col[0], d->col[0]};
+    const float *const tc[3] = {a->tc, b->tc, d->tc};
+    emit3(c, s, win, col, tc, flat_col2);
+}
+
+/* An unclipped triangle goes straight from its fs_pverts, without cvert
+ * copies: in sampled mode most triangles are only snapped and charged. */
 void fs_emit_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
                       const fs_pvert *v1, const fs_pvert *v2, int provoking)
 {
-    cvert a, b, d;
-    from_pvert(&a, v0);
-    from_pvert(&b, v1);
-    from_pvert(&d, v2);
     const fs_pvert *pv[3] = {v0, v1, v2};
-    emit3(c, s, &a, &b, &d, provoking >= 0 ? &pv[provoking]->col[0][0] : NULL);
+    const float *const win[3] = {v0->win, v1->win, v2->win};
+    const float *const col[3] = {v0->col[0], v1->col[0], v2->col[0]};
+    const float *const tc[3] = {v0->tc, v1->tc, v2->tc};
+    emit3(c, s, win, col, tc, provoking >= 0 ? pv[provoking]->col[0] : NULL);
 }
 
 #define MAX_CLIPPED 16
@@ -214,14 +225,14 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
     /* Emitted as a fan with the first vertex last, as Mesa's clipper does
      * for the last-vertex convention. */
     for (unsigned i = 2; i < n; i++)
-        emit3(c, s, in[i - 1], in[i], in[0], provoking >= 0 ? &flat[0][0] : NULL);
+        emit_cverts(c, s, in[i - 1], in[i], in[0], provoking >= 0 ? &flat[0][0] : NULL);
 }
 
 static void emit_line2(fs_context *c, const cvert *a, const cvert *b, const float *flat)
 {
     fs_rvertex r[2];
-    to_rvertex(&r[0], a, flat ? flat : a->col[0]);
-    to_rvertex(&r[1], b, flat ? flat : b->col[0]);
+    to_rvertex(&r[0], a->win, flat ? flat : a->col[0], a->tc);
+    to_rvertex(&r[1], b->win, flat ? flat : b->col[0], b->tc);
     fs_raster_line(c, &r[0], &r[1]);
 }
 
