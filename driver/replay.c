@@ -487,7 +487,7 @@ static bool draw_is_safe(fs_replayer *r, const fs_call *call)
  * command, the converted fs_call with copies of the data its pointers reach.
  * Pass 2 then replays that record instead of decompressing and parsing the
  * file a second time, which was as long as executing a small trace in
- * sampled mode (docs/performance.md).  A record that would outgrow
+ * sampled mode (docs/performance.md).  A record whose blocks would outgrow
  * rec_max bytes is dropped, and pass 2 reads the file as before. */
 
 typedef struct rec_block {
@@ -557,17 +557,21 @@ static void rec_add(fs_replayer *r, const char *name, const fs_call *call, bool 
         else if (call->a[k].count || call->a[k].is_data)
             goto drop; /* not a plain scalar: would not round-trip through 8 bytes */
     }
-    if (size > UINT32_MAX || r->rec_bytes + size > r->rec_max)
+    if (size > UINT32_MAX)
         goto drop;
     rec_block *b = r->rec_last;
     if (!b || b->size - b->used < size) {
+        /* The limit counts whole blocks, the tail a block leaves unused too. */
         size_t bs = size > REC_BLOCK ? size : REC_BLOCK;
+        if (bs > r->rec_max || r->rec_bytes > r->rec_max - bs)
+            goto drop;
         b = malloc(sizeof *b + bs);
         if (!b)
             goto drop;
         b->next = NULL;
         b->used = 0;
         b->size = bs;
+        r->rec_bytes += bs;
         if (r->rec_last)
             r->rec_last->next = b;
         else
@@ -593,7 +597,6 @@ static void rec_add(fs_replayer *r, const char *name, const fs_call *call, bool 
         data += REC_ALIGN((size_t)n + 1);
     }
     b->used += size;
-    r->rec_bytes += size;
     return;
 drop:
     rec_free(r);
@@ -785,6 +788,7 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
     if (r->rec_on) {
         r->rec_on = false;
         r->rec_read = true;
+        r->info.from_record = true;
         r->rec_at = r->rec;
         r->rec_pos = 0;
         r->rec_tr = r->tr; /* the record points at its name strings */

@@ -18,8 +18,9 @@
 typedef struct fs_replay_opts {
     const char *frame_end; /* call name that ends a frame, or NULL for automatic */
     int width, height;     /* 0: from the first glViewport */
-    /* Pass 1 keeps the decoded calls for pass 2 up to this many bytes
-     * (0: 1 GiB); a longer trace is read from the file twice. */
+    /* Pass 1 keeps the decoded calls for pass 2 in blocks of up to this
+     * many bytes in all (0: 1 GiB); a longer trace is read from the file
+     * twice. */
     size_t max_record_bytes;
 } fs_replay_opts;
 
@@ -30,6 +31,7 @@ typedef struct fs_replay_info {
     char frame_end[64];     /* the call that ends frames */
     bool uses_queries;      /* the trace begins occlusion queries itself */
     char warning[400];      /* e.g. the trace ends inside an event (a killed capture) */
+    bool from_record;       /* pass 2 replays pass 1's decoded calls, not the file */
 } fs_replay_info;
 
 typedef enum fs_replay_event {

@@ -68,6 +68,7 @@ typedef struct run_result {
     uint64_t skipped_total;
     int width, height;
     uint64_t digest; /* of every event: commands, arguments, the data they point to */
+    bool from_record;
 } run_result;
 
 static uint64_t mix(uint64_t h, const void *p, size_t n)
@@ -111,6 +112,7 @@ static void run_once(const char *path, const char *frame_end, size_t max_record,
     }
     res->width = fs_replay_info_get(r)->width;
     res->height = fs_replay_info_get(r)->height;
+    res->from_record = fs_replay_info_get(r)->from_record;
     fs_call c;
     fs_replay_event ev;
     while ((ev = fs_replay_next(r, &c)) != FS_REPLAY_EOF) {
@@ -146,6 +148,8 @@ static void run(check_state *check_st_, const char *path, const char *frame_end,
     CHECK(res->digest == file.digest);
     CHECK_STR(res->skipped, file.skipped);
     CHECK_STR(res->err, file.err);
+    CHECK(!file.from_record);
+    CHECK(res->error == 1 || res->from_record); /* else the comparison compared the file with itself */
 }
 
 TEST(frames_from_swaps_and_size_from_viewport)
