@@ -67,8 +67,7 @@ struct fs_replayer {
     fs_trace_reader *rec_tr; /* pass 1's reader, kept for its name strings */
     struct rec_block *rec, *rec_last, *rec_at;
     size_t rec_pos, rec_bytes, rec_max;
-    bool rec_on;   /* pass 1 is recording */
-    bool rec_read; /* pass 2 reads the record */
+    bool rec_on;   /* pass 1 is recording; info.from_record: pass 2 reads the record */
     struct name_info *cmd_info; /* pass 2 from the record: name_info per command */
 };
 
@@ -343,20 +342,26 @@ static int to_array(fs_replayer *r, const fs_tcall *tc, int kind, const fs_tval 
     return 0;
 }
 
-static int convert(fs_replayer *r, const fs_tcall *tc, int cmd, fs_call *call)
+/* *call with every argument zero: what convert() and rec_next() fill in. */
+static void call_start(fs_call *call, int cmd, unsigned nargs, uint32_t flags)
 {
-    const fs_cmd_info *info = &fs_cmd_table[cmd];
     /* All of *call zeroed, but not by one memset: gcc expands that into rep
      * stos, whose start-up cost was a fifth of next_call; per argument it
      * becomes a few vector stores. */
     _Static_assert(offsetof(fs_call, a) == 8 && sizeof(fs_call) == offsetof(fs_call, ret) + sizeof(fs_arg),
-                   "convert() zeroes fs_call member by member");
+                   "call_start() zeroes fs_call member by member");
     for (int k = 0; k < FS_MAX_ARGS; k++)
         memset(&call->a[k], 0, sizeof call->a[k]);
     memset(&call->ret, 0, sizeof call->ret);
     call->cmd = (uint16_t)cmd;
-    call->nargs = info->nargs;
-    call->flags = tc->flags;
+    call->nargs = (uint16_t)nargs;
+    call->flags = flags;
+}
+
+static int convert(fs_replayer *r, const fs_tcall *tc, int cmd, fs_call *call)
+{
+    const fs_cmd_info *info = &fs_cmd_table[cmd];
+    call_start(call, cmd, info->nargs, tc->flags);
     if (tc->nargs < info->nargs) {
         char n[32];
         snprintf(n, sizeof n, "%u of %u", tc->nargs, (unsigned)info->nargs);
@@ -526,7 +531,7 @@ static void rec_free(fs_replayer *r)
     }
     r->rec_last = r->rec_at = NULL;
     r->rec_pos = r->rec_bytes = 0;
-    r->rec_on = r->rec_read = false;
+    r->rec_on = r->info.from_record = false;
 }
 
 /* Bytes of the data argument k of `call` points to, or -1 when it points
@@ -625,12 +630,7 @@ static int rec_next(fs_replayer *r, fs_call *call, const struct name_info **ni, 
     *unsafe = h->unsafe;
     if ((*ni)->cmd < 0 || h->unsafe)
         return 1;
-    for (int k = 0; k < FS_MAX_ARGS; k++)
-        memset(&call->a[k], 0, sizeof call->a[k]);
-    memset(&call->ret, 0, sizeof call->ret);
-    call->cmd = h->cmd;
-    call->nargs = h->nargs;
-    call->flags = h->flags;
+    call_start(call, h->cmd, h->nargs, h->flags);
     const unsigned char *slot = at + sizeof *h, *data = slot + 8 * (size_t)h->nargs;
     for (int k = 0; k < h->nargs; k++, slot += 8) {
         fs_arg *a = &call->a[k];
@@ -712,7 +712,7 @@ static int next_call(fs_replayer *r, fs_call *call, bool pass1)
     for (;;) {
         const name_info *ni;
         bool unsafe;
-        int got = r->rec_read ? rec_next(r, call, &ni, &unsafe) : decode_next(r, call, pass1, &ni, &unsafe);
+        int got = r->info.from_record ? rec_next(r, call, &ni, &unsafe) : decode_next(r, call, pass1, &ni, &unsafe);
         if (got <= 0)
             return got;
         bool ends_frame = !pass1 && (r->frame_end_is_swap ? ni->swap : ni->frame_end);
@@ -787,7 +787,6 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
         snprintf(r->info.warning, sizeof r->info.warning, "%s", fs_trace_warning(r->tr));
     if (r->rec_on) {
         r->rec_on = false;
-        r->rec_read = true;
         r->info.from_record = true;
         r->rec_at = r->rec;
         r->rec_pos = 0;
@@ -823,7 +822,7 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
         fs_replay_close(r);
         return NULL;
     }
-    if (r->rec_read) {
+    if (r->info.from_record) {
         forget_names(r); /* frame_end of each name is known only now */
         if (!(r->cmd_info = calloc(FS_CMD_COUNT, sizeof *r->cmd_info))) {
             snprintf(err, errlen, "%s: out of memory", path);
