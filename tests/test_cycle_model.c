@@ -118,6 +118,19 @@ static fs_context *new_context(const fs_config *cfg, fs_cycle **cy, fs_cycle_mod
     return c;
 }
 
+/* A one-frame model (tile sampling in sampled mode) rasterizing one
+ * tile_size-pixel tile in `tiles`. */
+static fs_context *tile_sampled_context(int tiles, int tile_size, fs_cycle **cy, fs_cycle_mode mode)
+{
+    fs_config cfg;
+    fs_config_defaults(&cfg);
+    cfg.sampling_tiles = tiles;
+    cfg.sampling_tile_size = tile_size;
+    fs_context *c = new_context(&cfg, cy, mode);
+    fs_cycle_set_frames(*cy, 1);
+    return c;
+}
+
 /* Enters GL_BRIEF_OCCLUSION with T occlusion tiles, each the whole window. */
 #define MAX_TILES 13
 static void brief_occlusion_tiles(fs_context *c, int T)
@@ -288,13 +301,8 @@ TEST(tile_sample_full_screen)
      * stays within 2% of full cycle mode's cycles for this uniform load. */
     uint64_t cycles[2] = {0, 0};
     for (int m = 0; m < 2; m++) {
-        fs_config cfg;
-        fs_config_defaults(&cfg);
-        cfg.sampling_tiles = 4;
-        cfg.sampling_tile_size = 16;
         fs_cycle *cy;
-        fs_context *c = new_context(&cfg, &cy, m ? FS_CYCLE_SAMPLED : FS_CYCLE_FULL);
-        fs_cycle_set_frames(cy, 1);
+        fs_context *c = tile_sampled_context(4, 16, &cy, m ? FS_CYCLE_SAMPLED : FS_CYCLE_FULL);
         for (int r = 0; r < 16; r++) {
             fsglBegin(c, GL_QUADS);
             fsglVertex2f(c, ndc(0), ndc(0));
@@ -332,13 +340,8 @@ TEST(tile_sample_lighting_exact)
     fs_context *cs = NULL;
     fs_cycle *cys = NULL;
     for (int m = 0; m < 2; m++) {
-        fs_config cfg;
-        fs_config_defaults(&cfg);
-        cfg.sampling_tiles = 16;
-        cfg.sampling_tile_size = 4;
         fs_cycle *cy;
-        fs_context *c = new_context(&cfg, &cy, m ? FS_CYCLE_SAMPLED : FS_CYCLE_FULL);
-        fs_cycle_set_frames(cy, 1);
+        fs_context *c = tile_sampled_context(16, 4, &cy, m ? FS_CYCLE_SAMPLED : FS_CYCLE_FULL);
         const float pos[4] = {0.3f, 0.5f, 1.0f, 0.0f};
         fsglEnable(c, GL_LIGHTING);
         fsglEnable(c, GL_LIGHT0);
