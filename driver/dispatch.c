@@ -2,6 +2,7 @@
  * Generated plumbing of driver/gl_commands.def: the command table, the public
  * fsgl* entry points, the dispatcher and weak fallback executors.
  */
+#include <stdio.h>
 #include <string.h>
 #include <stdlib.h>
 #include "../pipeline/context.h"
@@ -235,6 +236,93 @@ static int bad_argument(fs_context *c, fs_call *call, int k)
     return -1;
 }
 
+/* ---- client arrays whose data came with the call (a replayed trace) ----
+ *
+ * GL trusts an application's array pointers; a trace's pointer call instead
+ * carries its data, which lives only as long as the call.  The context keeps
+ * its own copy, and a draw may read no further than that copy holds. */
+
+static fs_client_array *array_of_slot(fs_context *c, int slot)
+{
+    fs_client_array *const a[4] = {&c->arrays.vertex, &c->arrays.normal, &c->arrays.color,
+                                   &c->arrays.texcoord};
+    return a[slot];
+}
+
+static int pointer_slot(int cmd, int *pk)
+{
+    *pk = 3;
+    switch (cmd) {
+    case FS_CMD_VertexPointer: return 0;
+    case FS_CMD_NormalPointer: *pk = 2; return 1; /* no size argument */
+    case FS_CMD_ColorPointer: return 2;
+    case FS_CMD_TexCoordPointer: return 3;
+    default: return -1;
+    }
+}
+
+static int dispatch_call(fs_context *c, fs_call *call);
+
+/* Executes a pointer call with data on a copy the context owns.  Of the two
+ * copies per array the one the array does not point at is written, so a
+ * call GL rejects leaves the array's data as it was. */
+static int dispatch_pointer_data(fs_context *c, fs_call *call, int slot, int pk)
+{
+    fs_client_array *arr = array_of_slot(c, slot);
+    size_t n = call->a[pk].count;
+    int k = arr->pointer == c->array_copy[slot].buf[0] && arr->pointer ? 1 : 0;
+    if (n > c->array_copy[slot].cap[k] || !c->array_copy[slot].buf[k]) {
+        void *d = realloc(c->array_copy[slot].buf[k], n ? n : 1);
+        if (!d) {
+            fs_unsupported(c, "array data (out of memory copying it)");
+            return 0;
+        }
+        c->array_copy[slot].buf[k] = d;
+        c->array_copy[slot].cap[k] = n ? n : 1;
+    }
+    if (n)
+        memcpy(c->array_copy[slot].buf[k], call->a[pk].p, n);
+    fs_call local = *call;
+    local.a[pk].p = c->array_copy[slot].buf[k];
+    int rc = dispatch_call(c, &local);
+    if (arr->pointer == c->array_copy[slot].buf[k])
+        arr->bytes = n;
+    return rc;
+}
+
+static bool array_covers(const fs_client_array *a, int ncomp, int64_t hi)
+{
+    if (!a->enabled || a->bytes == SIZE_MAX)
+        return true;
+    int ts = fs_type_size(a->type);
+    if (ts <= 0 || ncomp < 1 || a->stride < 0)
+        return false;
+    uint64_t elem = (uint64_t)ts * (uint64_t)ncomp;
+    uint64_t stride = a->stride ? (uint64_t)a->stride : elem;
+    return (uint64_t)hi <= (UINT64_MAX - elem) / stride && (uint64_t)hi * stride + elem <= a->bytes;
+}
+
+/* False (and the draw counted by name) when an enabled array's data ends
+ * before a vertex the draw reads.  GL leaves such a draw undefined (the
+ * application reads past its memory); fragsim refuses it. */
+static bool draw_reads_in_bounds(fs_context *c, const fs_call *call)
+{
+    const fs_array_state *s = &c->arrays;
+    if ((!s->vertex.enabled || s->vertex.bytes == SIZE_MAX) && (!s->normal.enabled || s->normal.bytes == SIZE_MAX) &&
+        (!s->color.enabled || s->color.bytes == SIZE_MAX) && (!s->texcoord.enabled || s->texcoord.bytes == SIZE_MAX))
+        return true; /* the usual case, decided without scanning indices */
+    int64_t lo, hi;
+    if (!fs_draw_vertex_range(call, &lo, &hi))
+        return true; /* reads no vertex (or is an error GL reports) */
+    if (array_covers(&s->vertex, s->vertex.size, hi) && array_covers(&s->normal, 3, hi) &&
+        array_covers(&s->color, s->color.size, hi) && array_covers(&s->texcoord, s->texcoord.size, hi))
+        return true;
+    char what[96];
+    snprintf(what, sizeof what, "%s (client array shorter than the draw reads)", fs_cmd_table[call->cmd].name);
+    fs_unsupported(c, what);
+    return false;
+}
+
 int fs_dispatch(fs_context *c, fs_call *call)
 {
     if (call->cmd >= FS_CMD_COUNT)
@@ -246,6 +334,16 @@ int fs_dispatch(fs_context *c, fs_call *call)
         fs_error(c, GL_INVALID_OPERATION);
         return 0;
     }
+    if ((fs_cmd_table[call->cmd].flags & FS_F_DRAW) && !draw_reads_in_bounds(c, call))
+        return 0;
+    int pk, slot = pointer_slot(call->cmd, &pk);
+    if (slot >= 0 && call->a[pk].is_data)
+        return dispatch_pointer_data(c, call, slot, pk);
+    return dispatch_call(c, call);
+}
+
+static int dispatch_call(fs_context *c, fs_call *call)
+{
     switch ((enum fs_cmd)call->cmd) {
 #define FS_CMD(name, rk, flags, n, ...)                                        \
     case FS_CMD_##name: {                                                       \
@@ -329,9 +427,12 @@ int fs_submit(fs_context *c, fs_call *call)
     uint32_t flags = fs_cmd_table[call->cmd].flags;
     int rc = 0;
     if (fs_dlist_compiling(c) && (flags & FS_F_LIST)) {
-        fs_dlist_compile(c, call);
-        if (fs_dlist_execute_too(c))
-            rc = fs_dispatch(c, call);
+        /* Compiling copies the vertices a draw reads (display_list.c). */
+        if (!(flags & FS_F_DRAW) || draw_reads_in_bounds(c, call)) {
+            fs_dlist_compile(c, call);
+            if (fs_dlist_execute_too(c))
+                rc = fs_dispatch(c, call);
+        }
     } else {
         rc = fs_dispatch(c, call);
     }

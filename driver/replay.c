@@ -4,9 +4,12 @@
  * Client arrays: apitrace records glXxxPointer with the program's address
  * (an opaque pointer, useless here) and, before each draw, a "fake"
  * glXxxPointer call whose pointer argument is a blob with the vertex data
- * the draw reads.  The replayer keeps those blobs alive and refuses a draw
- * whose enabled arrays are not backed by recorded data covering every vertex
- * it reads, so a trace can never make the model read foreign memory.
+ * the draw reads.  The replayer skips (and counts) a draw whose enabled
+ * arrays it does not see backed by recorded data covering every vertex it
+ * reads.  That is a report, not the safety: the dispatcher copies each
+ * blob GL accepts into the context and refuses any draw that would read
+ * past it (dispatch.c), so a trace can never make the model read foreign
+ * memory, even where GL rejects a pointer call the replayer counted.
  */
 #include <stddef.h>
 #include <stdlib.h>
@@ -34,8 +37,7 @@ typedef struct array_track {
     GLint size;
     GLenum type;
     GLsizei stride;
-    void *data; /* owned copy of the last recorded blob */
-    size_t bytes;
+    size_t bytes; /* of the last pointer call's data */
 } array_track;
 
 enum { ARR_VERTEX, ARR_NORMAL, ARR_COLOR, ARR_TEXCOORD, ARR_COUNT };
@@ -440,28 +442,18 @@ static int client_state_slot(GLenum array)
     }
 }
 
-/* Keeps a pointer call's blob and points the call at the kept copy. */
-static int track_pointer(fs_replayer *r, const fs_tcall *tc, fs_call *call, int slot)
+/* Notes what a pointer call says of its array.  The data stays where the
+ * call has it: the dispatcher copies it into the context (dispatch.c). */
+static void track_pointer(fs_replayer *r, const fs_call *call, int slot)
 {
     array_track *t = &r->arr[slot];
     int pk = slot == ARR_NORMAL ? 2 : 3; /* glNormalPointer has no size argument */
-    fs_arg *p = &call->a[pk];
+    const fs_arg *p = &call->a[pk];
     t->size = slot == ARR_NORMAL ? 3 : (GLint)call->a[0].i;
     t->type = (GLenum)call->a[pk - 2].i;
     t->stride = (GLsizei)call->a[pk - 1].i;
     t->has_data = p->is_data != 0;
-    if (!p->is_data)
-        return 0;
-    if (p->count > t->bytes || !t->data) {
-        void *d = realloc(t->data, p->count ? p->count : 1);
-        if (!d)
-            return fail(r, tc, "%s", "out of memory keeping array data");
-        t->data = d;
-    }
-    memcpy(t->data, p->p, p->count);
-    t->bytes = p->count;
-    p->p = t->data;
-    return 0;
+    t->bytes = p->is_data ? p->count : 0;
 }
 
 /* True when every enabled array holds recorded data for the draw's vertices. */
@@ -691,8 +683,8 @@ static int decode_next(fs_replayer *r, fs_call *call, bool pass1, const name_inf
         }
     }
     int slot = array_slot(cmd);
-    if (slot >= 0 && track_pointer(r, &tc, call, slot) != 0)
-        return -1;
+    if (slot >= 0)
+        track_pointer(r, call, slot);
     if (cmd == FS_CMD_EnableClientState || cmd == FS_CMD_DisableClientState) {
         int s = client_state_slot((GLenum)call->a[0].i);
         if (s >= 0)
@@ -736,14 +728,6 @@ static int next_call(fs_replayer *r, fs_call *call, bool pass1)
          * glXMakeCurrent, and the array data before a draw. */
         r->pending_frame_end = ends_frame;
         return 1;
-    }
-}
-
-static void reset_arrays(fs_replayer *r)
-{
-    for (int i = 0; i < ARR_COUNT; i++) {
-        free(r->arr[i].data);
-        memset(&r->arr[i], 0, sizeof r->arr[i]);
     }
 }
 
@@ -795,7 +779,7 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
         fs_trace_close(r->tr);
     }
     r->tr = NULL;
-    reset_arrays(r);
+    memset(r->arr, 0, sizeof r->arr);
     r->pending_frame_end = false;
     if (r->user_frame_end) {
         r->frame_end_is_swap = false;
@@ -911,7 +895,6 @@ void fs_replay_close(fs_replayer *r)
     free(r->cmd_info);
     if (r->rec_tr)
         fs_trace_close(r->rec_tr);
-    reset_arrays(r);
     for (size_t i = 0; i < r->nskips; i++)
         free(r->skips[i].name);
     free(r->skips);

@@ -66,6 +66,7 @@ static void set_array(fs_client_array *a, GLint size, GLenum type, GLsizei strid
     a->type = type;
     a->stride = stride;
     a->pointer = p;
+    a->bytes = p ? SIZE_MAX : 0;
 }
 
 void fs_exec_VertexPointer(fs_context *c, GLint size, GLenum type, GLsizei stride, const GLvoid *pointer)

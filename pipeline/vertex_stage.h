@@ -11,6 +11,8 @@
 #ifndef FS_VERTEX_STAGE_H
 #define FS_VERTEX_STAGE_H
 #include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
 #include <GL/gl.h>
 #include "rasterizer.h"
 
@@ -70,6 +72,10 @@ typedef struct fs_client_array {
     GLenum type;
     GLsizei stride;          /* as given; 0 means tightly packed */
     const void *pointer;
+    /* Bytes readable at pointer: SIZE_MAX for an application's memory
+     * (GL trusts it), 0 for NULL, the exact length for data that came with
+     * a replayed call (driver/dispatch.c), which a draw may not read past. */
+    size_t bytes;
 } fs_client_array;
 
 typedef struct fs_array_state {

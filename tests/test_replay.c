@@ -10,6 +10,7 @@
 #include "check.h"
 #include "../driver/replay.h"
 #include "../driver/trace.h"
+#include "../pipeline/context.h"
 
 #define MAXV 10
 
@@ -244,6 +245,80 @@ TEST(draw_without_recorded_arrays_is_refused)
     unlink(t.path);
 }
 
+static fs_tval blob(const void *p, size_t n)
+{
+    fs_tval x;
+    memset(&x, 0, sizeof x);
+    x.type = FS_TV_BLOB;
+    x.str.ptr = (const char *)p;
+    x.str.len = n;
+    return x;
+}
+
+static uint64_t unsupported_count(const fs_context *c, const char *name)
+{
+    for (int i = 0; i < c->unsupported_feature_count; i++)
+        if (strcmp(c->unsupported_feature[i].name, name) == 0)
+            return c->unsupported_feature[i].count;
+    return 0;
+}
+
+/* GL rejects a pointer call whose size is out of range, or one issued
+ * between glBegin and glEnd; the array keeps its old, shorter data.  The
+ * replayer cannot tell and lets the long draws through, so the dispatcher
+ * must refuse them (the data the array holds ends at vertex 3) and a later
+ * draw must still see the first call's triangle, not the rejected zeros. */
+TEST(rejected_pointer_call_keeps_the_arrays_data)
+{
+    tb t;
+    REQUIRE(tb_open(&t, "rejected") == 0);
+    viewport(&t, 16, 16);
+    static const float tri[6] = {-1, -1, 3, -1, -1, 3}; /* covers the window */
+    static const float zeros[600];
+    fs_tval good[4] = {ival(2), eval(GL_FLOAT, "GL_FLOAT"), ival(0), blob(tri, sizeof tri)};
+    call(&t, "glVertexPointer", 4, good, 0);
+    fs_tval e = eval(GL_VERTEX_ARRAY, "GL_VERTEX_ARRAY");
+    call(&t, "glEnableClientState", 1, &e, 0);
+    fs_tval bad_size[4] = {ival(1), eval(GL_FLOAT, "GL_FLOAT"), ival(0), blob(zeros, sizeof zeros)};
+    call(&t, "glVertexPointer", 4, bad_size, 0);
+    fs_tval long_draw[3] = {eval(GL_TRIANGLES, "GL_TRIANGLES"), ival(0), ival(297)};
+    call(&t, "glDrawArrays", 3, long_draw, 0);
+    fs_tval m = eval(GL_POINTS, "GL_POINTS");
+    call(&t, "glBegin", 1, &m, 0);
+    fs_tval in_begin[4] = {ival(2), eval(GL_FLOAT, "GL_FLOAT"), ival(0), blob(zeros, sizeof zeros)};
+    call(&t, "glVertexPointer", 4, in_begin, 0);
+    call(&t, "glEnd", 0, NULL, 0);
+    call(&t, "glDrawArrays", 3, long_draw, 0);
+    fs_tval draw[3] = {eval(GL_TRIANGLES, "GL_TRIANGLES"), ival(0), ival(3)};
+    call(&t, "glDrawArrays", 3, draw, 0);
+    REQUIRE(fs_trace_finish(t.w) == 0);
+    for (size_t max_record = 0; max_record < 2; max_record++) { /* record, then file */
+        char err[512];
+        fs_replay_opts o = {NULL, 0, 0, max_record};
+        fs_replayer *r = fs_replay_open(t.path, &o, err, sizeof err);
+        REQUIRE(r);
+        CHECK(fs_replay_info_get(r)->from_record == (max_record == 0));
+        fs_context *c = fs_context_create(NULL, 16, 16);
+        REQUIRE(c);
+        fs_call x;
+        fs_replay_event ev;
+        while ((ev = fs_replay_next(r, &x)) != FS_REPLAY_EOF && ev != FS_REPLAY_ERROR)
+            if (ev == FS_REPLAY_CALL)
+                fs_submit(c, &x);
+        CHECK(ev == FS_REPLAY_EOF);
+        CHECK_EQ_UINT(fs_replay_skipped_total(r), 0); /* the replayer let both long draws through */
+        CHECK_EQ_INT(fsglGetError(c), GL_INVALID_VALUE);
+        CHECK_EQ_UINT(unsupported_count(c, "glDrawArrays (client array shorter than the draw reads)"), 2);
+        CHECK_EQ_UINT(c->stats.vertices, 3);
+        GLubyte px[4] = {0};
+        fsglReadPixels(c, 8, 8, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+        CHECK_EQ_INT(px[0], 255); /* the first call's triangle, in the default white */
+        fs_context_destroy(c);
+        fs_replay_close(r);
+    }
+    unlink(t.path);
+}
+
 TEST(short_array_argument_is_malformed)
 {
     tb t;
@@ -339,6 +414,7 @@ TEST_LIST = {
     TEST_ENTRY(frames_from_glfinish_without_swaps),
     TEST_ENTRY(unknown_calls_are_counted_by_name),
     TEST_ENTRY(draw_without_recorded_arrays_is_refused),
+    TEST_ENTRY(rejected_pointer_call_keeps_the_arrays_data),
     TEST_ENTRY(short_array_argument_is_malformed),
     TEST_ENTRY(no_viewport_and_no_size_is_an_error),
     TEST_ENTRY(record_replays_what_the_file_holds),

@@ -457,6 +457,14 @@ TEST(begin_end_and_array_errors)
     fsglDrawArrays(c, GL_TRIANGLES, 0, 3);
     CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
     CHECK_EQ_INT(c->stats.vertices, 3);
+    /* A NULL array (there are no buffer objects to offset into) is refused
+     * and counted by name rather than read. */
+    fsglVertexPointer(c, 3, GL_FLOAT, 0, NULL);
+    fsglDrawArrays(c, GL_TRIANGLES, 0, 3);
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    CHECK_EQ_INT(c->stats.vertices, 3);
+    CHECK(c->unsupported_feature_count == 1 &&
+          strcmp(c->unsupported_feature[0].name, "glDrawArrays (client array shorter than the draw reads)") == 0);
     fs_context_destroy(c);
 }
 
