@@ -164,6 +164,13 @@ static void fetch(const fs_client_array *a, size_t i, float out[4], bool norm)
         default: memcpy(out, p, 4); return;
         }
     }
+    if (a->type == GL_UNSIGNED_BYTE && norm) {
+        /* Byte colours (terrain, forest, bench): the same expression as
+         * below, without the switch per component. */
+        for (int k = 0; k < a->size; k++)
+            out[k] = (float)p[k] / 255.0f;
+        return;
+    }
     for (int k = 0; k < a->size; k++) {
         float v;
         switch (a->type) {
