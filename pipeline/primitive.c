@@ -33,6 +33,7 @@ typedef struct prim_ctx {
     const fs_ivert *iv;  /* lazy attributes: the inputs, else NULL */
     const uint32_t *idx;
     int prov;            /* provoking position in each triangle, -1 smooth */
+    bool fill;           /* an estimated draw run in the sampled tiles only */
 } prim_ctx;
 
 static inline size_t I(const prim_ctx *p, size_t i)
@@ -81,11 +82,44 @@ static void tri_attributes(const prim_ctx *p, size_t a, size_t b, size_t cc)
             fs_vs_attributes(p->s, &p->iv[k[i]], &p->pv[k[i]]);
 }
 
+/* A filled estimated draw (fs_cycle_tiles.fill) runs only the triangles
+ * that may make fragments in a sampled tile: the others are not timed, so
+ * nothing else needs them. */
+static bool tri_misses_sample(const prim_ctx *p, const fs_pvert *v0, const fs_pvert *v1, const fs_pvert *v2)
+{
+    if (v0->mask & v1->mask & v2->mask)
+        return true;
+    if (v0->mask | v1->mask | v2->mask)
+        return false; /* clipped: rare, left to the clipper */
+    float x0 = lo3(v0->win[0], v1->win[0], v2->win[0]), x1 = hi3(v0->win[0], v1->win[0], v2->win[0]);
+    float y0 = lo3(v0->win[1], v1->win[1], v2->win[1]), y1 = hi3(v0->win[1], v1->win[1], v2->win[1]);
+    return !fs_vs_box_sampled(fs_cycle_tile_sample(p->c->cycle), x0, y0, x1, y1);
+}
+
+/* A filled draw's triangle that misses the sample still counts its area
+ * (unsnapped, which is close enough for a measure of the draw's work; the
+ * others give theirs from the rasterizer). */
+static void fill_area(fs_context *c, const fs_pvert *v0, const fs_pvert *v1, const fs_pvert *v2)
+{
+    if (v0->mask | v1->mask | v2->mask)
+        return; /* wholly outside a plane: no fragments */
+    float a2 = (v1->win[0] - v0->win[0]) * (v2->win[1] - v0->win[1]) -
+               (v2->win[0] - v0->win[0]) * (v1->win[1] - v0->win[1]);
+    bool front = (c->raster.front_face == GL_CCW) == (a2 > 0.0f);
+    if (!(a2 != 0.0f) || fs_raster_culled(&c->raster, front))
+        return;
+    fs_cycle_triangle_area(c->cycle, 0.5 * fabs((double)a2), 0, 0);
+}
+
 static void tri(const prim_ctx *p, size_t a, size_t b, size_t cc)
 {
     fs_context *c = p->c;
     const fs_pvert *v0 = V(p, a), *v1 = V(p, b), *v2 = V(p, cc);
     c->stats.triangles_in++;
+    if (p->fill && tri_misses_sample(p, v0, v1, v2)) {
+        fill_area(c, v0, v1, v2);
+        return;
+    }
     if (c->cycle)
         fs_cycle_triangle(c->cycle);
     if (p->iv)
@@ -108,7 +142,7 @@ static void line(const prim_ctx *p, size_t a, size_t b)
 void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv, const fs_ivert *iv,
                   const uint32_t *idx, size_t count, bool elements)
 {
-    prim_ctx p = {c, s, pv, iv, idx, s->flat ? 2 : -1};
+    prim_ctx p = {c, s, pv, iv, idx, s->flat ? 2 : -1, iv && fs_cycle_tile_sample(c->cycle)->fill};
     bool pipeline = false;
     for (size_t i = 0; i < count && !pipeline; i++)
         pipeline = V(&p, i)->mask != 0;

@@ -326,19 +326,6 @@ static void calc_coef(fs_plane *p, const coef_args *g, float a0, float a1, float
     p->constant = dadx == 0.0f && dady == 0.0f && p->a0 == a0;
 }
 
-static bool polygon_culled(const fs_raster_state *r, bool front)
-{
-    if (!r->cull_enabled)
-        return false;
-    /* GL 1.5 spec 3.5.1: culling by facing. */
-    switch (r->cull_mode) {
-    case GL_FRONT: return front;
-    case GL_BACK: return !front;
-    case GL_FRONT_AND_BACK: return true;
-    default: return false;
-    }
-}
-
 static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e, const fs_cycle_tiles *t);
 static bool tile_sample_begin(fs_context *c, const fs_cycle_tiles *t, const tri_edges *e);
 static void raster_tri_reference(fs_context *c, const fs_prim_setup *s, const tri_edges *e);
@@ -381,7 +368,7 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     /* GL 1.5 spec 3.5.1: facing from the sign of the area and glFrontFace. */
     bool ccw = area > 0;
     bool front = (r->front_face == GL_CCW) ? ccw : !ccw;
-    if (polygon_culled(r, front)) {
+    if (fs_raster_culled(r, front)) {
         c->stats.triangles_culled++;
         return;
     }

@@ -86,6 +86,20 @@ typedef struct fs_raster_state {
     bool has_fma;
 } fs_raster_state;
 
+/* Whether a polygon of this facing is culled (GL 1.5 spec 3.5.1: culling
+ * by facing). */
+static inline bool fs_raster_culled(const fs_raster_state *r, bool front)
+{
+    if (!r->cull_enabled)
+        return false;
+    switch (r->cull_mode) {
+    case GL_FRONT: return front;
+    case GL_BACK: return !front;
+    case GL_FRONT_AND_BACK: return true;
+    default: return false;
+    }
+}
+
 void fs_raster_state_init(fs_raster_state *r, int subpixel_bits);
 
 /* Decides facing, culls, applies polygon offset and rasterizes.  Vertices are

@@ -58,7 +58,9 @@ void fs_cycle_attach(fs_cycle *cy, fs_context *c);
 
 /* ---- calls from the functional pipeline (only when c->cycle != NULL) ---- */
 /* A draw of n vertices in mode; false in sampled mode when the draw is
- * estimated: the caller then skips it (no vertices, no fragments). */
+ * estimated: the caller then skips it (no vertices, no fragments).  True
+ * with the tile sample's `fill` set: estimated too, but the caller runs it
+ * in the sampled tiles (the model's hooks ignore it). */
 bool fs_cycle_draw(fs_cycle *cy, fs_context *c, GLenum mode, size_t n);
 /* A triangle assembled (before culling and clipping). */
 void fs_cycle_triangle(fs_cycle *cy);
@@ -73,6 +75,11 @@ typedef struct fs_cycle_tiles {
      * triangle, and the hash below costs five divisions. */
     uint32_t map_w, map_h;
     const uint8_t *map;
+    /* The current draw is estimated, but it writes depth or stencil that
+     * later simulated draws test against: the pipeline still runs it in the
+     * sampled tiles (only triangles whose box meets one), untimed, so that
+     * those tiles stay exact (sampling.every; docs/cycle_model.md). */
+    bool fill;
 } fs_cycle_tiles;
 static inline const fs_cycle_tiles *fs_cycle_tile_sample(const fs_cycle *cy)
 {
