@@ -249,7 +249,7 @@ static fs_client_array *array_of_slot(fs_context *c, int slot)
     return a[slot];
 }
 
-static int pointer_slot(int cmd, int *pk)
+int fs_pointer_slot(int cmd, int *pk)
 {
     *pk = 3;
     switch (cmd) {
@@ -290,37 +290,39 @@ static int dispatch_pointer_data(fs_context *c, fs_call *call, int slot, int pk)
     return rc;
 }
 
-static bool array_covers(const fs_client_array *a, int ncomp, int64_t hi)
+/* Whether enabled array a holds vertex hi (glNormalPointer sets size 3). */
+static bool array_covers(const fs_client_array *a, int64_t hi)
 {
-    if (!a->enabled || a->bytes == SIZE_MAX)
-        return true;
     int ts = fs_type_size(a->type);
-    if (ts <= 0 || ncomp < 1 || a->stride < 0)
+    if (ts <= 0 || a->size < 1 || a->stride < 0)
         return false;
-    uint64_t elem = (uint64_t)ts * (uint64_t)ncomp;
+    uint64_t elem = (uint64_t)ts * (uint64_t)a->size;
     uint64_t stride = a->stride ? (uint64_t)a->stride : elem;
     return (uint64_t)hi <= (UINT64_MAX - elem) / stride && (uint64_t)hi * stride + elem <= a->bytes;
 }
 
 /* False (and the draw counted by name) when an enabled array's data ends
  * before a vertex the draw reads.  GL leaves such a draw undefined (the
- * application reads past its memory); fragsim refuses it. */
+ * application reads past its memory); fragsim refuses it.  Arrays of the
+ * application's memory (bytes SIZE_MAX), the usual case, need no index
+ * scan. */
 static bool draw_reads_in_bounds(fs_context *c, const fs_call *call)
 {
-    const fs_array_state *s = &c->arrays;
-    if ((!s->vertex.enabled || s->vertex.bytes == SIZE_MAX) && (!s->normal.enabled || s->normal.bytes == SIZE_MAX) &&
-        (!s->color.enabled || s->color.bytes == SIZE_MAX) && (!s->texcoord.enabled || s->texcoord.bytes == SIZE_MAX))
-        return true; /* the usual case, decided without scanning indices */
-    int64_t lo, hi;
-    if (!fs_draw_vertex_range(call, &lo, &hi))
-        return true; /* reads no vertex (or is an error GL reports) */
-    if (array_covers(&s->vertex, s->vertex.size, hi) && array_covers(&s->normal, 3, hi) &&
-        array_covers(&s->color, s->color.size, hi) && array_covers(&s->texcoord, s->texcoord.size, hi))
-        return true;
-    char what[96];
-    snprintf(what, sizeof what, "%s (client array shorter than the draw reads)", fs_cmd_table[call->cmd].name);
-    fs_unsupported(c, what);
-    return false;
+    int64_t lo, hi = -1;
+    for (int slot = 0; slot < 4; slot++) {
+        const fs_client_array *a = array_of_slot(c, slot);
+        if (!a->enabled || a->bytes == SIZE_MAX)
+            continue;
+        if (hi < 0 && !fs_draw_vertex_range(call, &lo, &hi))
+            return true; /* reads no vertex (or is an error GL reports) */
+        if (!array_covers(a, hi)) {
+            char what[96];
+            snprintf(what, sizeof what, "%s (client array shorter than the draw reads)", fs_cmd_table[call->cmd].name);
+            fs_unsupported(c, what);
+            return false;
+        }
+    }
+    return true;
 }
 
 int fs_dispatch(fs_context *c, fs_call *call)
@@ -336,7 +338,7 @@ int fs_dispatch(fs_context *c, fs_call *call)
     }
     if ((fs_cmd_table[call->cmd].flags & FS_F_DRAW) && !draw_reads_in_bounds(c, call))
         return 0;
-    int pk, slot = pointer_slot(call->cmd, &pk);
+    int pk, slot = fs_pointer_slot(call->cmd, &pk);
     if (slot >= 0 && call->a[pk].is_data)
         return dispatch_pointer_data(c, call, slot, pk);
     return dispatch_call(c, call);

@@ -190,6 +190,10 @@ size_t fs_kind_elem_size(int kind);
  * *lo..*hi.  False when it reads none: no vertex, a negative first index, an
  * unknown index type, or an index blob shorter than the count. */
 bool fs_draw_vertex_range(const fs_call *call, int64_t *lo, int64_t *hi);
+/* For glVertexPointer, glNormalPointer, glColorPointer and glTexCoordPointer:
+ * the client array they set (0 vertex, 1 normal, 2 colour, 3 texcoord) and
+ * in *pk the index of their pointer argument; -1 for other commands. */
+int fs_pointer_slot(int cmd, int *pk);
 /* Occlusion tiles glOcclusionBuffers expects a size for (units/occlusion_gl.c). */
 int fs_occlusion_tile_count(fs_context *c);
 /* Texture unit (units/texture_object.c): bytes a glTexImage2D image reads

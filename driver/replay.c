@@ -40,6 +40,7 @@ typedef struct array_track {
     size_t bytes; /* of the last pointer call's data */
 } array_track;
 
+/* In fs_pointer_slot's order. */
 enum { ARR_VERTEX, ARR_NORMAL, ARR_COLOR, ARR_TEXCOORD, ARR_COUNT };
 
 struct fs_replayer {
@@ -420,17 +421,6 @@ static int convert(fs_replayer *r, const fs_tcall *tc, int cmd, fs_call *call)
 
 /* ---- client-array safety ---- */
 
-static int array_slot(int cmd)
-{
-    switch (cmd) {
-    case FS_CMD_VertexPointer: return ARR_VERTEX;
-    case FS_CMD_NormalPointer: return ARR_NORMAL;
-    case FS_CMD_ColorPointer: return ARR_COLOR;
-    case FS_CMD_TexCoordPointer: return ARR_TEXCOORD;
-    default: return -1;
-    }
-}
-
 static int client_state_slot(GLenum array)
 {
     switch (array) {
@@ -444,10 +434,9 @@ static int client_state_slot(GLenum array)
 
 /* Notes what a pointer call says of its array.  The data stays where the
  * call has it: the dispatcher copies it into the context (dispatch.c). */
-static void track_pointer(fs_replayer *r, const fs_call *call, int slot)
+static void track_pointer(fs_replayer *r, const fs_call *call, int slot, int pk)
 {
     array_track *t = &r->arr[slot];
-    int pk = slot == ARR_NORMAL ? 2 : 3; /* glNormalPointer has no size argument */
     const fs_arg *p = &call->a[pk];
     t->size = slot == ARR_NORMAL ? 3 : (GLint)call->a[0].i;
     t->type = (GLenum)call->a[pk - 2].i;
@@ -682,9 +671,9 @@ static int decode_next(fs_replayer *r, fs_call *call, bool pass1, const name_inf
             r->info.height = (int)h;
         }
     }
-    int slot = array_slot(cmd);
+    int pk, slot = fs_pointer_slot(cmd, &pk);
     if (slot >= 0)
-        track_pointer(r, call, slot);
+        track_pointer(r, call, slot, pk);
     if (cmd == FS_CMD_EnableClientState || cmd == FS_CMD_DisableClientState) {
         int s = client_state_slot((GLenum)call->a[0].i);
         if (s >= 0)
