@@ -58,6 +58,18 @@ static inline float hi3(float a, float b, float c)
     return c > m ? c : m;
 }
 
+/* Whether an unclipped triangle's window box meets a sampled tile.
+ * Compares, not fminf/fmaxf (library calls).  A NaN in the first vertex
+ * makes the box NaN, which counts as sampled; one in another is dropped,
+ * which is harmless: the rasterizer culls a triangle with a NaN position
+ * before it reads a colour. */
+static bool box_sampled(const prim_ctx *p, const fs_pvert *v0, const fs_pvert *v1, const fs_pvert *v2)
+{
+    float x0 = lo3(v0->win[0], v1->win[0], v2->win[0]), x1 = hi3(v0->win[0], v1->win[0], v2->win[0]);
+    float y0 = lo3(v0->win[1], v1->win[1], v2->win[1]), y1 = hi3(v0->win[1], v1->win[1], v2->win[1]);
+    return fs_vs_box_sampled(fs_cycle_tile_sample(p->c->cycle), x0, y0, x1, y1);
+}
+
 /* Sampled mode's tile sample: lights the lazy vertices of a triangle that
  * may make fragments in a sampled tile (its box meets one, or it is
  * clipped); the others are charged by area and never read their colours. */
@@ -66,16 +78,8 @@ static void tri_attributes(const prim_ctx *p, size_t a, size_t b, size_t cc)
     fs_pvert *v0 = V(p, a), *v1 = V(p, b), *v2 = V(p, cc);
     if (!(v0->lazy | v1->lazy | v2->lazy) || (v0->mask & v1->mask & v2->mask))
         return;
-    if ((v0->mask | v1->mask | v2->mask) == 0) {
-        /* Compares, not fminf/fmaxf (library calls).  A NaN in the first
-         * vertex makes the box NaN, which counts as sampled; one in another
-         * is dropped, which is harmless: the rasterizer culls a triangle
-         * with a NaN position before it reads a colour. */
-        float x0 = lo3(v0->win[0], v1->win[0], v2->win[0]), x1 = hi3(v0->win[0], v1->win[0], v2->win[0]);
-        float y0 = lo3(v0->win[1], v1->win[1], v2->win[1]), y1 = hi3(v0->win[1], v1->win[1], v2->win[1]);
-        if (!fs_vs_box_sampled(fs_cycle_tile_sample(p->c->cycle), x0, y0, x1, y1))
-            return;
-    }
+    if ((v0->mask | v1->mask | v2->mask) == 0 && !box_sampled(p, v0, v1, v2))
+        return;
     const size_t k[3] = {I(p, a), I(p, b), I(p, cc)};
     for (int i = 0; i < 3; i++)
         if (p->pv[k[i]].lazy)
@@ -91,9 +95,7 @@ static bool tri_misses_sample(const prim_ctx *p, const fs_pvert *v0, const fs_pv
         return true;
     if (v0->mask | v1->mask | v2->mask)
         return false; /* clipped: rare, left to the clipper */
-    float x0 = lo3(v0->win[0], v1->win[0], v2->win[0]), x1 = hi3(v0->win[0], v1->win[0], v2->win[0]);
-    float y0 = lo3(v0->win[1], v1->win[1], v2->win[1]), y1 = hi3(v0->win[1], v1->win[1], v2->win[1]);
-    return !fs_vs_box_sampled(fs_cycle_tile_sample(p->c->cycle), x0, y0, x1, y1);
+    return !box_sampled(p, v0, v1, v2);
 }
 
 /* A filled draw's triangle that misses the sample still counts its area
