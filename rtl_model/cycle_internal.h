@@ -142,11 +142,12 @@ struct fs_cycle {
 
     fs_cyc_kind *kinds;
     /* Draw sampling: this frame's draws in order, their kind, cycles
-     * (negative: estimated, filled in at the frame end) and the work of
-     * their sampled quads (negative: none measured, the draw was skipped). */
+     * (negative: estimated, filled in at the frame end) and work, their
+     * triangles' areas at the cost per fragment (work_add_area; negative:
+     * none measured, the draw was skipped). */
     struct fs_cyc_seq { fs_cyc_kind *k; double c, w; } *seq;
     size_t nseq, seq_cap, seq_open;   /* seq_open: entry of the simulated draw + 1, 0 if none */
-    size_t seq_work;                  /* entry whose sampled quads are arriving + 1, 0 if none */
+    size_t seq_work;                  /* entry whose work is arriving + 1, 0 if none */
     double draw_work;                 /* their work so far */
     double draw_var;                  /* variance of the draw estimates so far */
 

@@ -479,18 +479,30 @@ static void spread_item(fs_cycle *cy, const fs_cyc_pool *p, int e, double q)
     cy->acc.fragments += take(cy, FS_CARRY_frags, p->frags * per);
 }
 
+/* The costs a triangle's estimate uses: its state's pool once it holds a
+ * few quads, else all states' together. */
+static const fs_cyc_pool *estimate_pool(const fs_cycle *cy)
+{
+    return cy->pool_cur && cy->pool_cur->quads >= 8.0 ? cy->pool_cur : &cy->pool_any;
+}
+
+/* Unit cycles of a pool's quads, memory traffic in cycles of bandwidth:
+ * the work a draw's estimate and the tiles' error estimate weigh. */
+static double pool_work(const fs_cycle *cy, const fs_cyc_pool *p)
+{
+    return p->raster + p->tex + p->frag + p->frag_bytes / (double)cy->cfg.memory_bytes_per_cycle;
+}
+
 /* Work of `area` pixels at the current pool's cost per fragment: the
  * measure of a draw that estimates filled draws (draw_by_work).  From the
  * areas, which are exact, and not from the sampled quads themselves, whose
  * work varied by about 6% from draw to draw on bench32 (a sixteenth of a
  * draw's area lands in the sampled tiles) where the true cycles fell
  * smoothly. */
-static void work_add_area(fs_cycle *cy, double area)
+static void work_add_area(fs_cycle *cy, const fs_cyc_pool *p, double area)
 {
-    const fs_cyc_pool *p = cy->pool_cur && cy->pool_cur->quads >= 8.0 ? cy->pool_cur : &cy->pool_any;
     if (p->frags > 0 && area > 0)
-        cy->draw_work += area * (p->raster + p->tex + p->frag + p->frag_bytes / (double)cy->cfg.memory_bytes_per_cycle) /
-                         p->frags;
+        cy->draw_work += area * pool_work(cy, p) / p->frags;
 }
 
 /* Times the current tile-sampled triangle as its estimated quads, spread
@@ -513,11 +525,11 @@ static void spread_triangle(fs_cycle *cy)
     /* The lumped charging of lines and points (fs_cycle_quad) scales by
      * areas over sampled fragments. */
     cy->kq = cy->frags_done >= 256 && cy->area_done > 0 ? cy->area_done / cy->frags_done : (double)cy->tiles.every;
-    const fs_cyc_pool *p = cy->pool_cur && cy->pool_cur->quads >= 8.0 ? cy->pool_cur : &cy->pool_any;
+    const fs_cyc_pool *p = estimate_pool(cy);
     if (p->quads <= 0 || p->frags <= 0 || !(area > 0))
         return;
     if (cy->seq_work)
-        work_add_area(cy, area);
+        work_add_area(cy, p, area);
     double q = area * p->quads / p->frags;
     double chunk = cy->tiles.every > 4 ? (double)cy->tiles.every : 4.0;
     double nch = ceil(q / chunk);
@@ -602,8 +614,7 @@ static bool seq_push(fs_cycle *cy, fs_cyc_kind *k, double c)
     return true;
 }
 
-/* The draw whose sampled quads were arriving is over: its entry keeps
- * their work. */
+/* The draw whose work was arriving is over: its entry keeps it. */
 static void seq_close_work(fs_cycle *cy)
 {
     if (cy->seq_work && cy->seq_work <= cy->nseq)
@@ -622,7 +633,7 @@ static ptrdiff_t seq_simulated(const fs_cycle *cy, const fs_cyc_kind *k, ptrdiff
     return -1;
 }
 
-/* A filled draw i from its sampled work w: on the line through two
+/* A filled draw i from its work w (work_add_area): on the line through two
  * simulated draws of its kind in (work, cycles), the two around it or the
  * two nearest on one side.  Cost drifts with the draw order as the depth
  * buffer fills, and linear interpolation of cycles by place missed that
@@ -674,7 +685,7 @@ static void charge_estimated_draws(fs_cycle *cy)
         ptrdiff_t a = seq_simulated(cy, k, (ptrdiff_t)i, -1), b = seq_simulated(cy, k, (ptrdiff_t)i, +1);
         double e, d;
         if (cy->seq[i].w >= 0.0 && draw_by_work(cy, k, a, b, (ptrdiff_t)i, &e, &d)) {
-            /* estimated from its own sampled work */
+            /* estimated from its own work */
         } else if (a >= 0 && b >= 0) {
             double ca = cy->seq[a].c, cb = cy->seq[b].c;
             e = ca + (cb - ca) * (double)((ptrdiff_t)i - a) / (double)(b - a);
@@ -777,7 +788,7 @@ bool fs_cycle_draw(fs_cycle *cy, fs_context *c, GLenum mode, size_t n)
                  * of its kind before and after it (cost drifts with the
                  * draw order: later draws meet a fuller depth buffer). */
                 uint64_t e = (uint64_t)llround(k->sum / (double)k->nsamp);
-                seq_push(cy, k, -1.0);
+                bool listed = seq_push(cy, k, -1.0);
                 cy->acc.draws_estimated++;
                 if (cy->record_draws)
                     emit_draw(cy, true, e);
@@ -785,9 +796,9 @@ bool fs_cycle_draw(fs_cycle *cy, fs_context *c, GLenum mode, size_t n)
                 /* Skipped, a draw that hides later ones leaves holes in
                  * the depth buffer, and the simulated draws after it came
                  * out 16% high (bench32).  Filled in the sampled tiles, it
-                 * costs a position test per triangle for most of them. */
+                 * costs about half a simulated draw (docs/cycle_model.md). */
                 cy->tiles.fill = cy->tiles.every > 1 && draw_writes_tests(c) && !c->occlusion_hook;
-                if (cy->tiles.fill)
+                if (cy->tiles.fill && listed)
                     cy->seq_work = cy->nseq;
                 return cy->tiles.fill;
             }
@@ -843,7 +854,7 @@ void fs_cycle_triangle(fs_cycle *cy)
 void fs_cycle_triangle_area(fs_cycle *cy, double area, int x, int y)
 {
     if (cy->tiles.fill) {
-        work_add_area(cy, area);
+        work_add_area(cy, estimate_pool(cy), area);
         return;
     }
     if (cy->tri_est)
@@ -913,7 +924,7 @@ static void sample_quad(fs_cycle *cy, fs_context *c, const fs_quad *q, unsigned 
     if (fill)
         return; /* its triangle has no area charged: only the costs count */
     cy->frags_cur += n;
-    tile_work_add(cy, q, v.raster + v.tex + v.frag + v.frag_bytes / (double)cy->cfg.memory_bytes_per_cycle);
+    tile_work_add(cy, q, pool_work(cy, &v));
 }
 
 void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q)
