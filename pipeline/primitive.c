@@ -30,7 +30,7 @@ typedef struct prim_ctx {
     fs_context *c;
     const fs_vs_setup *s;
     fs_pvert *pv;
-    const fs_ivert *iv;  /* lazy attributes: the inputs, else NULL */
+    fs_ivert *iv;        /* lazy attributes: the inputs, else NULL */
     const uint32_t *idx;
     int prov;            /* provoking position in each triangle, -1 smooth */
     bool fill;           /* an estimated draw run in the sampled tiles only */
@@ -83,7 +83,7 @@ static void tri_attributes(const prim_ctx *p, size_t a, size_t b, size_t cc)
     const size_t k[3] = {I(p, a), I(p, b), I(p, cc)};
     for (int i = 0; i < 3; i++)
         if (p->pv[k[i]].lazy)
-            fs_vs_attributes(p->s, &p->iv[k[i]], &p->pv[k[i]]);
+            fs_vs_attributes(p->c, p->s, p->iv, p->pv, k[i]);
 }
 
 /* A filled estimated draw (fs_cycle_tiles.fill) runs only the triangles
@@ -141,7 +141,7 @@ static void line(const prim_ctx *p, size_t a, size_t b)
     fs_clip_line(p->c, p->s, V(p, a), V(p, b));
 }
 
-void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv, const fs_ivert *iv,
+void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv, fs_ivert *iv,
                   const uint32_t *idx, size_t count, bool elements)
 {
     prim_ctx p = {c, s, pv, iv, idx, s->flat ? 2 : -1, iv && fs_cycle_tile_sample(c->cycle)->fill};

@@ -165,10 +165,20 @@ static void fetch(const fs_client_array *a, size_t i, float out[4], bool norm)
         }
     }
     if (a->type == GL_UNSIGNED_BYTE && norm) {
-        /* Byte colours (terrain, forest, bench): the same expression as
-         * below, without the switch per component. */
+        /* Byte colours (terrain, forest, bench): the expression below for
+         * each byte, evaluated by the compiler (a division per component
+         * was a tenth of sampled mode's vertex fetch). */
+#define U1(i) ((float)(i) / 255.0f)
+#define U4(i) U1(i), U1((i) + 1), U1((i) + 2), U1((i) + 3)
+#define U16(i) U4(i), U4((i) + 4), U4((i) + 8), U4((i) + 12)
+#define U64(i) U16(i), U16((i) + 16), U16((i) + 32), U16((i) + 48)
+        static const float unorm8[256] = {U64(0), U64(64), U64(128), U64(192)};
+#undef U64
+#undef U16
+#undef U4
+#undef U1
         for (int k = 0; k < a->size; k++)
-            out[k] = (float)p[k] / 255.0f;
+            out[k] = unorm8[p[k]];
         return;
     }
     for (int k = 0; k < a->size; k++) {
@@ -188,14 +198,19 @@ static void fetch(const fs_client_array *a, size_t i, float out[4], bool norm)
     }
 }
 
-/* Fills one input vertex from the enabled arrays, the current values
- * elsewhere. */
-static void fetch_vertex(fs_context *c, size_t i, fs_ivert *o)
+/* An input vertex's position from the vertex array. */
+static inline void fetch_position(const fs_context *c, size_t i, fs_ivert *o)
 {
-    const fs_array_state *A = &c->arrays;
     o->obj[0] = o->obj[1] = o->obj[2] = 0.0f;
     o->obj[3] = 1.0f;
-    fetch(&A->vertex, i, o->obj, false);
+    fetch(&c->arrays.vertex, i, o->obj, false);
+}
+
+/* Its other attributes from the enabled arrays, the current values
+ * elsewhere. */
+static void fetch_attributes(const fs_context *c, size_t i, fs_ivert *o)
+{
+    const fs_array_state *A = &c->arrays;
     if (A->color.enabled) {
         o->col[3] = 1.0f;
         fetch(&A->color, i, o->col, true);
@@ -216,6 +231,12 @@ static void fetch_vertex(fs_context *c, size_t i, fs_ivert *o)
     } else {
         memcpy(o->tc, c->current.texcoord, sizeof o->tc);
     }
+}
+
+static void fetch_vertex(const fs_context *c, size_t i, fs_ivert *o)
+{
+    fetch_position(c, i, o);
+    fetch_attributes(c, i, o);
 }
 
 /* ---- transformation ---- */
@@ -303,15 +324,21 @@ static inline void vs_attributes(const fs_vs_setup *s, const fs_ivert *v, fs_pve
         fs_mat_xform4(o->tc, s->tex, v->tc);
 }
 
+/* A box edge as a pixel within [0, 65536] (compares, not fminf/fmaxf,
+ * which are library calls here: this runs for every triangle). */
+static inline int box_pixel(float v)
+{
+    return v > 0.0f ? (v < 65536.0f ? (int)v : 65536) : 0;
+}
+
 /* Whether a window-space box touches a tile of sampled mode's tile sample
  * (one pixel of margin: fragments lie within the vertices' box). */
 bool fs_vs_box_sampled(const fs_cycle_tiles *t, float x0, float y0, float x1, float y1)
 {
     if (!(x0 <= x1 && y0 <= y1))
         return true; /* NaN: let the rasterizer decide */
-    float lim = 65536.0f;
-    int ix0 = (int)fminf(fmaxf(x0 - 1.0f, 0.0f), lim), iy0 = (int)fminf(fmaxf(y0 - 1.0f, 0.0f), lim);
-    int ix1 = (int)fminf(fmaxf(x1 + 1.0f, 0.0f), lim), iy1 = (int)fminf(fmaxf(y1 + 1.0f, 0.0f), lim);
+    int ix0 = box_pixel(x0 - 1.0f), iy0 = box_pixel(y0 - 1.0f);
+    int ix1 = box_pixel(x1 + 1.0f), iy1 = box_pixel(y1 + 1.0f);
     for (int ty = iy0 >> t->shift; ty <= iy1 >> t->shift; ty++)
         for (int tx = ix0 >> t->shift; tx <= ix1 >> t->shift; tx++)
             if (fs_cycle_tile_sampled(t, (uint32_t)tx, (uint32_t)ty))
@@ -319,10 +346,15 @@ bool fs_vs_box_sampled(const fs_cycle_tiles *t, float x0, float y0, float x1, fl
     return false;
 }
 
-void fs_vs_attributes(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out)
+static uint32_t index_at(const void *indices, GLenum type, size_t i);
+
+void fs_vs_attributes(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pvert *pv, size_t k)
 {
-    vs_attributes(s, in, out);
-    out->lazy = false;
+    const fs_vs_impl *v = fs_vs(c);
+    if (v->deferred)
+        fetch_attributes(c, v->src_indices ? index_at(v->src_indices, v->src_type, k) : v->src_first + k, &iv[k]);
+    vs_attributes(s, &iv[k], &pv[k]);
+    pv[k].lazy = false;
 }
 
 static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n,
@@ -425,12 +457,36 @@ static void draw_batch(fs_context *c, GLenum mode, size_t n, const uint32_t *idx
 {
     fs_vs_impl *v = fs_vs(c);
     if (!fs_vs_reserve_pv(c, n)) {
+        v->deferred = false;
         fs_error(c, GL_OUT_OF_MEMORY);
         return;
     }
     fs_vs_prepare(c, &v->setup);
     bool lazy = fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_sample(c, mode));
     fs_prim_draw(c, &v->setup, mode, v->pv, lazy ? v->iv : NULL, idx, count, elements);
+    v->deferred = false;
+}
+
+/* Fetches batch vertex k from array element `src`: with the tile sample
+ * active, its position only (the other attributes wait for fs_vs_attributes,
+ * which most vertices of sampled mode never reach). */
+static inline void fetch_batch(fs_context *c, bool deferred, size_t src, fs_ivert *o)
+{
+    if (deferred)
+        fetch_position(c, src, o);
+    else
+        fetch_vertex(c, src, o);
+}
+
+/* Where a batch's vertices come from, for fs_vs_attributes. */
+static bool defer_from(fs_context *c, GLenum mode, size_t first, const void *indices, GLenum type)
+{
+    fs_vs_impl *v = fs_vs(c);
+    v->deferred = fs_vs_tile_sample(c, mode) != NULL;
+    v->src_first = first;
+    v->src_indices = indices;
+    v->src_type = type;
+    return v->deferred;
 }
 
 void fs_exec_DrawArrays(fs_context *c, GLenum mode, GLint first, GLsizei count)
@@ -445,8 +501,9 @@ void fs_exec_DrawArrays(fs_context *c, GLenum mode, GLint first, GLsizei count)
     }
     if (!fs_vs_reserve_iv(c, (size_t)count)) { fs_error(c, GL_OUT_OF_MEMORY); return; }
     fs_vs_impl *v = fs_vs(c);
+    bool deferred = defer_from(c, mode, (size_t)first, NULL, 0);
     for (GLsizei i = 0; i < count; i++)
-        fetch_vertex(c, (size_t)first + (size_t)i, &v->iv[i]);
+        fetch_batch(c, deferred, (size_t)first + (size_t)i, &v->iv[i]);
     c->stats.vertices += (uint64_t)count;
     draw_batch(c, mode, (size_t)count, NULL, (size_t)count, c->prim.list_depth > 0);
 }
@@ -480,8 +537,9 @@ static void draw_elements(fs_context *c, GLenum mode, GLsizei count, GLenum type
         /* Dense indices: transform each referenced vertex once. */
         if (!fs_vs_reserve_iv(c, range) || !fs_vs_reserve_idx(c, n)) { fs_error(c, GL_OUT_OF_MEMORY); return; }
         v = fs_vs(c);
+        bool deferred = defer_from(c, mode, lo, NULL, 0);
         for (size_t i = 0; i < range; i++)
-            fetch_vertex(c, lo + i, &v->iv[i]);
+            fetch_batch(c, deferred, lo + i, &v->iv[i]);
         for (size_t i = 0; i < n; i++)
             v->idx[i] = index_at(indices, type, i) - lo;
         draw_batch(c, mode, range, v->idx, n, true);
@@ -489,8 +547,9 @@ static void draw_elements(fs_context *c, GLenum mode, GLsizei count, GLenum type
         /* Sparse indices: fetch in index order, so memory follows count. */
         if (!fs_vs_reserve_iv(c, n)) { fs_error(c, GL_OUT_OF_MEMORY); return; }
         v = fs_vs(c);
+        bool deferred = defer_from(c, mode, 0, indices, type);
         for (size_t i = 0; i < n; i++)
-            fetch_vertex(c, index_at(indices, type, i), &v->iv[i]);
+            fetch_batch(c, deferred, index_at(indices, type, i), &v->iv[i]);
         draw_batch(c, mode, n, NULL, n, true);
     }
 }

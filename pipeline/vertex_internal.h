@@ -76,6 +76,14 @@ typedef struct fs_vs_impl {
     uint32_t *idx;
     size_t idx_cap;
     fs_vs_setup setup;
+    /* An array draw in sampled mode's tile sample fetches positions only;
+     * a lazy vertex fetches its other attributes when it is lit
+     * (fs_vs_attributes).  Batch vertex k is array element
+     * src_indices[k] (of src_type) or, without indices, src_first + k. */
+    bool deferred;
+    size_t src_first;
+    const void *src_indices;
+    GLenum src_type;
     /* Tests observe what reaches the rasterizer through this (NULL in use). */
     void (*tri_hook)(void *user, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2);
     void *hook_user;
@@ -123,8 +131,9 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s);
  * then `lazy`; returns true). */
 bool fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n, const fs_cycle_tiles *tiles);
 const fs_cycle_tiles *fs_vs_tile_sample(const fs_context *c, GLenum mode);
-/* Colours and texture coordinates of one lazy vertex. */
-void fs_vs_attributes(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out);
+/* Colours and texture coordinates of lazy vertex k of the batch (its
+ * inputs fetched first when the draw deferred them). */
+void fs_vs_attributes(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pvert *pv, size_t k);
 /* Whether a window-space box can make fragments in a sampled tile. */
 bool fs_vs_box_sampled(const fs_cycle_tiles *t, float x0, float y0, float x1, float y1);
 
@@ -132,7 +141,7 @@ bool fs_vs_box_sampled(const fs_cycle_tiles *t, float x0, float y0, float x1, fl
  * NULL (vertices in order).  elements: the draw came as indices (glDrawElements
  * or a display list), which Mesa splits quads differently for.  iv: the
  * input vertices when fs_vs_process left the attributes lazy, else NULL. */
-void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv, const fs_ivert *iv,
+void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv, fs_ivert *iv,
                   const uint32_t *idx, size_t count, bool elements);
 bool fs_prim_mode_valid(GLenum mode);
 

@@ -332,32 +332,79 @@ TEST(tile_sample_full_screen)
     CHECK(e <= 0.02);
 }
 
-TEST(tile_sample_lighting_exact)
+/* A grid of lit 8 x 8 quads drawn from client arrays (normal and colour
+ * per vertex, GL_COLOR_MATERIAL): how 1, glDrawArrays per row; 2,
+ * glDrawElements per row (dense indices); 3, glDrawElements per column
+ * (indices spread over the arrays: fetched in index order). */
+enum { GRID_Q = WN / 8, GRID_V = GRID_Q * GRID_Q * 4 };
+static void lit_grid_arrays(fs_context *c, int how, float (*pos)[2], float (*nrm)[3], uint8_t (*col)[4])
 {
-    /* Lit quads of 8 x 8 pixels, each its own batch, most of which reach
-     * no sampled tile and so skip lighting in sampled mode: every pixel of
-     * a sampled tile must still equal full cycle mode's (the functional
-     * image), and the sample must leave other pixels unrendered. */
+    for (int q = 0; q < GRID_Q * GRID_Q; q++) {
+        int gx = (q % GRID_Q) * 8, gy = (q / GRID_Q) * 8;
+        for (int k = 0; k < 4; k++) {
+            int x = gx + (k == 1 || k == 2 ? 8 : 0), y = gy + (k >= 2 ? 8 : 0), i = q * 4 + k;
+            pos[i][0] = ndc(x);
+            pos[i][1] = ndc(y);
+            nrm[i][0] = (float)(x - WN / 2) / WN;
+            nrm[i][1] = (float)(y - WN / 2) / WN;
+            nrm[i][2] = 1.0f;
+            col[i][0] = (uint8_t)(60 + 2 * x);
+            col[i][1] = (uint8_t)(40 + 3 * y);
+            col[i][2] = (uint8_t)(200 - k * 30);
+            col[i][3] = 255;
+        }
+    }
+    fsglEnable(c, GL_COLOR_MATERIAL);
+    fsglEnableClientState(c, GL_VERTEX_ARRAY);
+    fsglEnableClientState(c, GL_NORMAL_ARRAY);
+    fsglEnableClientState(c, GL_COLOR_ARRAY);
+    fsglVertexPointer(c, 2, GL_FLOAT, 0, pos);
+    fsglNormalPointer(c, GL_FLOAT, 0, nrm);
+    fsglColorPointer(c, 4, GL_UNSIGNED_BYTE, 0, col);
+    for (int r = 0; r < GRID_Q; r++) {
+        if (how == 1) {
+            fsglDrawArrays(c, GL_QUADS, r * GRID_Q * 4, GRID_Q * 4);
+            continue;
+        }
+        GLushort idx[GRID_Q * 6];
+        for (int j = 0; j < GRID_Q; j++) {
+            int q = how == 2 ? r * GRID_Q + j : j * GRID_Q + r;
+            static const int tri[6] = {0, 1, 2, 0, 2, 3};
+            for (int k = 0; k < 6; k++)
+                idx[j * 6 + k] = (GLushort)(q * 4 + tri[k]);
+        }
+        fsglDrawElements(c, GL_TRIANGLES, GRID_Q * 6, GL_UNSIGNED_SHORT, idx);
+    }
+}
+
+static void lighting_exact_case(check_state *check_st_, int how)
+{
     uint8_t img[2][WN * WN * 4];
     fs_context *cs = NULL;
     fs_cycle *cys = NULL;
+    float pos[GRID_V][2], nrm[GRID_V][3];
+    uint8_t col[GRID_V][4];
     for (int m = 0; m < 2; m++) {
         fs_cycle *cy;
         fs_context *c = tile_sampled_context(16, 4, 1, &cy, m ? FS_CYCLE_SAMPLED : FS_CYCLE_FULL);
-        const float pos[4] = {0.3f, 0.5f, 1.0f, 0.0f};
+        const float lpos[4] = {0.3f, 0.5f, 1.0f, 0.0f};
         fsglEnable(c, GL_LIGHTING);
         fsglEnable(c, GL_LIGHT0);
-        fsglLightfv(c, GL_LIGHT0, GL_POSITION, pos);
-        for (int gy = 0; gy < WN; gy += 8)
-            for (int gx = 0; gx < WN; gx += 8) {
-                fsglBegin(c, GL_QUADS);
-                fsglNormal3f(c, (float)(gx - WN / 2) / WN, (float)(gy - WN / 2) / WN, 1.0f);
-                fsglVertex2f(c, ndc(gx), ndc(gy));
-                fsglVertex2f(c, ndc(gx + 8), ndc(gy));
-                fsglVertex2f(c, ndc(gx + 8), ndc(gy + 8));
-                fsglVertex2f(c, ndc(gx), ndc(gy + 8));
-                fsglEnd(c);
-            }
+        fsglLightfv(c, GL_LIGHT0, GL_POSITION, lpos);
+        if (how)
+            lit_grid_arrays(c, how, pos, nrm, col);
+        else
+            for (int gy = 0; gy < WN; gy += 8)
+                for (int gx = 0; gx < WN; gx += 8) {
+                    fsglBegin(c, GL_QUADS);
+                    fsglNormal3f(c, (float)(gx - WN / 2) / WN, (float)(gy - WN / 2) / WN, 1.0f);
+                    fsglVertex2f(c, ndc(gx), ndc(gy));
+                    fsglVertex2f(c, ndc(gx + 8), ndc(gy));
+                    fsglVertex2f(c, ndc(gx + 8), ndc(gy + 8));
+                    fsglVertex2f(c, ndc(gx), ndc(gy + 8));
+                    fsglEnd(c);
+                }
+        CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
         memcpy(img[m], c->fb.color, sizeof img[m]);
         if (m) {
             cs = c;
@@ -384,6 +431,18 @@ TEST(tile_sample_lighting_exact)
     CHECK_EQ_INT(unrendered, WN * WN - compared);
     fs_cycle_destroy(cys);
     fs_context_destroy(cs);
+}
+
+TEST(tile_sample_lighting_exact)
+{
+    /* Lit quads of 8 x 8 pixels, each its own batch, most of which reach
+     * no sampled tile and so skip lighting in sampled mode: every pixel of
+     * a sampled tile must still equal full cycle mode's (the functional
+     * image), and the sample must leave other pixels unrendered.  The
+     * same from client arrays, whose lazy vertices fetch their normals and
+     * colours only when lit (a wrong array element gives a wrong colour). */
+    for (int how = 0; how < 4; how++)
+        lighting_exact_case(check_st_, how);
 }
 
 TEST(draw_sample_fill_keeps_sampled_tiles_exact)
