@@ -33,7 +33,10 @@ typedef struct prim_ctx {
     fs_ivert *iv;        /* lazy attributes: the inputs, else NULL */
     const uint32_t *idx;
     int prov;            /* provoking position in each triangle, -1 smooth */
-    bool fill;           /* an estimated draw run in the sampled tiles only */
+    bool tiles;          /* sampled mode's tile sample is on for this draw */
+    bool charge;         /* ... and a triangle outside it may be only charged */
+    bool fill;           /* an estimated draw run in the sampled tiles only:
+                            the others are not timed, so nothing else needs them */
 } prim_ctx;
 
 static inline size_t I(const prim_ctx *p, size_t i)
@@ -71,31 +74,14 @@ static bool box_sampled(const prim_ctx *p, const fs_pvert *v0, const fs_pvert *v
 }
 
 /* Sampled mode's tile sample: lights the lazy vertices of a triangle that
- * may make fragments in a sampled tile (its box meets one, or it is
- * clipped); the others are charged by area and never read their colours. */
+ * may make fragments in a sampled tile; the others are charged by area and
+ * never read their colours. */
 static void tri_attributes(const prim_ctx *p, size_t a, size_t b, size_t cc)
 {
-    fs_pvert *v0 = V(p, a), *v1 = V(p, b), *v2 = V(p, cc);
-    if (!(v0->lazy | v1->lazy | v2->lazy) || (v0->mask & v1->mask & v2->mask))
-        return;
-    if ((v0->mask | v1->mask | v2->mask) == 0 && !box_sampled(p, v0, v1, v2))
-        return;
     const size_t k[3] = {I(p, a), I(p, b), I(p, cc)};
     for (int i = 0; i < 3; i++)
         if (p->pv[k[i]].lazy)
             fs_vs_attributes(p->c, p->s, p->iv, p->pv, k[i]);
-}
-
-/* A filled estimated draw (fs_cycle_tiles.fill) runs only the triangles
- * that may make fragments in a sampled tile: the others are not timed, so
- * nothing else needs them. */
-static bool tri_misses_sample(const prim_ctx *p, const fs_pvert *v0, const fs_pvert *v1, const fs_pvert *v2)
-{
-    if (v0->mask & v1->mask & v2->mask)
-        return true;
-    if (v0->mask | v1->mask | v2->mask)
-        return false; /* clipped: rare, left to the clipper */
-    return !box_sampled(p, v0, v1, v2);
 }
 
 /* A filled draw's triangle that misses the sample still counts its area
@@ -118,17 +104,29 @@ static void tri(const prim_ctx *p, size_t a, size_t b, size_t cc)
     fs_context *c = p->c;
     const fs_pvert *v0 = V(p, a), *v1 = V(p, b), *v2 = V(p, cc);
     c->stats.triangles_in++;
-    if (p->fill && tri_misses_sample(p, v0, v1, v2)) {
+    unsigned any = v0->mask | v1->mask | v2->mask, all = v0->mask & v1->mask & v2->mask;
+    /* Whether the triangle may make fragments in a sampled tile: a clipped
+     * one is left to the clipper; a batch without lazy vertices reaches
+     * none (fs_vs_process). */
+    bool reach = !p->tiles || (p->iv && !all && (any || box_sampled(p, v0, v1, v2)));
+    if (p->fill && !reach) {
         fill_area(c, v0, v1, v2);
         return;
     }
     if (c->cycle)
         fs_cycle_triangle(c->cycle);
-    if (p->iv)
+    if (p->iv && reach)
         tri_attributes(p, a, b, cc);
-    if ((v0->mask | v1->mask | v2->mask) == 0) {
+    if (any == 0) {
+        if (!reach && p->charge) {
+            /* Only its area counts: no rasterizer vertices to build. */
+            const float x[3] = {v0->win[0], v1->win[0], v2->win[0]};
+            const float y[3] = {v0->win[4], v1->win[4], v2->win[4]};
+            fs_raster_triangle_charge(c, x, y);
+            return;
+        }
         fs_emit_triangle(c, p->s, v0, v1, v2, p->prov);
-    } else if (v0->mask & v1->mask & v2->mask) {
+    } else if (all) {
         c->stats.triangles_rejected++;
     } else {
         c->stats.triangles_clipped++;
@@ -144,7 +142,10 @@ static void line(const prim_ctx *p, size_t a, size_t b)
 void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv, fs_ivert *iv,
                   const uint32_t *idx, size_t count, bool elements)
 {
-    prim_ctx p = {c, s, pv, iv, idx, s->flat ? 2 : -1, iv && fs_cycle_tile_sample(c->cycle)->fill};
+    const bool tiles = fs_vs_tile_sample(c, mode) != NULL;
+    prim_ctx p = {c, s, pv, iv, idx, s->flat ? 2 : -1, tiles,
+                  tiles && !c->raster.reference_path && !fs_vs(c)->tri_hook,
+                  iv && fs_cycle_tile_sample(c->cycle)->fill};
     bool pipeline = false;
     for (size_t i = 0; i < count && !pipeline; i++)
         pipeline = V(&p, i)->mask != 0;

@@ -327,17 +327,28 @@ static void calc_coef(fs_plane *p, const coef_args *g, float a0, float a1, float
 }
 
 static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e, const fs_cycle_tiles *t);
-static bool tile_sample_begin(fs_context *c, const fs_cycle_tiles *t, const tri_edges *e);
+static bool tile_sample_begin(fs_context *c, const fs_cycle_tiles *t, const tri_edges *e, int64_t area);
 static void raster_tri_reference(fs_context *c, const fs_prim_setup *s, const tri_edges *e);
 
-void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2)
+/* What every triangle needs before its edges: snapped positions in
+ * llvmpipe's counter-clockwise order, facing and the on-screen box. */
+typedef struct tri_snap {
+    vpos p[3];       /* unsnapped raster positions, in the vertices' order */
+    int idx[3];      /* the vertices in counter-clockwise order */
+    int64_t x[3], y[3]; /* snapped, in that order */
+    int64_t area;    /* twice the signed area in subpixels squared */
+    bool front;
+    tri_edges e;     /* the box only */
+} tri_snap;
+
+/* false when the triangle makes no fragment (culled, degenerate or off
+ * screen; counted). */
+static bool tri_snap_box(fs_context *c, const float px[3], const float py[3], tri_snap *t)
 {
     const fs_raster_state *r = &c->raster;
     const int W = c->fb.width, H = c->fb.height;
     const int order = r->subpixel_bits;
     const float fixed_one = (float)(1 << order);
-    const fs_rvertex *v[3] = {v0, v1, v2};
-    vpos p[3];
     int64_t X[3], Y[3];
 
     /* Snap (lp_setup_tri.c calc_fixed_position): subtract the pixel-centre
@@ -345,13 +356,13 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
      * out-of-range positions cannot be snapped: the triangle is dropped
      * and counted with the culled ones. */
     for (int i = 0; i < 3; i++) {
-        p[i].x = v[i]->x;
-        p[i].y = r->use_y_raster ? v[i]->y_raster : fs_raster_y(H, v[i]->y);
-        float fx = (p[i].x - 0.5f) * fixed_one;
-        float fy = (p[i].y - 0.5f) * fixed_one;
+        t->p[i].x = px[i];
+        t->p[i].y = py[i];
+        float fx = (px[i] - 0.5f) * fixed_one;
+        float fy = (py[i] - 0.5f) * fixed_one;
         if (!(fabsf(fx) < FIXED_LIMIT) || !(fabsf(fy) < FIXED_LIMIT)) {
             c->stats.triangles_culled++;
-            return;
+            return false;
         }
         X[i] = round_even(fx);
         Y[i] = round_even(fy);
@@ -363,66 +374,100 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     int64_t area = (X[0] - X[1]) * (Y[2] - Y[0]) - (X[2] - X[0]) * (Y[0] - Y[1]);
     if (area == 0) {
         c->stats.triangles_culled++;
-        return;
+        return false;
     }
+    t->area = area;
     /* GL 1.5 spec 3.5.1: facing from the sign of the area and glFrontFace. */
     bool ccw = area > 0;
     bool front = (r->front_face == GL_CCW) ? ccw : !ccw;
     if (fs_raster_culled(r, front)) {
         c->stats.triangles_culled++;
-        return;
+        return false;
     }
+    t->front = front;
+
+    /* llvmpipe rasterizes every triangle counter-clockwise; a clockwise one
+     * has v0 and v1 swapped (last-vertex provoking convention), which also
+     * changes which vertex the attribute planes are built from. */
+    int *idx = t->idx;
+    idx[0] = 0;
+    idx[1] = 1;
+    idx[2] = 2;
+    if (!ccw) {
+        idx[0] = 1;
+        idx[1] = 0;
+    }
+    int64_t *x = t->x, *y = t->y;
+    for (int i = 0; i < 3; i++) {
+        x[i] = X[idx[i]];
+        y[i] = Y[idx[i]];
+    }
+
+    /* Bounding box (do_triangle_ccw): inclusive x0, exclusive max x; the y
+     * rounding is adjusted by one subpixel for the bottom-edge rule. */
+    const int adj = 1;
+    int64_t minx = x[0], maxx = x[0], miny = y[0], maxy = y[0];
+    for (int i = 1; i < 3; i++) {
+        if (x[i] < minx) minx = x[i];
+        if (x[i] > maxx) maxx = x[i];
+        if (y[i] < miny) miny = y[i];
+        if (y[i] > maxy) maxy = y[i];
+    }
+    int64_t bx0 = floor_shift(minx, order);
+    int64_t bx1 = floor_shift(maxx - 1, order);
+    int64_t by0 = floor_shift(miny + adj, order);
+    int64_t by1 = floor_shift(maxy - 1 + adj, order);
+    /* Pixel ownership (GL 1.5 spec 4.1.1): only the window's pixels. */
+    if (bx0 < 0) bx0 = 0;
+    if (by0 < 0) by0 = 0;
+    if (bx1 > W - 1) bx1 = W - 1;
+    if (by1 > H - 1) by1 = H - 1;
+    if (bx0 > bx1 || by0 > by1) {
+        /* Entirely off screen: llvmpipe counts it culled too. */
+        c->stats.triangles_rasterized++;
+        return false;
+    }
+    t->e.x0 = (int)bx0;
+    t->e.x1 = (int)bx1;
+    t->e.y0 = (int)by0;
+    t->e.y1 = (int)by1;
+    return true;
+}
+
+void fs_raster_triangle_charge(fs_context *c, const float x[3], const float y_raster[3])
+{
+    tri_snap t;
+    if (!tri_snap_box(c, x, y_raster, &t))
+        return;
+    (void)tile_sample_begin(c, fs_cycle_tile_sample(c->cycle), &t.e, t.area);
+    c->stats.triangles_rasterized++;
+}
+
+void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2)
+{
+    const fs_raster_state *r = &c->raster;
+    const int W = c->fb.width, H = c->fb.height;
+    const int order = r->subpixel_bits;
+    const fs_rvertex *v[3] = {v0, v1, v2};
+    float px[3], py[3];
+    for (int i = 0; i < 3; i++) {
+        px[i] = v[i]->x;
+        py[i] = r->use_y_raster ? v[i]->y_raster : fs_raster_y(H, v[i]->y);
+    }
+    tri_snap t;
+    if (!tri_snap_box(c, px, py, &t))
+        return;
+    const bool front = t.front;
+    const vpos *p = t.p;
+    const int *idx = t.idx;
+    const int64_t *x = t.x, *y = t.y;
+    tri_edges e = t.e;
     GLenum mode = r->polygon_mode[front ? 0 : 1];
     if (mode == GL_LINE)
         fs_unsupported(c, "glPolygonMode(GL_LINE)");
     else if (mode == GL_POINT)
         fs_unsupported(c, "glPolygonMode(GL_POINT)");
 
-    /* llvmpipe rasterizes every triangle counter-clockwise; a clockwise one
-     * has v0 and v1 swapped (last-vertex provoking convention), which also
-     * changes which vertex the attribute planes are built from. */
-    int idx[3] = {0, 1, 2};
-    if (!ccw) {
-        idx[0] = 1;
-        idx[1] = 0;
-    }
-    int64_t x[3], y[3];
-    for (int i = 0; i < 3; i++) {
-        x[i] = X[idx[i]];
-        y[i] = Y[idx[i]];
-    }
-
-    tri_edges e;
-    /* Bounding box (do_triangle_ccw): inclusive x0, exclusive max x; the y
-     * rounding is adjusted by one subpixel for the bottom-edge rule. */
-    {
-        const int adj = 1;
-        int64_t minx = x[0], maxx = x[0], miny = y[0], maxy = y[0];
-        for (int i = 1; i < 3; i++) {
-            if (x[i] < minx) minx = x[i];
-            if (x[i] > maxx) maxx = x[i];
-            if (y[i] < miny) miny = y[i];
-            if (y[i] > maxy) maxy = y[i];
-        }
-        int64_t bx0 = floor_shift(minx, order);
-        int64_t bx1 = floor_shift(maxx - 1, order);
-        int64_t by0 = floor_shift(miny + adj, order);
-        int64_t by1 = floor_shift(maxy - 1 + adj, order);
-        /* Pixel ownership (GL 1.5 spec 4.1.1): only the window's pixels. */
-        if (bx0 < 0) bx0 = 0;
-        if (by0 < 0) by0 = 0;
-        if (bx1 > W - 1) bx1 = W - 1;
-        if (by1 > H - 1) by1 = H - 1;
-        if (bx0 > bx1 || by0 > by1) {
-            /* Entirely off screen: llvmpipe counts it culled too. */
-            c->stats.triangles_rasterized++;
-            return;
-        }
-        e.x0 = (int)bx0;
-        e.x1 = (int)bx1;
-        e.y0 = (int)by0;
-        e.y1 = (int)by1;
-    }
     for (int i = 0; i < 3; i++) {
         int j = (i + 1) % 3;
         int64_t dcdx = y[i] - y[j];
@@ -441,7 +486,7 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     /* Sampled mode's tile sample: a triangle none of whose box's tiles is
      * sampled is charged its area and needs no attribute planes. */
     const fs_cycle_tiles *ts = r->reference_path ? NULL : fs_cycle_tiles_active(c->cycle);
-    if (ts && !tile_sample_begin(c, ts, &e)) {
+    if (ts && !tile_sample_begin(c, ts, &e, t.area)) {
         c->stats.triangles_rasterized++;
         return;
     }
@@ -616,15 +661,14 @@ static inline void raster_tri_box(fs_context *c, const fs_prim_setup *s, const t
  * the sampled quads so that their fragments add up to the areas (a ratio
  * estimator).  True when a sampled tile meets the box (tiles are at least
  * 2 pixels wide and aligned to even coordinates, so they hold whole quads). */
-static bool tile_sample_begin(fs_context *c, const fs_cycle_tiles *t, const tri_edges *e)
+static bool tile_sample_begin(fs_context *c, const fs_cycle_tiles *t, const tri_edges *e, int64_t area2)
 {
     const int H = c->fb.height;
     const int gy0 = fs_raster_row_to_gl(H, e->y1), gy1 = fs_raster_row_to_gl(H, e->y0);
     const int qx0 = e->x0 & ~1, qy0 = gy0 & ~1;
-    int64_t cross = e->dcdx[0] * e->dcdy[1] - e->dcdx[1] * e->dcdy[0];
     /* Scaling by a power of two is exact: the same as dividing by 2 and
-     * then by 2^(4 * subpixel bits), without a libm call per triangle. */
-    double area = fabs((double)cross) * (0.5 / (double)((int64_t)1 << (4 * c->raster.subpixel_bits)));
+     * then by 2^(2 * subpixel bits), without a libm call per triangle. */
+    double area = fabs((double)area2) * (0.5 / (double)((int64_t)1 << (2 * c->raster.subpixel_bits)));
     double box = (double)(e->x1 - e->x0 + 1) * (double)(e->y1 - e->y0 + 1);
     fs_cycle_triangle_area(c->cycle, area < box ? area : box, (e->x0 + e->x1) / 2, (gy0 + gy1) / 2);
     const int sh = t->shift;

@@ -105,6 +105,11 @@ void fs_raster_state_init(fs_raster_state *r, int subpixel_bits);
 /* Decides facing, culls, applies polygon offset and rasterizes.  Vertices are
  * in the order the primitive gave them (their winding decides facing). */
 void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2);
+/* Sampled mode's tile sample: a triangle known to make no fragment in a
+ * sampled tile is only snapped, culled and charged its area, as
+ * fs_raster_triangle would, from its window x and y in llvmpipe's frame
+ * (fs_rvertex.y_raster). */
+void fs_raster_triangle_charge(fs_context *c, const float x[3], const float y_raster[3]);
 void fs_raster_line(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1);
 void fs_raster_point(fs_context *c, const fs_rvertex *v);
 #endif

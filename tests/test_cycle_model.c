@@ -18,6 +18,7 @@
 #include "check.h"
 #include "../pipeline/context.h"
 #include "../rtl_model/cycle_internal.h"
+#include "../pipeline/vertex_internal.h"
 #include "../glext/GL_FRAGSIM_occlusion_unit.h"
 
 TEST(single_stage_closed_form)
@@ -445,6 +446,73 @@ TEST(tile_sample_lighting_exact)
         lighting_exact_case(check_st_, how);
 }
 
+static void count_tri(void *user, const fs_rvertex *a, const fs_rvertex *b, const fs_rvertex *d)
+{
+    (void)a, (void)b, (void)d;
+    ++*(int *)user;
+}
+
+TEST(tile_sample_charged_triangles_as_rasterized)
+{
+    /* Small triangles of every winding, some degenerate, some partly or
+     * wholly off screen, with back faces culled, drawn from an array in
+     * sampled mode: those outside the sampled tiles are only snapped and
+     * charged their area (fs_raster_triangle_charge).  A rasterizer hook
+     * sends every triangle through fs_raster_triangle instead; both runs
+     * must give the same cycles and the same triangle counts. */
+    enum { NT = 400 };
+    float pos[NT * 3][2];
+    uint32_t r = 12345;
+    for (int t = 0; t < NT; t++) {
+        float px[3], py[3];
+        for (int k = 0; k < 3; k++) {
+            r = r * 1103515245u + 12345u;
+            float u = (float)((r >> 8) % 1100) / 100.0f; /* 0 .. 11 pixels */
+            r = r * 1103515245u + 12345u;
+            float v = (float)((r >> 8) % 1100) / 100.0f;
+            px[k] = k ? px[0] + u - 5.5f : u * (WN + 16) / 11.0f - 8.0f;
+            py[k] = k ? py[0] + v - 5.5f : v * (WN + 16) / 11.0f - 8.0f;
+        }
+        if (t % 10 == 9)
+            px[2] = px[1], py[2] = py[1]; /* degenerate */
+        for (int k = 0; k < 3; k++) {
+            pos[t * 3 + k][0] = 2.0f * px[k] / WN - 1.0f;
+            pos[t * 3 + k][1] = 2.0f * py[k] / WN - 1.0f;
+        }
+    }
+    uint64_t cycles[2];
+    uint64_t counts[2][3];
+    int hooked = 0;
+    for (int run = 0; run < 2; run++) {
+        fs_cycle *cy;
+        fs_context *c = tile_sampled_context(16, 4, 1, &cy, FS_CYCLE_SAMPLED);
+        if (run)
+            fs_vs(c)->tri_hook = count_tri, fs_vs(c)->hook_user = &hooked;
+        fsglEnable(c, GL_CULL_FACE);
+        fsglEnable(c, GL_DEPTH_TEST);
+        fsglEnableClientState(c, GL_VERTEX_ARRAY);
+        fsglVertexPointer(c, 2, GL_FLOAT, 0, pos);
+        for (int k = 0; k < 4; k++)
+            fsglDrawArrays(c, GL_TRIANGLES, k * NT / 4 * 3, NT / 4 * 3);
+        CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+        fs_cycle_stats f, t;
+        fs_cycle_frame_end(cy, &f);
+        fs_cycle_totals(cy, &t);
+        cycles[run] = t.cycles;
+        counts[run][0] = c->stats.triangles_rasterized;
+        counts[run][1] = c->stats.triangles_culled;
+        counts[run][2] = t.fragments;
+        fs_cycle_destroy(cy);
+        fs_context_destroy(c);
+    }
+    CHECK(hooked > NT / 2); /* the hooked run rasterized most triangles */
+    CHECK(counts[0][0] > 0 && counts[0][1] > NT / 4);
+    CHECK(cycles[0] > 0);
+    CHECK_EQ_UINT(cycles[0], cycles[1]);
+    for (int k = 0; k < 3; k++)
+        CHECK_EQ_UINT(counts[0][k], counts[1][k]);
+}
+
 TEST(draw_sample_fill_keeps_sampled_tiles_exact)
 {
     /* Fifteen screen-filling quads of one kind, back to front, each in its
@@ -522,6 +590,7 @@ TEST_LIST = {
     TEST_ENTRY(tile_sample_lattice),
     TEST_ENTRY(tile_sample_full_screen),
     TEST_ENTRY(tile_sample_lighting_exact),
+    TEST_ENTRY(tile_sample_charged_triangles_as_rasterized),
     TEST_ENTRY(draw_sample_fill_keeps_sampled_tiles_exact),
     TEST_END,
 };
