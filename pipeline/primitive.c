@@ -115,8 +115,8 @@ static void tri(const prim_ctx *p, size_t a, size_t b, size_t cc)
     }
     if (c->cycle)
         fs_cycle_triangle(c->cycle);
-    if (p->iv && reach)
-        tri_attributes(p, a, b, cc);
+    if (p->iv && (reach || !p->charge))
+        tri_attributes(p, a, b, cc); /* the rasterizer reads what it is given */
     if (any == 0) {
         if (!reach && p->charge) {
             /* Only its area counts: no rasterizer vertices to build. */

@@ -393,8 +393,13 @@ static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *
      * fs_prim_draw, only where a triangle's box meets one: big batches
      * (whole objects) touch some sampled tile almost always. */
     for (size_t i = 0; i < n; i++) {
-        memset(out[i].col, 0, sizeof out[i].col);
-        memset(out[i].tc, 0, sizeof out[i].tc);
+        /* A lazy vertex is lit before any triangle reads it (fs_prim_draw);
+         * the others are read as zeros by triangles charged or clipped
+         * away outside the sample. */
+        if (!need) {
+            memset(out[i].col, 0, sizeof out[i].col);
+            memset(out[i].tc, 0, sizeof out[i].tc);
+        }
         out[i].lazy = need;
     }
     return need;
