@@ -327,13 +327,13 @@ static void calc_coef(fs_plane *p, const coef_args *g, float a0, float a1, float
 }
 
 static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e, const fs_cycle_tiles *t);
-static bool tile_sample_begin(fs_context *c, const fs_cycle_tiles *t, const tri_edges *e, int64_t area);
+static void charge_area(fs_context *c, const tri_edges *e, int64_t area2);
+static bool box_meets_sample(const fs_context *c, const fs_cycle_tiles *t, const tri_edges *e);
 static void raster_tri_reference(fs_context *c, const fs_prim_setup *s, const tri_edges *e);
 
 /* What every triangle needs before its edges: snapped positions in
  * llvmpipe's counter-clockwise order, facing and the on-screen box. */
 typedef struct tri_snap {
-    vpos p[3];       /* unsnapped raster positions, in the vertices' order */
     int idx[3];      /* the vertices in counter-clockwise order */
     int64_t x[3], y[3]; /* snapped, in that order */
     int64_t area;    /* twice the signed area in subpixels squared */
@@ -356,8 +356,6 @@ static bool tri_snap_box(fs_context *c, const float px[3], const float py[3], tr
      * out-of-range positions cannot be snapped: the triangle is dropped
      * and counted with the culled ones. */
     for (int i = 0; i < 3; i++) {
-        t->p[i].x = px[i];
-        t->p[i].y = py[i];
         float fx = (px[i] - 0.5f) * fixed_one;
         float fy = (py[i] - 0.5f) * fixed_one;
         if (!(fabsf(fx) < FIXED_LIMIT) || !(fabsf(fy) < FIXED_LIMIT)) {
@@ -439,7 +437,7 @@ void fs_raster_triangle_charge(fs_context *c, const float x[3], const float y_ra
     tri_snap t;
     if (!tri_snap_box(c, x, y_raster, &t))
         return;
-    (void)tile_sample_begin(c, fs_cycle_tile_sample(c->cycle), &t.e, t.area);
+    charge_area(c, &t.e, t.area);
     c->stats.triangles_rasterized++;
 }
 
@@ -458,7 +456,6 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     if (!tri_snap_box(c, px, py, &t))
         return;
     const bool front = t.front;
-    const vpos *p = t.p;
     const int *idx = t.idx;
     const int64_t *x = t.x, *y = t.y;
     tri_edges e = t.e;
@@ -486,9 +483,12 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     /* Sampled mode's tile sample: a triangle none of whose box's tiles is
      * sampled is charged its area and needs no attribute planes. */
     const fs_cycle_tiles *ts = r->reference_path ? NULL : fs_cycle_tiles_active(c->cycle);
-    if (ts && !tile_sample_begin(c, ts, &e, t.area)) {
-        c->stats.triangles_rasterized++;
-        return;
+    if (ts) {
+        charge_area(c, &e, t.area);
+        if (!box_meets_sample(c, ts, &e)) {
+            c->stats.triangles_rasterized++;
+            return;
+        }
     }
     /* Small triangles land on cold framebuffer lines: start fetching the
      * depth and colour rows now so the misses overlap the plane setup
@@ -507,7 +507,7 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     /* Attribute planes (lp_state_setup.c init_args/calc_coef4) from the
      * unsnapped float positions, in llvmpipe's vertex order. */
     const fs_rvertex *a = v[idx[0]], *b = v[idx[1]], *d = v[idx[2]];
-    vpos pa = p[idx[0]], pb = p[idx[1]], pd = p[idx[2]];
+    vpos pa = {px[idx[0]], py[idx[0]]}, pb = {px[idx[1]], py[idx[1]]}, pd = {px[idx[2]], py[idx[2]]};
     coef_args g;
     float dx01 = pa.x - pb.x, dy01 = pa.y - pb.y;
     float dx20 = pd.x - pa.x, dy20 = pd.y - pa.y;
@@ -656,21 +656,27 @@ static inline void raster_tri_box(fs_context *c, const fs_prim_setup *s, const t
 }
 
 /* Sampled mode's tile sample (docs/cycle_model.md): the triangle's area in
- * pixels (the edge vectors' cross product is twice the area, in units of
- * 2^(4 * subpixel bits)), at most its box, goes to the model, which charges
- * the sampled quads so that their fragments add up to the areas (a ratio
- * estimator).  True when a sampled tile meets the box (tiles are at least
- * 2 pixels wide and aligned to even coordinates, so they hold whole quads). */
-static bool tile_sample_begin(fs_context *c, const fs_cycle_tiles *t, const tri_edges *e, int64_t area2)
+ * pixels (area2 is twice it, in units of 2^(2 * subpixel bits)), at most
+ * its box, goes to the model, which times every triangle by its area and
+ * prices it with the sampled quads. */
+static void charge_area(fs_context *c, const tri_edges *e, int64_t area2)
 {
     const int H = c->fb.height;
     const int gy0 = fs_raster_row_to_gl(H, e->y1), gy1 = fs_raster_row_to_gl(H, e->y0);
-    const int qx0 = e->x0 & ~1, qy0 = gy0 & ~1;
     /* Scaling by a power of two is exact: the same as dividing by 2 and
      * then by 2^(2 * subpixel bits), without a libm call per triangle. */
     double area = fabs((double)area2) * (0.5 / (double)((int64_t)1 << (2 * c->raster.subpixel_bits)));
     double box = (double)(e->x1 - e->x0 + 1) * (double)(e->y1 - e->y0 + 1);
     fs_cycle_triangle_area(c->cycle, area < box ? area : box, (e->x0 + e->x1) / 2, (gy0 + gy1) / 2);
+}
+
+/* Whether a sampled tile meets the box (tiles are at least 2 pixels wide
+ * and aligned to even coordinates, so they hold whole quads). */
+static bool box_meets_sample(const fs_context *c, const fs_cycle_tiles *t, const tri_edges *e)
+{
+    const int H = c->fb.height;
+    const int gy0 = fs_raster_row_to_gl(H, e->y1), gy1 = fs_raster_row_to_gl(H, e->y0);
+    const int qx0 = e->x0 & ~1, qy0 = gy0 & ~1;
     const int sh = t->shift;
     for (int ty = qy0 >> sh; ty <= gy1 >> sh; ty++)
         for (int tx = qx0 >> sh; tx <= e->x1 >> sh; tx++)
