@@ -976,6 +976,18 @@ static inline int queue_push(fs_trace_reader *r, pending *p)
     return 0;
 }
 
+/* The queued call numbered no, newest first (a leave event usually
+ * closes the call entered last), or NULL. */
+static pending *queue_find(const fs_trace_reader *r, uint64_t no)
+{
+    for (size_t i = r->qcount; i-- > 0;) {
+        pending *q = r->q[(r->qhead + i) & (r->qcap - 1)];
+        if (q->call.no == no)
+            return q;
+    }
+    return NULL;
+}
+
 static pending *queue_pop(fs_trace_reader *r)
 {
     pending *p = r->q[r->qhead];
@@ -1020,14 +1032,7 @@ static int parse_leave(fs_trace_reader *r, uint64_t off)
     uint64_t no;
     if (rd_uint(r, &no))
         return -1;
-    pending *p = NULL;
-    for (size_t i = r->qcount; i-- > 0;) {
-        pending *q = r->q[(r->qhead + i) & (r->qcap - 1)];
-        if (q->call.no == no) {
-            p = q;
-            break;
-        }
-    }
+    pending *p = queue_find(r, no);
     if (p && p->complete)
         return rfail_at(r, off, "second leave event for call %llu (%s)", (unsigned long long)no,
                         p->call.name);
@@ -1331,14 +1336,7 @@ static int fast_leave(fs_trace_reader *r)
     uint64_t no;
     if (!cur_uint(&q, end, &no))
         return 0;
-    pending *p = NULL;
-    for (size_t i = r->qcount; i-- > 0;) {
-        pending *c = r->q[(r->qhead + i) & (r->qcap - 1)];
-        if (c->call.no == no) {
-            p = c;
-            break;
-        }
-    }
+    pending *p = queue_find(r, no);
     if (!p || p->complete || !fast_details(r, p, 1, &q, end))
         return 0;
     p->complete = 1;
