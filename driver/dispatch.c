@@ -325,7 +325,9 @@ static bool draw_reads_in_bounds(fs_context *c, const fs_call *call)
     return true;
 }
 
-int fs_dispatch(fs_context *c, fs_call *call)
+/* in_bounds: the caller already checked the draw's reads
+ * (draw_reads_in_bounds), which scans its indices. */
+static int dispatch(fs_context *c, fs_call *call, bool in_bounds)
 {
     if (call->cmd >= FS_CMD_COUNT)
         return -1;
@@ -336,13 +338,15 @@ int fs_dispatch(fs_context *c, fs_call *call)
         fs_error(c, GL_INVALID_OPERATION);
         return 0;
     }
-    if ((fs_cmd_table[call->cmd].flags & FS_F_DRAW) && !draw_reads_in_bounds(c, call))
+    if (!in_bounds && (fs_cmd_table[call->cmd].flags & FS_F_DRAW) && !draw_reads_in_bounds(c, call))
         return 0;
     int pk, slot = fs_pointer_slot(call->cmd, &pk);
     if (slot >= 0 && call->a[pk].is_data)
         return dispatch_pointer_data(c, call, slot, pk);
     return dispatch_call(c, call);
 }
+
+int fs_dispatch(fs_context *c, fs_call *call) { return dispatch(c, call, false); }
 
 static int dispatch_call(fs_context *c, fs_call *call)
 {
@@ -433,7 +437,7 @@ int fs_submit(fs_context *c, fs_call *call)
         if (!(flags & FS_F_DRAW) || draw_reads_in_bounds(c, call)) {
             fs_dlist_compile(c, call);
             if (fs_dlist_execute_too(c))
-                rc = fs_dispatch(c, call);
+                rc = dispatch(c, call, true);
         }
     } else {
         rc = fs_dispatch(c, call);

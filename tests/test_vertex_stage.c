@@ -465,6 +465,19 @@ TEST(begin_end_and_array_errors)
     CHECK_EQ_INT(c->stats.vertices, 3);
     CHECK(c->unsupported_feature_count == 1 &&
           strcmp(c->unsupported_feature[0].name, "glDrawArrays (client array shorter than the draw reads)") == 0);
+    /* The same while a list is compiled and executed: refused once, neither
+     * compiled nor run; from a good array, run once now and once per call
+     * of the list. */
+    fsglNewList(c, 1, GL_COMPILE_AND_EXECUTE);
+    fsglDrawArrays(c, GL_TRIANGLES, 0, 3);
+    fsglVertexPointer(c, 3, GL_FLOAT, 0, v);
+    fsglDrawArrays(c, GL_TRIANGLES, 0, 3);
+    fsglEndList(c);
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    CHECK_EQ_UINT(c->unsupported_feature[0].count, 2);
+    CHECK_EQ_INT(c->stats.vertices, 6);
+    fsglCallList(c, 1);
+    CHECK_EQ_INT(c->stats.vertices, 9);
     fs_context_destroy(c);
 }
 
