@@ -134,6 +134,138 @@ static void tri(const prim_ctx *p, size_t a, size_t b, size_t cc)
     }
 }
 
+#if FS_VS_HAVE_FMA
+/* lo3 / hi3 lane by lane: the same compares, so the same NaN outcome. */
+__attribute__((target("avx2,fma"))) static inline __m256 lo3_8(__m256 a, __m256 b, __m256 c)
+{
+    __m256 m = _mm256_blendv_ps(a, b, _mm256_cmp_ps(b, a, _CMP_LT_OQ));
+    return _mm256_blendv_ps(m, c, _mm256_cmp_ps(c, m, _CMP_LT_OQ));
+}
+
+__attribute__((target("avx2,fma"))) static inline __m256 hi3_8(__m256 a, __m256 b, __m256 c)
+{
+    __m256 m = _mm256_blendv_ps(a, b, _mm256_cmp_ps(b, a, _CMP_GT_OQ));
+    return _mm256_blendv_ps(m, c, _mm256_cmp_ps(c, m, _CMP_GT_OQ));
+}
+
+/* box_pixel of vertex_array.c lane by lane. */
+__attribute__((target("avx2,fma"))) static inline __m256i box_pixel8(__m256 v)
+{
+    __m256i t = _mm256_cvttps_epi32(v);
+    t = _mm256_blendv_epi8(_mm256_set1_epi32(65536), t, _mm256_castps_si256(_mm256_cmp_ps(v, _mm256_set1_ps(65536.0f), _CMP_LT_OQ)));
+    return _mm256_and_si256(t, _mm256_castps_si256(_mm256_cmp_ps(v, _mm256_setzero_ps(), _CMP_GT_OQ)));
+}
+
+enum { FILL_NOTHING, FILL_AREA, FILL_REACH };
+
+/* What tri() decides for 8 triangles (pv[3t], pv[3t + 1], pv[3t + 2]) of a
+ * filled triangle list: the rasterizer's (reach), an area to charge
+ * (fill_area, a2) or nothing.  Lane by lane the same compares and float
+ * operations as tri, box_sampled, fs_vs_box_sampled and fill_area; boxes
+ * over more than 2 x 2 tiles, or off the tile map, ask fs_vs_box_sampled.
+ * Sampled mode meets every triangle of a one-frame trace here. */
+__attribute__((target("avx2,fma"))) static void fill_classify8(const prim_ctx *p, const fs_pvert *pv, uint8_t code[8], float a2[8])
+{
+    enum { STRIDE = sizeof(fs_pvert) / sizeof(float) };
+    _Static_assert(sizeof(fs_pvert) % sizeof(float) == 0, "fs_pvert gathers by floats");
+    const fs_cycle_tiles *t = fs_cycle_tile_sample(p->c->cycle);
+    const __m256i lanes = _mm256_mullo_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7), _mm256_set1_epi32(3 * STRIDE));
+    const float *f = (const float *)(const void *)pv;
+    const int *u = (const int *)(const void *)pv;
+    const int ox = (int)(offsetof(fs_pvert, win) / sizeof(float)), om = (int)(offsetof(fs_pvert, mask) / sizeof(float));
+    __m256 x[3], y[3];
+    __m256i any = _mm256_setzero_si256(), all = _mm256_set1_epi32(-1);
+    for (int v = 0; v < 3; v++) {
+        x[v] = _mm256_i32gather_ps(f + v * STRIDE + ox, lanes, 4);
+        y[v] = _mm256_i32gather_ps(f + v * STRIDE + ox + 1, lanes, 4);
+        __m256i m = _mm256_i32gather_epi32(u + v * STRIDE + om, lanes, 4);
+        any = _mm256_or_si256(any, m);
+        all = _mm256_and_si256(all, m);
+    }
+    /* fs_vs_box_sampled */
+    const __m256 x0 = lo3_8(x[0], x[1], x[2]), x1 = hi3_8(x[0], x[1], x[2]);
+    const __m256 y0 = lo3_8(y[0], y[1], y[2]), y1 = hi3_8(y[0], y[1], y[2]);
+    const __m256 one = _mm256_set1_ps(1.0f);
+    const __m256i ordered = _mm256_castps_si256(_mm256_and_ps(_mm256_cmp_ps(x0, x1, _CMP_LE_OQ), _mm256_cmp_ps(y0, y1, _CMP_LE_OQ)));
+    const __m128i sh = _mm_cvtsi32_si128(t->shift);
+    const __m256i tx0 = _mm256_srl_epi32(box_pixel8(_mm256_sub_ps(x0, one)), sh);
+    const __m256i ty0 = _mm256_srl_epi32(box_pixel8(_mm256_sub_ps(y0, one)), sh);
+    const __m256i tx1 = _mm256_srl_epi32(box_pixel8(_mm256_add_ps(x1, one)), sh);
+    const __m256i ty1 = _mm256_srl_epi32(box_pixel8(_mm256_add_ps(y1, one)), sh);
+    /* Lanes the 2 x 2 lookup below answers: on the map, at most 2 x 2 tiles. */
+    const __m256i two = _mm256_set1_epi32(2);
+    __m256i easy = _mm256_and_si256(_mm256_cmpgt_epi32(two, _mm256_sub_epi32(tx1, tx0)),
+                                    _mm256_cmpgt_epi32(two, _mm256_sub_epi32(ty1, ty0)));
+    easy = _mm256_and_si256(easy, _mm256_and_si256(_mm256_cmpgt_epi32(_mm256_set1_epi32((int)t->map_w), tx1),
+                                                   _mm256_cmpgt_epi32(_mm256_set1_epi32((int)t->map_h), ty1)));
+    easy = _mm256_and_si256(easy, ordered);
+    const __m256i w = _mm256_set1_epi32((int)t->map_w);
+    const __m256i r0 = _mm256_mullo_epi32(ty0, w), r1 = _mm256_mullo_epi32(ty1, w);
+    const int *map = (const int *)(const void *)t->map;
+    __m256i hit = _mm256_setzero_si256();
+    if (map) {
+        const __m256i cells[4] = {_mm256_add_epi32(r0, tx0), _mm256_add_epi32(r0, tx1), _mm256_add_epi32(r1, tx0),
+                                  _mm256_add_epi32(r1, tx1)};
+        for (int k = 0; k < 4; k++) /* scale 1: byte offsets; the map's padding makes the 4-byte reads safe */
+            hit = _mm256_or_si256(hit, _mm256_mask_i32gather_epi32(_mm256_setzero_si256(), map, cells[k], easy, 1));
+        hit = _mm256_and_si256(hit, _mm256_set1_epi32(0xff));
+    } else {
+        easy = _mm256_setzero_si256();
+    }
+    /* fill_area's a2 */
+    const __m256 a = _mm256_sub_ps(_mm256_mul_ps(_mm256_sub_ps(x[1], x[0]), _mm256_sub_ps(y[2], y[0])),
+                                   _mm256_mul_ps(_mm256_sub_ps(x[2], x[0]), _mm256_sub_ps(y[1], y[0])));
+    _mm256_storeu_ps(a2, a);
+    uint32_t an[8], al[8], e[8], h[8];
+    _mm256_storeu_si256((__m256i *)(void *)an, any);
+    _mm256_storeu_si256((__m256i *)(void *)al, all);
+    _mm256_storeu_si256((__m256i *)(void *)e, easy);
+    _mm256_storeu_si256((__m256i *)(void *)h, hit);
+    const bool ccw = p->c->raster.front_face == GL_CCW;
+    for (int j = 0; j < 8; j++) {
+        if (al[j]) {
+            code[j] = FILL_NOTHING; /* wholly outside a plane */
+        } else if (an[j]) {
+            code[j] = FILL_REACH; /* clipped */
+        } else {
+            bool sampled;
+            if (e[j]) {
+                sampled = h[j] != 0;
+            } else {
+                const fs_pvert *v0 = &pv[3 * j];
+                sampled = box_sampled(p, v0, v0 + 1, v0 + 2);
+            }
+            if (sampled)
+                code[j] = FILL_REACH;
+            else
+                code[j] = !(a2[j] != 0.0f) || fs_raster_culled(&p->c->raster, ccw == (a2[j] > 0.0f)) ? FILL_NOTHING : FILL_AREA;
+        }
+    }
+}
+
+/* A filled triangle list's triangles from first on, 8 at a time through
+ * fill_classify8; returns where it stopped. */
+static size_t fill_triangles8(const prim_ctx *p, size_t count)
+{
+    size_t i = 0;
+    for (; i + 24 <= count; i += 24) {
+        uint8_t code[8];
+        float a2[8];
+        fill_classify8(p, &p->pv[i], code, a2);
+        for (size_t j = 0; j < 8; j++) {
+            if (code[j] == FILL_REACH) {
+                tri(p, i + 3 * j, i + 3 * j + 1, i + 3 * j + 2);
+                continue;
+            }
+            p->c->stats.triangles_in++;
+            if (code[j] == FILL_AREA)
+                fs_cycle_triangle_area(p->c->cycle, 0.5 * fabs((double)a2[j]), 0, 0);
+        }
+    }
+    return i;
+}
+#endif
+
 static void line(const prim_ctx *p, size_t a, size_t b)
 {
     fs_clip_line(p->c, p->s, V(p, a), V(p, b));
@@ -146,8 +278,9 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
     prim_ctx p = {c, s, pv, iv, idx, s->flat ? 2 : -1, tiles,
                   tiles && !c->raster.reference_path && !fs_vs(c)->tri_hook,
                   iv && fs_cycle_tile_sample(c->cycle)->fill};
+    /* Only quads and quad strips split by the route (see the top). */
     bool pipeline = false;
-    for (size_t i = 0; i < count && !pipeline; i++)
+    for (size_t i = 0; i < count && !pipeline && (mode == GL_QUADS || mode == GL_QUAD_STRIP); i++)
         pipeline = V(&p, i)->mask != 0;
     size_t i;
     switch (mode) {
@@ -175,7 +308,12 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
             line(&p, count - 1, 0);
         break;
     case GL_TRIANGLES:
-        for (i = 0; i + 2 < count; i += 3)
+        i = 0;
+#if FS_VS_HAVE_FMA
+        if (p.fill && !idx && s->has_avx2)
+            i = fill_triangles8(&p, count);
+#endif
+        for (; i + 2 < count; i += 3)
             tri(&p, i, i + 1, i + 2);
         break;
     case GL_TRIANGLE_STRIP:

@@ -15,6 +15,20 @@
 
 /* A vertex as submitted: object position and the attributes current when
  * it was specified. */
+/* x86 builds carry FMA and AVX2 variants of the vertex stage's hot loops,
+ * chosen at run time (fs_vs_setup.has_fma, has_avx2): the four fmaf of a
+ * vertex's viewport transform become one instruction each instead of
+ * library calls, and sampled mode's position pass works on 8 vertices or
+ * triangles at a time.  Every variant does the same IEEE operations in
+ * the same order (fmaf rounds once either way), so the bits are the same
+ * (tests: fma_variant_identical, avx2_variant_identical). */
+#if (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__))
+#define FS_VS_HAVE_FMA 1
+#include <immintrin.h>
+#else
+#define FS_VS_HAVE_FMA 0
+#endif
+
 typedef struct fs_ivert {
     float obj[4];
     float col[4];
@@ -51,6 +65,7 @@ typedef struct fs_vs_setup {
     float nscale;       /* GL_RESCALE_NORMAL factor */
     float nmat_of[16];  /* the modelview nmat and nscale were computed from */
     bool has_fma;       /* the CPU has FMA: fs_vs_process's FMA variant */
+    bool has_avx2;      /* ... and AVX2: positions 8 at a time (tile sample) */
     bool nmat_valid;
     float tex[16];
     bool tex_identity;

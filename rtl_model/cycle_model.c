@@ -289,7 +289,7 @@ static void tile_tables_alloc(fs_cycle *cy)
     cy->tiles_y = (cy->fb_height + side - 1) / side;
     size_t n = (size_t)cy->tiles_x * (size_t)cy->tiles_y;
     cy->tile_work = calloc(n, sizeof *cy->tile_work);
-    cy->tile_map = malloc(n);
+    cy->tile_map = calloc(n + 3, 1); /* + 3: fs_cycle_tiles.map */
     if (!cy->tile_map)
         return; /* the hash alone answers */
     for (int ty = 0; ty < cy->tiles_y; ty++)

@@ -72,7 +72,9 @@ typedef struct fs_cycle_tiles {
     uint32_t step;    /* width in tiles of a block of `every` tiles (one sampled per block) */
     int shift;        /* log2 of the tile side */
     /* The screen's tiles, 1 where sampled: the rasterizer asks per
-     * triangle, and the hash below costs five divisions. */
+     * triangle, and the hash below costs five divisions.  Three zero bytes
+     * follow it, so that a tile's entry can be read as 4 bytes (the vertex
+     * stage's 8-wide triangle pass gathers 32-bit words). */
     uint32_t map_w, map_h;
     const uint8_t *map;
     /* The current draw is estimated, but it writes depth or stencil that

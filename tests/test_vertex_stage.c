@@ -883,6 +883,29 @@ TEST(fma_variant_identical)
     }
     printf("    fma_variant_identical: %d vertices, hardware FMA %s, %ld differ\n", N, hw ? "yes" : "no", differ);
     CHECK_EQ_INT(differ, 0);
+    /* Sampled mode's position pass (lazy vertices: positions only), 8 at
+     * a time with AVX2 against one at a time, in batches of every length
+     * mod 8 and boxes that meet the sample or not. */
+    const fs_cycle_tiles tiles = {16, 4, 4, 0, 0, NULL, false};
+    bool avx2 = s.has_avx2;
+    long batches = 0, needed = 0;
+    differ = 0;
+    for (int at = 0, n = 1; at + n <= N; at += n, n = n % 37 + 1) {
+        s.has_avx2 = false;
+        bool na = fs_vs_process(&s, in + at, a + at, (size_t)n, &tiles);
+        s.has_avx2 = avx2;
+        bool nb = fs_vs_process(&s, in + at, b + at, (size_t)n, &tiles);
+        batches++;
+        needed += na;
+        differ += na != nb;
+        for (int i = at; i < at + n; i++)
+            differ += !(a[i].mask == b[i].mask && a[i].lazy == b[i].lazy && same_floats(a[i].clip, b[i].clip, 4) &&
+                        same_floats(a[i].win, b[i].win, 5));
+    }
+    printf("    avx2 position pass: hardware AVX2 %s, %ld batches (%ld reach the sample), %ld differ\n",
+           avx2 ? "yes" : "no", batches, needed, differ);
+    CHECK(needed > 0 && needed < batches);
+    CHECK_EQ_INT(differ, 0);
     free(in);
     free(a);
     free(b);
