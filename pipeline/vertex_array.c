@@ -198,6 +198,33 @@ static inline void fetch_position(const fs_context *c, size_t i, fs_ivert *o)
     fetch(&c->arrays.vertex, i, o->obj, false);
 }
 
+/* Positions of n consecutive elements from `first`: float arrays, the
+ * usual case, without fetch's per-element type dispatch (in sampled mode a
+ * one-frame trace fetches nothing else for most vertices). */
+static void fetch_positions(const fs_client_array *a, size_t first, size_t n, fs_ivert *o)
+{
+    if (a->type != GL_FLOAT) {
+        for (size_t i = 0; i < n; i++) {
+            o[i].obj[0] = o[i].obj[1] = o[i].obj[2] = 0.0f;
+            o[i].obj[3] = 1.0f;
+            fetch(a, first + i, o[i].obj, false);
+        }
+        return;
+    }
+    const size_t stride = a->stride ? (size_t)a->stride : 4 * (size_t)a->size;
+    const unsigned char *p = (const unsigned char *)a->pointer + first * stride;
+    const float fill[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+    for (size_t i = 0; i < n; i++, p += stride) {
+        memcpy(o[i].obj, fill, sizeof fill);
+        if (a->size == 3) /* constant sizes: copies inlined, not memcpy calls */
+            memcpy(o[i].obj, p, 12);
+        else if (a->size == 2)
+            memcpy(o[i].obj, p, 8);
+        else
+            memcpy(o[i].obj, p, 16);
+    }
+}
+
 /* Its other attributes from the enabled arrays, the current values
  * elsewhere. */
 static void fetch_attributes(const fs_context *c, size_t i, fs_ivert *o)
@@ -638,8 +665,11 @@ void fs_exec_DrawArrays(fs_context *c, GLenum mode, GLint first, GLsizei count)
         const size_t n = total - at < piece ? total - at : piece;
         fs_vs_impl *v = fs_vs(c);
         bool deferred = defer_from(c, mode, (size_t)first + at, NULL, 0);
-        for (size_t i = 0; i < n; i++)
-            fetch_batch(c, deferred, (size_t)first + at + i, &v->iv[i]);
+        if (deferred)
+            fetch_positions(&c->arrays.vertex, (size_t)first + at, n, v->iv);
+        else
+            for (size_t i = 0; i < n; i++)
+                fetch_vertex(c, (size_t)first + at + i, &v->iv[i]);
         draw_batch(c, mode, n, NULL, n, c->prim.list_depth > 0);
     }
 }
