@@ -243,7 +243,7 @@ __attribute__((target("avx2,fma"))) static void fill_classify8(const prim_ctx *p
     }
 }
 
-/* A filled triangle list's triangles from first on, 8 at a time through
+/* A filled triangle list's triangles, 8 at a time through
  * fill_classify8; returns where it stopped. */
 static size_t fill_triangles8(const prim_ctx *p, size_t count)
 {
