@@ -87,17 +87,25 @@ static void tri_attributes(const prim_ctx *p, size_t a, size_t b, size_t cc)
 /* A filled draw's triangle that misses the sample still counts its area
  * (unsnapped, which is close enough for a measure of the draw's work; the
  * others give theirs from the rasterizer). */
-static void fill_area(fs_context *c, const fs_pvert *v0, const fs_pvert *v1, const fs_pvert *v2)
+/* ... from its doubled signed area a2 (window space), unless it is
+ * degenerate or culled. */
+static void fill_charge(fs_context *c, float a2)
 {
-    if (v0->mask | v1->mask | v2->mask)
-        return; /* wholly outside a plane: no fragments */
-    float a2 = (v1->win[0] - v0->win[0]) * (v2->win[1] - v0->win[1]) -
-               (v2->win[0] - v0->win[0]) * (v1->win[1] - v0->win[1]);
     bool front = (c->raster.front_face == GL_CCW) == (a2 > 0.0f);
     if (!(a2 != 0.0f) || fs_raster_culled(&c->raster, front))
         return;
     fs_cycle_triangle_area(c->cycle, 0.5 * fabs((double)a2), 0, 0);
 }
+
+static void fill_area(fs_context *c, const fs_pvert *v0, const fs_pvert *v1, const fs_pvert *v2)
+{
+    if (v0->mask | v1->mask | v2->mask)
+        return; /* wholly outside a plane: no fragments */
+    fill_charge(c, (v1->win[0] - v0->win[0]) * (v2->win[1] - v0->win[1]) -
+                       (v2->win[0] - v0->win[0]) * (v1->win[1] - v0->win[1]));
+}
+
+static void tri_draw(const prim_ctx *p, size_t a, size_t b, size_t cc, bool reach);
 
 static void tri(const prim_ctx *p, size_t a, size_t b, size_t cc)
 {
@@ -113,6 +121,15 @@ static void tri(const prim_ctx *p, size_t a, size_t b, size_t cc)
         fill_area(c, v0, v1, v2);
         return;
     }
+    tri_draw(p, a, b, cc, reach);
+}
+
+/* A triangle past tri's sampling decisions (counted in triangles_in). */
+static void tri_draw(const prim_ctx *p, size_t a, size_t b, size_t cc, bool reach)
+{
+    fs_context *c = p->c;
+    const fs_pvert *v0 = V(p, a), *v1 = V(p, b), *v2 = V(p, cc);
+    unsigned any = v0->mask | v1->mask | v2->mask, all = v0->mask & v1->mask & v2->mask;
     if (c->cycle)
         fs_cycle_triangle(c->cycle);
     if (p->iv && (reach || !p->charge))
@@ -160,9 +177,9 @@ enum { FILL_NOTHING, FILL_AREA, FILL_REACH };
 
 /* What tri() decides for 8 triangles (pv[3t], pv[3t + 1], pv[3t + 2]) of a
  * filled triangle list: the rasterizer's (reach), an area to charge
- * (fill_area, a2) or nothing.  Lane by lane the same compares and float
+ * (fill_charge of a2) or nothing.  Lane by lane the same compares and float
  * operations as tri, box_sampled, fs_vs_box_sampled and fill_area; boxes
- * over more than 2 x 2 tiles, or off the tile map, ask fs_vs_box_sampled.
+ * over more than 2 x 2 tiles, or off the tile map, ask box_sampled.
  * Sampled mode meets every triangle of a one-frame trace here. */
 __attribute__((target("avx2,fma"))) static void fill_classify8(const prim_ctx *p, const fs_pvert *pv, uint8_t code[8], float a2[8])
 {
@@ -221,7 +238,6 @@ __attribute__((target("avx2,fma"))) static void fill_classify8(const prim_ctx *p
     _mm256_storeu_si256((__m256i *)(void *)al, all);
     _mm256_storeu_si256((__m256i *)(void *)e, easy);
     _mm256_storeu_si256((__m256i *)(void *)h, hit);
-    const bool ccw = p->c->raster.front_face == GL_CCW;
     for (int j = 0; j < 8; j++) {
         if (al[j]) {
             code[j] = FILL_NOTHING; /* wholly outside a plane */
@@ -235,10 +251,7 @@ __attribute__((target("avx2,fma"))) static void fill_classify8(const prim_ctx *p
                 const fs_pvert *v0 = &pv[3 * j];
                 sampled = box_sampled(p, v0, v0 + 1, v0 + 2);
             }
-            if (sampled)
-                code[j] = FILL_REACH;
-            else
-                code[j] = !(a2[j] != 0.0f) || fs_raster_culled(&p->c->raster, ccw == (a2[j] > 0.0f)) ? FILL_NOTHING : FILL_AREA;
+            code[j] = sampled ? FILL_REACH : FILL_AREA;
         }
     }
 }
@@ -253,13 +266,11 @@ static size_t fill_triangles8(const prim_ctx *p, size_t count)
         float a2[8];
         fill_classify8(p, &p->pv[i], code, a2);
         for (size_t j = 0; j < 8; j++) {
-            if (code[j] == FILL_REACH) {
-                tri(p, i + 3 * j, i + 3 * j + 1, i + 3 * j + 2);
-                continue;
-            }
             p->c->stats.triangles_in++;
-            if (code[j] == FILL_AREA)
-                fs_cycle_triangle_area(p->c->cycle, 0.5 * fabs((double)a2[j]), 0, 0);
+            if (code[j] == FILL_REACH)
+                tri_draw(p, i + 3 * j, i + 3 * j + 1, i + 3 * j + 2, true);
+            else if (code[j] == FILL_AREA)
+                fill_charge(p->c, a2[j]);
         }
     }
     return i;
