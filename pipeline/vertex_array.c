@@ -201,14 +201,12 @@ static inline void fetch_position(const fs_context *c, size_t i, fs_ivert *o)
 /* Positions of n consecutive elements from `first`: float arrays, the
  * usual case, without fetch's per-element type dispatch (in sampled mode a
  * one-frame trace fetches nothing else for most vertices). */
-static void fetch_positions(const fs_client_array *a, size_t first, size_t n, fs_ivert *o)
+static void fetch_positions(const fs_context *c, size_t first, size_t n, fs_ivert *o)
 {
+    const fs_client_array *a = &c->arrays.vertex;
     if (a->type != GL_FLOAT) {
-        for (size_t i = 0; i < n; i++) {
-            o[i].obj[0] = o[i].obj[1] = o[i].obj[2] = 0.0f;
-            o[i].obj[3] = 1.0f;
-            fetch(a, first + i, o[i].obj, false);
-        }
+        for (size_t i = 0; i < n; i++)
+            fetch_position(c, first + i, &o[i]);
         return;
     }
     const size_t stride = a->stride ? (size_t)a->stride : 4 * (size_t)a->size;
@@ -666,7 +664,7 @@ void fs_exec_DrawArrays(fs_context *c, GLenum mode, GLint first, GLsizei count)
         fs_vs_impl *v = fs_vs(c);
         bool deferred = defer_from(c, mode, (size_t)first + at, NULL, 0);
         if (deferred)
-            fetch_positions(&c->arrays.vertex, (size_t)first + at, n, v->iv);
+            fetch_positions(c, (size_t)first + at, n, v->iv);
         else
             for (size_t i = 0; i < n; i++)
                 fetch_vertex(c, (size_t)first + at + i, &v->iv[i]);

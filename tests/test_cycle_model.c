@@ -107,16 +107,21 @@ TEST(memory_bandwidth)
 #define WN 64
 static float ndc(int px) { return 2.0f * (float)px / (float)WN - 1.0f; }
 
-static fs_context *new_context(const fs_config *cfg, fs_cycle **cy, fs_cycle_mode mode)
+static fs_context *new_context_sized(const fs_config *cfg, int w, fs_cycle **cy, fs_cycle_mode mode)
 {
-    fs_context *c = fs_context_create(cfg, WN, WN);
+    fs_context *c = fs_context_create(cfg, w, w);
     char err[256];
     *cy = fs_cycle_create(&c->cfg, mode, err, sizeof err);
     if (!*cy)
         fprintf(stderr, "%s\n", err);
     fs_cycle_attach(*cy, c);
-    fsglViewport(c, 0, 0, WN, WN);
+    fsglViewport(c, 0, 0, w, w);
     return c;
+}
+
+static fs_context *new_context(const fs_config *cfg, fs_cycle **cy, fs_cycle_mode mode)
+{
+    return new_context_sized(cfg, WN, cy, mode);
 }
 
 /* A one-frame model (tile sampling in sampled mode) rasterizing one
@@ -557,14 +562,10 @@ TEST(avx2_variant_identical_sampled)
         cfg.sampling_tiles = 16;
         cfg.sampling_tile_size = 8;
         cfg.sampling_every = 3;
-        fs_context *c = fs_context_create(&cfg, W, W);
-        REQUIRE(c);
-        char err[256];
-        fs_cycle *cy = fs_cycle_create(&c->cfg, FS_CYCLE_SAMPLED, err, sizeof err);
-        REQUIRE(cy);
-        fs_cycle_attach(cy, c);
+        fs_cycle *cy;
+        fs_context *c = new_context_sized(&cfg, W, &cy, FS_CYCLE_SAMPLED);
+        REQUIRE(c && cy);
         fs_cycle_set_frames(cy, 1);
-        fsglViewport(c, 0, 0, W, W);
         if (run == 0)
             hw = c->raster.has_avx2;
         else
