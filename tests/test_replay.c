@@ -153,6 +153,18 @@ static void run(check_state *check_st_, const char *path, const char *frame_end,
     CHECK(res->error == 1 || res->from_record); /* else the comparison compared the file with itself */
 }
 
+/* Finishes the trace being built, replays it without error and checks its
+ * frame count; false when the trace could not be written. */
+static bool finish_and_run(check_state *check_st_, tb *t, run_result *r, int frames)
+{
+    if (fs_trace_finish(t->w) != 0)
+        return false;
+    run(check_st_, t->path, NULL, r);
+    CHECK_EQ_INT(r->error, 0);
+    CHECK_EQ_INT(r->frames, frames);
+    return true;
+}
+
 TEST(frames_from_swaps_and_size_from_viewport)
 {
     tb t;
@@ -164,11 +176,8 @@ TEST(frames_from_swaps_and_size_from_viewport)
         call(&t, "glXSwapBuffers", 2, a, 0);
         call(&t, "glFinish", 0, NULL, 0); /* swaps win over glFinish */
     }
-    REQUIRE(fs_trace_finish(t.w) == 0);
     run_result r;
-    run(check_st_, t.path, NULL, &r);
-    CHECK_EQ_INT(r.error, 0);
-    CHECK_EQ_INT(r.frames, 3);
+    REQUIRE(finish_and_run(check_st_, &t, &r, 3));
     CHECK_EQ_INT(r.width, 64);
     CHECK_EQ_INT(r.height, 48);
     CHECK(strstr(r.skipped, "glXSwapBuffers") != NULL);
@@ -187,11 +196,8 @@ TEST(frames_from_glfinish_without_swaps)
         triangle(&t);
         call(&t, "glFinish", 0, NULL, 0);
     }
-    REQUIRE(fs_trace_finish(t.w) == 0);
     run_result r;
-    run(check_st_, t.path, NULL, &r);
-    CHECK_EQ_INT(r.error, 0);
-    CHECK_EQ_INT(r.frames, 4);
+    REQUIRE(finish_and_run(check_st_, &t, &r, 4));
     unlink(t.path);
 }
 
@@ -399,11 +405,8 @@ TEST(record_replays_what_the_file_holds)
         fs_tval a[2] = {ival(0), ival(0)};
         call(&t, "glXSwapBuffers", 2, a, 0);
     }
-    REQUIRE(fs_trace_finish(t.w) == 0);
     run_result r;
-    run(check_st_, t.path, NULL, &r);
-    CHECK_EQ_INT(r.error, 0);
-    CHECK_EQ_INT(r.frames, 2);
+    REQUIRE(finish_and_run(check_st_, &t, &r, 2));
     CHECK(strstr(r.skipped, "glDrawArrays (client arrays not recorded in the trace)\": {\"count\": 1") != NULL);
     CHECK(strstr(r.skipped, "glStringMarkerGREMEDY") != NULL);
     unlink(t.path);
