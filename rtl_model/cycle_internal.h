@@ -28,6 +28,7 @@ typedef struct fs_cyc_fifo {
 typedef struct fs_cyc_mem {
     uint64_t bw, t;
     uint32_t latency;
+    int shift;   /* log2 bw when bw is a power of two (a shift, not a division), else -1 */
 } fs_cyc_mem;
 
 typedef struct fs_cyc_stage {
@@ -60,10 +61,16 @@ typedef struct fs_cyc_kind {
 #define FS_CYC_KINDS 8192
 
 /* Tile sampling: what the sampled quads of one kind of draw (its fragment
- * state) cost, as exponentially weighted sums (a window of about
- * 1/FS_CYC_POOL_ALPHA quads), so the cost per quad follows a frame's
- * changing depth complexity (a window of 64 quads followed the scene's
- * swings of quads per fragment too closely: textured came out 3% low).
+ * state) cost, as exponentially weighted sums over a window of about
+ * FS_CYC_POOL_WINDOW quads of the screen (FS_CYC_POOL_WINDOW / tiles
+ * sampled quads), so the cost per quad follows a frame's changing depth
+ * complexity.  A window of 64 sampled quads at 1 tile in 16 followed the
+ * scene's swings of quads per fragment too closely (textured came out 3%
+ * low); a window counted in sampled quads lags the frame by more screen
+ * quads the sparser the sample, and the lag is a bias where the cost per
+ * quad drifts as the depth buffer fills (bench32 +0.4%, +1.0%, +2.0% at
+ * tiles = 16, 32, 64 with 1024 sampled quads; +0.3% and +0.6% at 32 and
+ * 64 with this window), and never below FS_CYC_POOL_MIN sampled quads.
  * Each triangle is then timed with its own estimated quads at these costs
  * (spread), not only the sampled quads (lumped). */
 typedef struct fs_cyc_pool {
@@ -80,7 +87,8 @@ typedef struct fs_cyc_pool {
     double occ_quads, occ, occ_writes;
 } fs_cyc_pool;
 #define FS_CYC_POOLS 64
-#define FS_CYC_POOL_ALPHA (1.0 / 1024.0)
+#define FS_CYC_POOL_WINDOW 16384.0
+#define FS_CYC_POOL_MIN 64.0
 
 /* What spread timing rounds to whole cycles, bytes and counts. */
 enum {
@@ -168,6 +176,7 @@ struct fs_cycle {
     /* ratio estimator: areas and sampled fragments of the triangles done,
      * and the current triangle's */
     double area_done, frags_done, area_cur, frags_cur, kq;
+    bool kq_stale; /* kq is due from area_done / frags_done (fs_cycle_quad asks) */
     /* spread timing of tile-sampled triangles: the current draw's pool,
      * all pools, the one of every kind together (fallback), the current
      * triangle's centre and whether it awaits its estimate (its area is

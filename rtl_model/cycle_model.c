@@ -316,6 +316,7 @@ static void set_tiles(fs_cycle *cy, uint32_t n)
         sh++;
     cy->tiles.every = n > 1 ? n : 1;
     cy->kq = (double)cy->tiles.every;
+    cy->kq_stale = false;
     cy->tiles.step = st;
     cy->tiles.shift = sh;
     tile_tables_alloc(cy);
@@ -417,12 +418,12 @@ static fs_cyc_pool *pool_of(fs_cycle *cy, uint64_t flags)
 /* One sampled quad's costs into a pool.  An exponential weight per quad
  * rather than sums per draw: city draws 50,000 buildings of a few sampled
  * quads each. */
-static void pool_add(fs_cyc_pool *p, const fs_cyc_pool *q)
+static void pool_add(fs_cyc_pool *p, const fs_cyc_pool *q, double keep)
 {
     double *d = &p->quads;
     const double *v = &q->quads;
     for (size_t i = 0; i < (sizeof *p - offsetof(fs_cyc_pool, quads)) / sizeof(double); i++)
-        d[i] = d[i] * (1.0 - FS_CYC_POOL_ALPHA) + v[i];
+        d[i] = d[i] * keep + v[i];
 }
 
 /* Whole units of v, the fraction carried to the next call on this slot. */
@@ -524,7 +525,7 @@ static void spread_triangle(fs_cycle *cy)
     cy->area_cur = cy->frags_cur = 0;
     /* The lumped charging of lines and points (fs_cycle_quad) scales by
      * areas over sampled fragments. */
-    cy->kq = cy->frags_done >= 256 && cy->area_done > 0 ? cy->area_done / cy->frags_done : (double)cy->tiles.every;
+    cy->kq_stale = true;
     const fs_cyc_pool *p = estimate_pool(cy);
     if (p->quads <= 0 || p->frags <= 0 || !(area > 0))
         return;
@@ -532,10 +533,11 @@ static void spread_triangle(fs_cycle *cy)
         work_add_area(cy, p, area);
     double q = area * p->quads / p->frags;
     double chunk = cy->tiles.every > 4 ? (double)cy->tiles.every : 4.0;
-    double nch = ceil(q / chunk);
-    if (nch < 1)
-        nch = 1;
-    double qc = q / nch;
+    double nch = 1, qc = q; /* q <= chunk: what the divisions below give, without them */
+    if (q > chunk) {
+        nch = ceil(q / chunk);
+        qc = q / nch;
+    }
     int n = cy->engines_total;
     int e0 = fs_cyc_route(cy, cy->tri_cx & ~1, cy->tri_cy & ~1);
     /* Small items go whole to one engine, from the triangle's own on; with
@@ -918,9 +920,11 @@ static void sample_quad(fs_cycle *cy, fs_context *c, const fs_quad *q, unsigned 
         v.occ_writes = writes ? 1.0 : 0.0;
     }
     fs_cyc_pool *p = cy->pool_cur ? cy->pool_cur : &cy->pool_any;
-    pool_add(p, &v);
+    double window = FS_CYC_POOL_WINDOW / (double)cy->tiles.every;
+    double keep = 1.0 - 1.0 / (window > FS_CYC_POOL_MIN ? window : FS_CYC_POOL_MIN);
+    pool_add(p, &v, keep);
     if (p != &cy->pool_any)
-        pool_add(&cy->pool_any, &v);
+        pool_add(&cy->pool_any, &v, keep);
     if (fill)
         return; /* its triangle has no area charged: only the costs count */
     cy->frags_cur += n;
@@ -973,6 +977,10 @@ void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q)
     if (k > 1 && cy->tri_est) {
         sample_quad(cy, c, q, n, reaching, passed, written, false);
         return;
+    }
+    if (k > 1 && cy->kq_stale) {
+        cy->kq = cy->frags_done >= 256 && cy->area_done > 0 ? cy->area_done / cy->frags_done : (double)k;
+        cy->kq_stale = false;
     }
     if (k > 1)
         kq = cy->kq;

@@ -12,6 +12,10 @@ void fs_cyc_mem_init(fs_cyc_mem *m, uint64_t bytes_per_cycle, uint32_t latency)
     m->bw = bytes_per_cycle ? bytes_per_cycle : 1;
     m->t = 0;
     m->latency = latency;
+    m->shift = -1;
+    if (!(m->bw & (m->bw - 1)))
+        for (m->shift = 0; (1ull << m->shift) < m->bw; m->shift++)
+            ;
 }
 
 uint64_t fs_cyc_mem_reserve(fs_cyc_mem *m, uint64_t t, uint64_t bytes)
@@ -20,5 +24,7 @@ uint64_t fs_cyc_mem_reserve(fs_cyc_mem *m, uint64_t t, uint64_t bytes)
     if (m->t < tb)
         m->t = tb;
     m->t += bytes;
+    if (m->shift >= 0)
+        return (m->t + m->bw - 1) >> m->shift;
     return (m->t + m->bw - 1) / m->bw;
 }

@@ -101,6 +101,14 @@ TEST(memory_bandwidth)
     CHECK_EQ_UINT(end, 1500);
     /* a transfer after an idle gap starts at its request time */
     CHECK_EQ_UINT(fs_cyc_mem_reserve(&m, 5000, 16), 5002);
+    /* a bandwidth that is no power of two (a division, not a shift):
+     * 7 bytes at 12 per cycle, 7/12 cycle each, the last partly used
+     * cycle counting whole */
+    fs_cyc_mem_init(&m, 12, 20);
+    for (int i = 1; i <= 100; i++) {
+        end = fs_cyc_mem_reserve(&m, 0, 7);
+        CHECK_EQ_UINT(end, (uint64_t)(7 * i + 11) / 12);
+    }
 }
 
 /* Window coordinates of pixel edges as NDC (identity matrices). */
@@ -336,6 +344,44 @@ TEST(tile_sample_full_screen)
         fprintf(stderr, "  sampled %llu vs full %llu cycles\n", (unsigned long long)cycles[1],
                 (unsigned long long)cycles[0]);
     CHECK(e <= 0.02);
+}
+
+TEST(tile_sample_clear)
+{
+    /* In tile sampling, glClear writes the sampled tiles (inside the
+     * scissor box) and nothing else, which nothing renders; without it, the
+     * whole scissor box.  Brute force over every pixel against the sample's
+     * own answer (fs_cycle_quad_skipped). */
+    for (int m = 0; m < 2; m++) {
+        fs_cycle *cy;
+        fs_context *c = tile_sampled_context(4, 8, 1, &cy, m ? FS_CYCLE_SAMPLED : FS_CYCLE_FULL);
+        memset(c->fb.color, 7, (size_t)WN * WN * 4);
+        for (size_t i = 0; i < (size_t)WN * WN; i++)
+            c->fb.depth[i] = 5;
+        fsglClearColor(c, 1.0f, 0.0f, 1.0f, 0.0f);
+        fsglClearDepth(c, 1.0);
+        fsglEnable(c, GL_SCISSOR_TEST);
+        fsglScissor(c, 3, 5, WN - 9, WN - 6);
+        fsglClear(c, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        CHECK_EQ_INT((int)fsglGetError(c), GL_NO_ERROR);
+        int cleared = 0, bad = 0;
+        for (int y = 0; y < WN; y++)
+            for (int x = 0; x < WN; x++) {
+                bool in = x >= 3 && x < WN - 6 && y >= 5 && y < WN - 1 && !(m && fs_cycle_quad_skipped(cy, x, y));
+                const uint8_t *p = &c->fb.color[((size_t)y * WN + (size_t)x) * 4];
+                uint32_t z = c->fb.depth[(size_t)y * WN + (size_t)x];
+                if (in)
+                    bad += !(p[0] == 255 && p[1] == 0 && p[2] == 255 && p[3] == 0 && z == c->fb.depth_max);
+                else
+                    bad += !(p[0] == 7 && p[1] == 7 && p[2] == 7 && p[3] == 7 && z == 5);
+                cleared += in;
+            }
+        CHECK_EQ_INT(bad, 0);
+        /* a quarter of the tiles, cut by the box's edges */
+        CHECK(m ? cleared > 0 && cleared < (WN - 9) * (WN - 6) / 2 : cleared == (WN - 9) * (WN - 6));
+        fs_cycle_destroy(cy);
+        fs_context_destroy(c);
+    }
 }
 
 /* A grid of lit 8 x 8 quads drawn from client arrays (normal and colour
@@ -685,6 +731,7 @@ TEST_LIST = {
     TEST_ENTRY(rendermode_drain),
     TEST_ENTRY(tile_sample_lattice),
     TEST_ENTRY(tile_sample_full_screen),
+    TEST_ENTRY(tile_sample_clear),
     TEST_ENTRY(tile_sample_lighting_exact),
     TEST_ENTRY(tile_sample_charged_triangles_as_rasterized),
     TEST_ENTRY(avx2_variant_identical_sampled),
