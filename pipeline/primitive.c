@@ -175,30 +175,19 @@ __attribute__((target("avx2,fma"))) static inline __m256i box_pixel8(__m256 v)
 
 enum { FILL_NOTHING, FILL_AREA, FILL_REACH };
 
-/* What tri() decides for 8 triangles (pv[3t], pv[3t + 1], pv[3t + 2]) of a
- * filled triangle list: the rasterizer's (reach), an area to charge
- * (fill_charge of a2) or nothing.  Lane by lane the same compares and float
- * operations as tri, box_sampled, fs_vs_box_sampled and fill_area; boxes
- * over more than 2 x 2 tiles, or off the tile map, ask box_sampled.
- * Sampled mode meets every triangle of a one-frame trace here. */
-__attribute__((target("avx2,fma"))) static void fill_classify8(const prim_ctx *p, const fs_pvert *pv, uint8_t code[8], float a2[8])
+/* What tri() decides for 8 triangles of a filled triangle list, from their
+ * corners' window x, y and clip masks (lane j, corner k): the rasterizer's
+ * (reach), an area to charge (fill_charge of a2) or nothing.  Lane by lane
+ * the same compares and float operations as tri, box_sampled,
+ * fs_vs_box_sampled and fill_area; boxes over more than 2 x 2 tiles, or off
+ * the tile map, ask fs_vs_box_sampled.  Sampled mode meets every triangle
+ * of a one-frame trace here. */
+__attribute__((target("avx2,fma"))) static void fill_classify8(const prim_ctx *p, const __m256 x[3], const __m256 y[3],
+                                                               const __m256i m[3], uint8_t code[8], float a2[8])
 {
-    enum { STRIDE = sizeof(fs_pvert) / sizeof(float) };
-    _Static_assert(sizeof(fs_pvert) % sizeof(float) == 0, "fs_pvert gathers by floats");
     const fs_cycle_tiles *t = fs_cycle_tile_sample(p->c->cycle);
-    const __m256i lanes = _mm256_mullo_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7), _mm256_set1_epi32(3 * STRIDE));
-    const float *f = (const float *)(const void *)pv;
-    const int *u = (const int *)(const void *)pv;
-    const int ox = (int)(offsetof(fs_pvert, win) / sizeof(float)), om = (int)(offsetof(fs_pvert, mask) / sizeof(float));
-    __m256 x[3], y[3];
-    __m256i any = _mm256_setzero_si256(), all = _mm256_set1_epi32(-1);
-    for (int v = 0; v < 3; v++) {
-        x[v] = _mm256_i32gather_ps(f + v * STRIDE + ox, lanes, 4);
-        y[v] = _mm256_i32gather_ps(f + v * STRIDE + ox + 1, lanes, 4);
-        __m256i m = _mm256_i32gather_epi32(u + v * STRIDE + om, lanes, 4);
-        any = _mm256_or_si256(any, m);
-        all = _mm256_and_si256(all, m);
-    }
+    const __m256i any = _mm256_or_si256(_mm256_or_si256(m[0], m[1]), m[2]);
+    const __m256i all = _mm256_and_si256(_mm256_and_si256(m[0], m[1]), m[2]);
     /* fs_vs_box_sampled */
     const __m256 x0 = lo3_8(x[0], x[1], x[2]), x1 = hi3_8(x[0], x[1], x[2]);
     const __m256 y0 = lo3_8(y[0], y[1], y[2]), y1 = hi3_8(y[0], y[1], y[2]);
@@ -247,11 +236,51 @@ __attribute__((target("avx2,fma"))) static void fill_classify8(const prim_ctx *p
             bool sampled;
             if (e[j]) {
                 sampled = h[j] != 0;
-            } else {
-                const fs_pvert *v0 = &pv[3 * j];
-                sampled = box_sampled(p, v0, v0 + 1, v0 + 2);
+            } else { /* box_sampled */
+                float c[2][3];
+                for (int k = 0; k < 3; k++) {
+                    c[0][k] = x[k][j];
+                    c[1][k] = y[k][j];
+                }
+                sampled = fs_vs_box_sampled(t, lo3(c[0][0], c[0][1], c[0][2]), lo3(c[1][0], c[1][1], c[1][2]),
+                                            hi3(c[0][0], c[0][1], c[0][2]), hi3(c[1][0], c[1][1], c[1][2]));
             }
             code[j] = sampled ? FILL_REACH : FILL_AREA;
+        }
+    }
+}
+
+/* The window x, y and clip masks of the corners of 8 triangles
+ * (pv[3j + k]) for fill_classify8. */
+__attribute__((target("avx2,fma"))) static void corners8(const fs_pvert *pv, __m256 x[3], __m256 y[3], __m256i m[3])
+{
+    enum { STRIDE = sizeof(fs_pvert) / sizeof(float) };
+    _Static_assert(sizeof(fs_pvert) % sizeof(float) == 0, "fs_pvert gathers by floats");
+    const __m256i lanes = _mm256_mullo_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7), _mm256_set1_epi32(3 * STRIDE));
+    const float *f = (const float *)(const void *)pv;
+    const int *u = (const int *)(const void *)pv;
+    const int ox = (int)(offsetof(fs_pvert, win) / sizeof(float)), om = (int)(offsetof(fs_pvert, mask) / sizeof(float));
+    for (int v = 0; v < 3; v++) {
+        x[v] = _mm256_i32gather_ps(f + v * STRIDE + ox, lanes, 4);
+        y[v] = _mm256_i32gather_ps(f + v * STRIDE + ox + 1, lanes, 4);
+        m[v] = _mm256_i32gather_epi32(u + v * STRIDE + om, lanes, 4);
+    }
+}
+
+/* One group of 8 triangles (batch vertices i .. i + 23) as classified;
+ * `lazy`: their vertices are made (fs_vs_lazy_vertex) only if they reach. */
+static void fill_group8(const prim_ctx *p, size_t i, const uint8_t code[8], const float a2[8], bool lazy)
+{
+    for (size_t j = 0; j < 8; j++) {
+        p->c->stats.triangles_in++;
+        size_t k = i + 3 * j;
+        if (code[j] == FILL_REACH) {
+            if (lazy)
+                for (size_t v = k; v < k + 3; v++)
+                    fs_vs_lazy_vertex(p->c, p->s, p->iv, p->pv, v);
+            tri_draw(p, k, k + 1, k + 2, true);
+        } else if (code[j] == FILL_AREA) {
+            fill_charge(p->c, a2[j]);
         }
     }
 }
@@ -264,16 +293,43 @@ static size_t fill_triangles8(const prim_ctx *p, size_t count)
     for (; i + 24 <= count; i += 24) {
         uint8_t code[8];
         float a2[8];
-        fill_classify8(p, &p->pv[i], code, a2);
-        for (size_t j = 0; j < 8; j++) {
-            p->c->stats.triangles_in++;
-            if (code[j] == FILL_REACH)
-                tri_draw(p, i + 3 * j, i + 3 * j + 1, i + 3 * j + 2, true);
-            else if (code[j] == FILL_AREA)
-                fill_charge(p->c, a2[j]);
-        }
+        __m256 x[3], y[3];
+        __m256i m[3];
+        corners8(&p->pv[i], x, y, m);
+        fill_classify8(p, x, y, m, code, a2);
+        fill_group8(p, i, code, a2, false);
     }
     return i;
+}
+
+/* fill_triangles8 for a deferred glDrawArrays(GL_TRIANGLES) read straight
+ * from a float vertex array (fs_vs_corners8), without fs_vs_process: no
+ * batch of transformed vertices to gather from, and only the vertices of
+ * triangles that reach a sampled tile made.  The same decisions, charges
+ * and bits (each lane does vs_position's operations); a batch whose box
+ * misses the tile sample is charged each triangle's unsnapped area here,
+ * where fs_vs_process would have sent it to the rasterizer's charge.
+ * Returns how many of the n vertices it did (groups of 24). */
+size_t fs_prim_fill_list(fs_context *c, const fs_vs_setup *s, size_t first, size_t n, fs_pvert *pv, fs_ivert *iv)
+{
+    prim_ctx p = {c, s, pv, iv, NULL, s->flat ? 2 : -1, true, !c->raster.reference_path && !fs_vs(c)->tri_hook, true};
+    size_t i = 0;
+    for (; i + 24 <= n; i += 24) {
+        uint8_t code[8];
+        float a2[8];
+        __m256 x[3], y[3];
+        __m256i m[3];
+        fs_vs_corners8(c, s, first + i, x, y, m);
+        fill_classify8(&p, x, y, m, code, a2);
+        fill_group8(&p, i, code, a2, true);
+    }
+    return i;
+}
+#else
+size_t fs_prim_fill_list(fs_context *c, const fs_vs_setup *s, size_t first, size_t n, fs_pvert *pv, fs_ivert *iv)
+{
+    (void)c, (void)s, (void)first, (void)n, (void)pv, (void)iv;
+    return 0;
 }
 #endif
 

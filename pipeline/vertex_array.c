@@ -401,6 +401,32 @@ static inline void bounds_add(vs_bounds *b, const fs_pvert *o)
 }
 
 #if FS_VS_HAVE_FMA
+/* fs_mat_xform4 and fs_clip_mask lane by lane (products and sums rounded
+ * one by one in vs_position's order; ordered compares are false on NaN, as
+ * C's). */
+__attribute__((target("avx2,fma"))) static inline __m256i xform_mask8(const __m256 m[16], const __m256 v[4], __m256 c[4])
+{
+    const __m256 zero = _mm256_setzero_ps();
+    for (int r = 0; r < 4; r++) { /* fs_mat_xform4 */
+        __m256 a = _mm256_mul_ps(m[r], v[0]);
+        a = _mm256_add_ps(a, _mm256_mul_ps(m[4 + r], v[1]));
+        a = _mm256_add_ps(a, _mm256_mul_ps(m[8 + r], v[2]));
+        c[r] = _mm256_add_ps(a, _mm256_mul_ps(m[12 + r], v[3]));
+    }
+#define BIT(cmp, bit) _mm256_and_si256(_mm256_castps_si256(cmp), _mm256_set1_epi32(bit))
+    __m256i mk = _mm256_or_si256(
+        _mm256_or_si256(BIT(_mm256_cmp_ps(c[0], c[3], _CMP_GT_OQ), 1),
+                        BIT(_mm256_cmp_ps(zero, _mm256_add_ps(c[0], c[3]), _CMP_GT_OQ), 2)),
+        _mm256_or_si256(_mm256_or_si256(BIT(_mm256_cmp_ps(c[1], c[3], _CMP_GT_OQ), 4),
+                                        BIT(_mm256_cmp_ps(zero, _mm256_add_ps(c[1], c[3]), _CMP_GT_OQ), 8)),
+                        _mm256_or_si256(BIT(_mm256_cmp_ps(zero, _mm256_add_ps(c[2], c[3]), _CMP_GT_OQ), 16),
+                                        BIT(_mm256_cmp_ps(c[2], c[3], _CMP_GT_OQ), 32))));
+    __m256i bad = _mm256_and_si256(_mm256_cmpeq_epi32(mk, _mm256_setzero_si256()),
+                                   _mm256_castps_si256(_mm256_cmp_ps(c[3], zero, _CMP_NGT_UQ)));
+#undef BIT
+    return _mm256_or_si256(mk, _mm256_and_si256(bad, _mm256_set1_epi32(0x3f)));
+}
+
 /* vs_position and bounds_add for the first multiple of 8 vertices, 8 at a
  * time; returns how many it did.  Each lane does the operations of
  * vs_position in the same order (products and sums rounded one by one,
@@ -420,7 +446,7 @@ __attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setu
     __m256 m[16];
     for (int i = 0; i < 16; i++)
         m[i] = _mm256_set1_ps(s->mvp[i]);
-    const __m256 zero = _mm256_setzero_ps(), one = _mm256_set1_ps(1.0f);
+    const __m256 one = _mm256_set1_ps(1.0f);
     const __m256 sx = _mm256_set1_ps(s->vp_scale[0]), tx = _mm256_set1_ps(s->vp_trans[0]);
     const __m256 sy = _mm256_set1_ps(s->vp_scale[1]), ty = _mm256_set1_ps(s->vp_trans[1]);
     const __m256 sz = _mm256_set1_ps(s->vp_scale[2]), tz = _mm256_set1_ps(s->vp_trans[2]);
@@ -434,25 +460,7 @@ __attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setu
         const __m256 v[4] = {_mm256_i32gather_ps(p, gather, 4), _mm256_i32gather_ps(p + 1, gather, 4),
                              _mm256_i32gather_ps(p + 2, gather, 4), _mm256_i32gather_ps(p + 3, gather, 4)};
         __m256 c[4];
-        for (int r = 0; r < 4; r++) { /* fs_mat_xform4 */
-            __m256 a = _mm256_mul_ps(m[r], v[0]);
-            a = _mm256_add_ps(a, _mm256_mul_ps(m[4 + r], v[1]));
-            a = _mm256_add_ps(a, _mm256_mul_ps(m[8 + r], v[2]));
-            c[r] = _mm256_add_ps(a, _mm256_mul_ps(m[12 + r], v[3]));
-        }
-        /* fs_clip_mask */
-#define BIT(cmp, bit) _mm256_and_si256(_mm256_castps_si256(cmp), _mm256_set1_epi32(bit))
-        __m256i mk = _mm256_or_si256(
-            _mm256_or_si256(BIT(_mm256_cmp_ps(c[0], c[3], _CMP_GT_OQ), 1),
-                            BIT(_mm256_cmp_ps(zero, _mm256_add_ps(c[0], c[3]), _CMP_GT_OQ), 2)),
-            _mm256_or_si256(_mm256_or_si256(BIT(_mm256_cmp_ps(c[1], c[3], _CMP_GT_OQ), 4),
-                                            BIT(_mm256_cmp_ps(zero, _mm256_add_ps(c[1], c[3]), _CMP_GT_OQ), 8)),
-                            _mm256_or_si256(BIT(_mm256_cmp_ps(zero, _mm256_add_ps(c[2], c[3]), _CMP_GT_OQ), 16),
-                                            BIT(_mm256_cmp_ps(c[2], c[3], _CMP_GT_OQ), 32))));
-        __m256i bad = _mm256_and_si256(_mm256_cmpeq_epi32(mk, _mm256_setzero_si256()),
-                                       _mm256_castps_si256(_mm256_cmp_ps(c[3], zero, _CMP_NGT_UQ)));
-        mk = _mm256_or_si256(mk, _mm256_and_si256(bad, _mm256_set1_epi32(0x3f)));
-#undef BIT
+        const __m256i mk = xform_mask8(m, v, c);
         const __m256 iw = _mm256_div_ps(one, c[3]);
         const __m256 wx = _mm256_fmadd_ps(_mm256_mul_ps(c[0], iw), sx, tx);
         const __m256 wy = _mm256_fmadd_ps(_mm256_mul_ps(c[1], iw), sy, ty);
@@ -508,7 +516,55 @@ __attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setu
     }
     return k;
 }
+
+__attribute__((target("avx2,fma"))) void fs_vs_corners8(const fs_context *c, const fs_vs_setup *s, size_t first,
+                                                      __m256 x[3], __m256 y[3], __m256i mask[3])
+{
+    const fs_client_array *a = &c->arrays.vertex;
+    const int stride = a->stride ? a->stride : 4 * a->size;
+    const float *p = (const float *)(const void *)((const unsigned char *)a->pointer + first * (size_t)stride);
+    __m256 m[16];
+    for (int i = 0; i < 16; i++)
+        m[i] = _mm256_set1_ps(s->mvp[i]);
+    const __m256 one = _mm256_set1_ps(1.0f);
+    for (int k = 0; k < 3; k++) {
+        /* vertex 3j + k in lane j, as fetch_position fills it */
+        const __m256i at = _mm256_mullo_epi32(_mm256_add_epi32(_mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21),
+                                                               _mm256_set1_epi32(k)),
+                                              _mm256_set1_epi32(stride));
+        __m256 v[4] = {_mm256_i32gather_ps(p, at, 1), _mm256_i32gather_ps(p + 1, at, 1), _mm256_setzero_ps(), one};
+        if (a->size > 2)
+            v[2] = _mm256_i32gather_ps(p + 2, at, 1);
+        if (a->size > 3)
+            v[3] = _mm256_i32gather_ps(p + 3, at, 1);
+        __m256 cl[4];
+        mask[k] = xform_mask8(m, v, cl);
+        const __m256 iw = _mm256_div_ps(one, cl[3]);
+        x[k] = _mm256_fmadd_ps(_mm256_mul_ps(cl[0], iw), _mm256_set1_ps(s->vp_scale[0]), _mm256_set1_ps(s->vp_trans[0]));
+        y[k] = _mm256_fmadd_ps(_mm256_mul_ps(cl[1], iw), _mm256_set1_ps(s->vp_scale[1]), _mm256_set1_ps(s->vp_trans[1]));
+    }
+}
 #endif
+
+bool fs_vs_corners_ok(const fs_context *c)
+{
+#if FS_VS_HAVE_FMA
+    const fs_client_array *a = &c->arrays.vertex;
+    size_t stride = a->stride ? (size_t)a->stride : 4 * (size_t)a->size;
+    /* 24 vertices' byte offsets as 32-bit gather indices */
+    return c->raster.has_avx2 && a->type == GL_FLOAT && a->size >= 2 && a->size <= 4 && stride <= 65536;
+#else
+    (void)c;
+    return false;
+#endif
+}
+
+void fs_vs_lazy_vertex(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pvert *pv, size_t k)
+{
+    fetch_position(c, fs_vs(c)->src_first + k, &iv[k]);
+    vs_position(s, &iv[k], &pv[k]);
+    pv[k].lazy = true;
+}
 
 static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n,
                                                              const fs_cycle_tiles *tiles)
@@ -659,16 +715,35 @@ void fs_exec_DrawArrays(fs_context *c, GLenum mode, GLint first, GLsizei count)
     const size_t total = (size_t)count, piece = mode == GL_TRIANGLES ? 3 * 128 : total;
     if (!fs_vs_reserve_iv(c, total < piece ? total : piece)) { fs_error(c, GL_OUT_OF_MEMORY); return; }
     c->stats.vertices += (uint64_t)count;
-    for (size_t at = 0; at < total; at += piece) {
-        const size_t n = total - at < piece ? total - at : piece;
+    for (size_t at = 0; at < total;) {
+        size_t n = total - at < piece ? total - at : piece;
         fs_vs_impl *v = fs_vs(c);
         bool deferred = defer_from(c, mode, (size_t)first + at, NULL, 0);
+        if (deferred && mode == GL_TRIANGLES && fs_cycle_tile_sample(c->cycle)->fill && fs_vs_corners_ok(c)) {
+            /* An estimated draw run in the sampled tiles only: its
+             * triangles straight from the array (fs_prim_fill_list), the
+             * rest of the piece as below. */
+            if (!fs_vs_reserve_pv(c, n)) {
+                v->deferred = false;
+                fs_error(c, GL_OUT_OF_MEMORY);
+                return;
+            }
+            fs_vs_prepare(c, &v->setup);
+            size_t done = fs_prim_fill_list(c, &v->setup, (size_t)first + at, n, v->pv, v->iv);
+            v->deferred = false;
+            at += done;
+            n -= done;
+            if (!n)
+                continue;
+            deferred = defer_from(c, mode, (size_t)first + at, NULL, 0);
+        }
         if (deferred)
             fetch_positions(c, (size_t)first + at, n, v->iv);
         else
             for (size_t i = 0; i < n; i++)
                 fetch_vertex(c, (size_t)first + at + i, &v->iv[i]);
         draw_batch(c, mode, n, NULL, n, c->prim.list_depth > 0);
+        at += n;
     }
 }
 

@@ -176,6 +176,9 @@ struct fs_cycle {
     /* ratio estimator: areas and sampled fragments of the triangles done,
      * and the current triangle's */
     double area_done, frags_done, area_cur, frags_cur, kq;
+    /* work_add_area's work per fragment of pool wpf_pool (NULL: due again) */
+    const struct fs_cyc_pool *wpf_pool;
+    double wpf;
     bool kq_stale; /* kq is due from area_done / frags_done (fs_cycle_quad asks) */
     /* spread timing of tile-sampled triangles: the current draw's pool,
      * all pools, the one of every kind together (fallback), the current
