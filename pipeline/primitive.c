@@ -36,7 +36,9 @@ typedef struct prim_ctx {
     bool tiles;          /* sampled mode's tile sample is on for this draw */
     bool charge;         /* ... and a triangle outside it may be only charged */
     bool fill;           /* an estimated draw run in the sampled tiles only:
-                            the others are not timed, so nothing else needs them */
+                            the others are not timed, so nothing else needs them
+                            (a batch that misses the sample, iv NULL, is only
+                            charged: the same as fs_prim_fill_list) */
 } prim_ctx;
 
 static inline size_t I(const prim_ctx *p, size_t i)
@@ -306,9 +308,7 @@ static size_t fill_triangles8(const prim_ctx *p, size_t count)
  * from a float vertex array (fs_vs_corners8), without fs_vs_process: no
  * batch of transformed vertices to gather from, and only the vertices of
  * triangles that reach a sampled tile made.  The same decisions, charges
- * and bits (each lane does vs_position's operations); a batch whose box
- * misses the tile sample is charged each triangle's unsnapped area here,
- * where fs_vs_process would have sent it to the rasterizer's charge.
+ * and bits (each lane does vs_position's operations).
  * Returns how many of the n vertices it did (groups of 24). */
 size_t fs_prim_fill_list(fs_context *c, const fs_vs_setup *s, size_t first, size_t n, fs_pvert *pv, fs_ivert *iv)
 {
@@ -344,7 +344,7 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
     const bool tiles = fs_vs_tile_sample(c, mode) != NULL;
     prim_ctx p = {c, s, pv, iv, idx, s->flat ? 2 : -1, tiles,
                   tiles && !c->raster.reference_path && !fs_vs(c)->tri_hook,
-                  iv && fs_cycle_tile_sample(c->cycle)->fill};
+                  tiles && fs_cycle_tile_sample(c->cycle)->fill};
     /* Only quads and quad strips split by the route (see the top). */
     bool pipeline = false;
     for (size_t i = 0; i < count && !pipeline && (mode == GL_QUADS || mode == GL_QUAD_STRIP); i++)

@@ -574,7 +574,7 @@ TEST(avx2_variant_identical_sampled)
      * and infinite positions, and the draws' lengths are not multiples of
      * 8 triangles.  With and without the AVX2 variant the cycles, counts,
      * depth and colour must be the same. */
-    enum { NT = 3000, W = 4 * WN };
+    enum { NT = 3000, NS = 240, W = 4 * WN };
     static float pos[NT * 3][3];
     static uint8_t col[NT * 3][4];
     uint32_t r = 777;
@@ -593,6 +593,12 @@ TEST(avx2_variant_identical_sampled)
             for (int j = 0; j < 4; j++)
                 col[t * 3 + k][j] = (uint8_t)(r >> (j * 8));
         }
+        if (t >= NT - NS) /* a cluster of 8 per draw, 3 pixels across */
+            for (int k = 0; k < 3; k++) {
+                pos[t * 3 + k][0] = pos[(t & ~7) * 3][0] + (float)((t + k) % 3) * 1.5f / W;
+                pos[t * 3 + k][1] = pos[(t & ~7) * 3][1] + (float)((t * k) % 4) * 1.0f / W;
+                pos[t * 3 + k][2] = t % 80 < 16 ? 1.5f : pos[(t & ~7) * 3][2];
+            }
         if (t % 50 == 7)
             pos[t * 3 + 1][0] = pos[t * 3][0], pos[t * 3 + 1][1] = pos[t * 3][1]; /* degenerate */
         if (t % 211 == 3)
@@ -623,12 +629,16 @@ TEST(avx2_variant_identical_sampled)
         fsglEnableClientState(c, GL_COLOR_ARRAY);
         fsglVertexPointer(c, 3, GL_FLOAT, 0, pos);
         fsglColorPointer(c, 4, GL_UNSIGNED_BYTE, 0, col);
-        for (int at = 0, k = 0; at < NT; k++) {
+        for (int at = 0, k = 0; at < NT - NS; k++) {
             int n = k % 3 == 2 ? 67 : 100; /* two kinds of draw */
-            n = n < NT - at ? n : NT - at;
+            n = n < NT - NS - at ? n : NT - NS - at;
             fsglDrawArrays(c, GL_TRIANGLES, at * 3, n * 3);
             at += n;
         }
+        /* draws of 8 small triangles: most miss the sample, some lie
+         * wholly beyond the far plane */
+        for (int at = NT - NS; at < NT; at += 8)
+            fsglDrawArrays(c, GL_TRIANGLES, at * 3, 24);
         CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
         fs_cycle_stats f, t;
         fs_cycle_frame_end(cy, &f);
