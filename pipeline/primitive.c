@@ -38,7 +38,7 @@ typedef struct prim_ctx {
     bool fill;           /* an estimated draw run in the sampled tiles only:
                             the others are not timed, so nothing else needs them
                             (a batch that misses the sample, iv NULL, is only
-                            charged: the same as fs_prim_fill_list) */
+                            charged: the same as fs_prim_sampled_list) */
 } prim_ctx;
 
 static inline size_t I(const prim_ctx *p, size_t i)
@@ -269,20 +269,34 @@ __attribute__((target("avx2,fma"))) static void corners8(const fs_pvert *pv, __m
     }
 }
 
-/* One group of 8 triangles (batch vertices i .. i + 23) as classified;
- * `lazy`: their vertices are made (fs_vs_lazy_vertex) only if they reach. */
-static void fill_group8(const prim_ctx *p, size_t i, const uint8_t code[8], const float a2[8], bool lazy)
+/* One group of 8 triangles (batch vertices i .. i + 23) as classified.
+ * lazy: their vertices are made (fs_vs_lazy_vertex) only if they reach.
+ * x, yr: NULL, or (a draw that is timed, not filled) the corners' window x
+ * and y_raster, from which one that does not reach is charged as tri_draw
+ * charges it. */
+static void group8(const prim_ctx *p, size_t i, const uint8_t code[8], const float a2[8], bool lazy,
+                   const float (*x)[8], const float (*yr)[8])
 {
+    fs_context *c = p->c;
     for (size_t j = 0; j < 8; j++) {
-        p->c->stats.triangles_in++;
+        c->stats.triangles_in++;
         size_t k = i + 3 * j;
         if (code[j] == FILL_REACH) {
             if (lazy)
                 for (size_t v = k; v < k + 3; v++)
-                    fs_vs_lazy_vertex(p->c, p->s, p->iv, p->pv, v);
+                    fs_vs_lazy_vertex(c, p->s, p->iv, p->pv, v);
             tri_draw(p, k, k + 1, k + 2, true);
-        } else if (code[j] == FILL_AREA) {
-            fill_charge(p->c, a2[j]);
+        } else if (p->fill) {
+            if (code[j] == FILL_AREA)
+                fill_charge(c, a2[j]);
+        } else { /* tri_draw without reach */
+            fs_cycle_triangle(c->cycle);
+            if (code[j] == FILL_AREA) {
+                const float tx[3] = {x[0][j], x[1][j], x[2][j]}, ty[3] = {yr[0][j], yr[1][j], yr[2][j]};
+                fs_raster_triangle_charge(c, tx, ty);
+            } else {
+                c->stats.triangles_rejected++;
+            }
         }
     }
 }
@@ -299,34 +313,51 @@ static size_t fill_triangles8(const prim_ctx *p, size_t count)
         __m256i m[3];
         corners8(&p->pv[i], x, y, m);
         fill_classify8(p, x, y, m, code, a2);
-        fill_group8(p, i, code, a2, false);
+        group8(p, i, code, a2, false, NULL, NULL);
     }
     return i;
 }
 
-/* fill_triangles8 for a deferred glDrawArrays(GL_TRIANGLES) read straight
- * from a float vertex array (fs_vs_corners8), without fs_vs_process: no
- * batch of transformed vertices to gather from, and only the vertices of
- * triangles that reach a sampled tile made.  The same decisions, charges
- * and bits (each lane does vs_position's operations).
- * Returns how many of the n vertices it did (groups of 24). */
-size_t fs_prim_fill_list(fs_context *c, const fs_vs_setup *s, size_t first, size_t n, fs_pvert *pv, fs_ivert *iv)
+/* A tile-sampled glDrawArrays(GL_TRIANGLES) read straight from a float
+ * vertex array (fs_vs_corners8), without fs_vs_process: no batch of
+ * transformed vertices to gather from, and only the vertices of triangles
+ * that reach a sampled tile made.  Filled draws as fill_triangles8, timed
+ * ones as tri: the same decisions, charges and bits (each lane does
+ * vs_position's operations).  Returns how many of the n vertices it did
+ * (groups of 24). */
+__attribute__((target("avx2,fma"))) static size_t sampled_list(const prim_ctx *pp, size_t first, size_t n)
 {
-    prim_ctx p = {c, s, pv, iv, NULL, s->flat ? 2 : -1, true, !c->raster.reference_path && !fs_vs(c)->tri_hook, true};
+    const prim_ctx p = *pp;
+    fs_context *c = p.c;
+    const fs_vs_setup *s = p.s;
     size_t i = 0;
     for (; i + 24 <= n; i += 24) {
         uint8_t code[8];
-        float a2[8];
-        __m256 x[3], y[3];
+        float a2[8], xs[3][8], ys[3][8];
+        __m256 x[3], y[3], yr[3];
         __m256i m[3];
-        fs_vs_corners8(c, s, first + i, x, y, m);
+        fs_vs_corners8(c, s, first + i, x, y, yr, m);
         fill_classify8(&p, x, y, m, code, a2);
-        fill_group8(&p, i, code, a2, true);
+        if (!p.fill)
+            for (int k = 0; k < 3; k++) {
+                _mm256_storeu_ps(xs[k], x[k]);
+                _mm256_storeu_ps(ys[k], yr[k]);
+            }
+        group8(&p, i, code, a2, true, xs, ys);
     }
     return i;
 }
+
+size_t fs_prim_sampled_list(fs_context *c, const fs_vs_setup *s, size_t first, size_t n, fs_pvert *pv, fs_ivert *iv)
+{
+    prim_ctx p = {c, s, pv, iv, NULL, s->flat ? 2 : -1, true, !c->raster.reference_path && !fs_vs(c)->tri_hook,
+                  fs_cycle_tile_sample(c->cycle)->fill};
+    if (!p.fill && !p.charge)
+        return 0; /* every triangle goes to the rasterizer, with its vertices */
+    return sampled_list(&p, first, n);
+}
 #else
-size_t fs_prim_fill_list(fs_context *c, const fs_vs_setup *s, size_t first, size_t n, fs_pvert *pv, fs_ivert *iv)
+size_t fs_prim_sampled_list(fs_context *c, const fs_vs_setup *s, size_t first, size_t n, fs_pvert *pv, fs_ivert *iv)
 {
     (void)c, (void)s, (void)first, (void)n, (void)pv, (void)iv;
     return 0;

@@ -518,7 +518,7 @@ __attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setu
 }
 
 __attribute__((target("avx2,fma"))) void fs_vs_corners8(const fs_context *c, const fs_vs_setup *s, size_t first,
-                                                      __m256 x[3], __m256 y[3], __m256i mask[3])
+                                                      __m256 x[3], __m256 y[3], __m256 yr[3], __m256i mask[3])
 {
     const fs_client_array *a = &c->arrays.vertex;
     const int stride = a->stride ? a->stride : 4 * a->size;
@@ -542,6 +542,7 @@ __attribute__((target("avx2,fma"))) void fs_vs_corners8(const fs_context *c, con
         const __m256 iw = _mm256_div_ps(one, cl[3]);
         x[k] = _mm256_fmadd_ps(_mm256_mul_ps(cl[0], iw), _mm256_set1_ps(s->vp_scale[0]), _mm256_set1_ps(s->vp_trans[0]));
         y[k] = _mm256_fmadd_ps(_mm256_mul_ps(cl[1], iw), _mm256_set1_ps(s->vp_scale[1]), _mm256_set1_ps(s->vp_trans[1]));
+        yr[k] = _mm256_fmadd_ps(_mm256_mul_ps(cl[1], iw), _mm256_set1_ps(s->yr_scale), _mm256_set1_ps(s->yr_trans));
     }
 }
 #endif
@@ -719,17 +720,16 @@ void fs_exec_DrawArrays(fs_context *c, GLenum mode, GLint first, GLsizei count)
         size_t n = total - at < piece ? total - at : piece;
         fs_vs_impl *v = fs_vs(c);
         bool deferred = defer_from(c, mode, (size_t)first + at, NULL, 0);
-        if (deferred && mode == GL_TRIANGLES && fs_cycle_tile_sample(c->cycle)->fill && fs_vs_corners_ok(c)) {
-            /* An estimated draw run in the sampled tiles only: its
-             * triangles straight from the array (fs_prim_fill_list), the
-             * rest of the piece as below. */
+        if (deferred && mode == GL_TRIANGLES && fs_vs_corners_ok(c)) {
+            /* The tile sample: the triangles straight from the array
+             * (fs_prim_sampled_list), the rest of the piece as below. */
             if (!fs_vs_reserve_pv(c, n)) {
                 v->deferred = false;
                 fs_error(c, GL_OUT_OF_MEMORY);
                 return;
             }
             fs_vs_prepare(c, &v->setup);
-            size_t done = fs_prim_fill_list(c, &v->setup, (size_t)first + at, n, v->pv, v->iv);
+            size_t done = fs_prim_sampled_list(c, &v->setup, (size_t)first + at, n, v->pv, v->iv);
             v->deferred = false;
             at += done;
             n -= done;

@@ -151,15 +151,16 @@ const fs_cycle_tiles *fs_vs_tile_sample(const fs_context *c, GLenum mode);
 void fs_vs_attributes(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pvert *pv, size_t k);
 /* Whether a window-space box can make fragments in a sampled tile. */
 bool fs_vs_box_sampled(const fs_cycle_tiles *t, float x0, float y0, float x1, float y1);
-/* A filled triangle list of a deferred glDrawArrays straight from the
- * vertex array (primitive.c fs_prim_fill_list): whether the array allows
- * it; the window x, y and clip masks of the corners of the 8 triangles
- * from array element `first` on (lane j, corner k: element first + 3j + k),
- * with vs_position's bits; and batch vertex k's position alone, lazy. */
+/* A tile-sampled triangle list of a deferred glDrawArrays straight from
+ * the vertex array (primitive.c fs_prim_sampled_list): whether the array
+ * allows it; the window x, y, y_raster and clip masks of the corners of the
+ * 8 triangles from array element `first` on (lane j, corner k: element
+ * first + 3j + k), with vs_position's bits; and batch vertex k's position
+ * alone, lazy. */
 bool fs_vs_corners_ok(const fs_context *c);
 #if FS_VS_HAVE_FMA
 __attribute__((target("avx2,fma"))) void fs_vs_corners8(const fs_context *c, const fs_vs_setup *s, size_t first,
-                                                      __m256 x[3], __m256 y[3], __m256i mask[3]);
+                                                      __m256 x[3], __m256 y[3], __m256 yr[3], __m256i mask[3]);
 #endif
 void fs_vs_lazy_vertex(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pvert *pv, size_t k);
 
@@ -170,10 +171,11 @@ void fs_vs_lazy_vertex(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pve
 void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv, fs_ivert *iv,
                   const uint32_t *idx, size_t count, bool elements);
 bool fs_prim_mode_valid(GLenum mode);
-/* Sampled mode: an estimated, filled glDrawArrays(GL_TRIANGLES) piece of n
+/* Sampled mode's tile sample: a glDrawArrays(GL_TRIANGLES) piece of n
  * vertices from array element `first` (deferred, fs_vs_corners_ok), pv and
- * iv its batch; returns how many vertices it drew, a multiple of 24. */
-size_t fs_prim_fill_list(fs_context *c, const fs_vs_setup *s, size_t first, size_t n, fs_pvert *pv, fs_ivert *iv);
+ * iv its batch; returns how many vertices it drew, a multiple of 24 (0:
+ * the draw needs fs_prim_draw). */
+size_t fs_prim_sampled_list(fs_context *c, const fs_vs_setup *s, size_t first, size_t n, fs_pvert *pv, fs_ivert *iv);
 
 /* clip.c */
 unsigned fs_clip_mask(const float clip[4]);
