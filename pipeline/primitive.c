@@ -177,9 +177,10 @@ __attribute__((target("avx2,fma"))) static inline __m256i box_pixel8(__m256 v)
 
 enum { FILL_NOTHING, FILL_AREA, FILL_REACH };
 
-/* What tri() decides for 8 triangles of a filled triangle list, from their
- * corners' window x, y and clip masks (lane j, corner k): the rasterizer's
- * (reach), an area to charge (fill_charge of a2) or nothing.  Lane by lane
+/* What tri() decides for 8 triangles of a tile-sampled triangle list, from
+ * their corners' window x, y and clip masks (lane j, corner k): the
+ * rasterizer's (reach), an area to charge (a filled draw: fill_charge of a2;
+ * a timed one: group8) or nothing.  Lane by lane
  * the same compares and float operations as tri, box_sampled,
  * fs_vs_box_sampled and fill_area; boxes over more than 2 x 2 tiles, or off
  * the tile map, ask fs_vs_box_sampled.  Sampled mode meets every triangle
