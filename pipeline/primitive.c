@@ -68,11 +68,16 @@ static inline float hi3(float a, float b, float c)
  * makes the box NaN, which counts as sampled; one in another is dropped,
  * which is harmless: the rasterizer culls a triangle with a NaN position
  * before it reads a colour. */
+static bool box_sampled_xy(const prim_ctx *p, const float x[3], const float y[3])
+{
+    return fs_vs_box_sampled(fs_cycle_tile_sample(p->c->cycle), lo3(x[0], x[1], x[2]), lo3(y[0], y[1], y[2]),
+                             hi3(x[0], x[1], x[2]), hi3(y[0], y[1], y[2]));
+}
+
 static bool box_sampled(const prim_ctx *p, const fs_pvert *v0, const fs_pvert *v1, const fs_pvert *v2)
 {
-    float x0 = lo3(v0->win[0], v1->win[0], v2->win[0]), x1 = hi3(v0->win[0], v1->win[0], v2->win[0]);
-    float y0 = lo3(v0->win[1], v1->win[1], v2->win[1]), y1 = hi3(v0->win[1], v1->win[1], v2->win[1]);
-    return fs_vs_box_sampled(fs_cycle_tile_sample(p->c->cycle), x0, y0, x1, y1);
+    const float x[3] = {v0->win[0], v1->win[0], v2->win[0]}, y[3] = {v0->win[1], v1->win[1], v2->win[1]};
+    return box_sampled_xy(p, x, y);
 }
 
 /* Sampled mode's tile sample: lights the lazy vertices of a triangle that
@@ -183,7 +188,7 @@ enum { FILL_NOTHING, FILL_AREA, FILL_REACH };
  * a timed one: group8) or nothing.  Lane by lane
  * the same compares and float operations as tri, box_sampled,
  * fs_vs_box_sampled and fill_area; boxes over more than 2 x 2 tiles, or off
- * the tile map, ask fs_vs_box_sampled.  Sampled mode meets every triangle
+ * the tile map, ask box_sampled_xy.  Sampled mode meets every triangle
  * of a one-frame trace here. */
 __attribute__((target("avx2,fma"))) static void fill_classify8(const prim_ctx *p, const __m256 x[3], const __m256 y[3],
                                                                const __m256i m[3], uint8_t code[8], float a2[8])
@@ -239,53 +244,30 @@ __attribute__((target("avx2,fma"))) static void fill_classify8(const prim_ctx *p
             bool sampled;
             if (e[j]) {
                 sampled = h[j] != 0;
-            } else { /* box_sampled */
-                float c[2][3];
-                for (int k = 0; k < 3; k++) {
-                    c[0][k] = x[k][j];
-                    c[1][k] = y[k][j];
-                }
-                sampled = fs_vs_box_sampled(t, lo3(c[0][0], c[0][1], c[0][2]), lo3(c[1][0], c[1][1], c[1][2]),
-                                            hi3(c[0][0], c[0][1], c[0][2]), hi3(c[1][0], c[1][1], c[1][2]));
+            } else {
+                const float bx[3] = {x[0][j], x[1][j], x[2][j]}, by[3] = {y[0][j], y[1][j], y[2][j]};
+                sampled = box_sampled_xy(p, bx, by);
             }
             code[j] = sampled ? FILL_REACH : FILL_AREA;
         }
     }
 }
 
-/* The window x, y and clip masks of the corners of 8 triangles
- * (pv[3j + k]) for fill_classify8. */
-__attribute__((target("avx2,fma"))) static void corners8(const fs_pvert *pv, __m256 x[3], __m256 y[3], __m256i m[3])
-{
-    enum { STRIDE = sizeof(fs_pvert) / sizeof(float) };
-    _Static_assert(sizeof(fs_pvert) % sizeof(float) == 0, "fs_pvert gathers by floats");
-    const __m256i lanes = _mm256_mullo_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7), _mm256_set1_epi32(3 * STRIDE));
-    const float *f = (const float *)(const void *)pv;
-    const int *u = (const int *)(const void *)pv;
-    const int ox = (int)(offsetof(fs_pvert, win) / sizeof(float)), om = (int)(offsetof(fs_pvert, mask) / sizeof(float));
-    for (int v = 0; v < 3; v++) {
-        x[v] = _mm256_i32gather_ps(f + v * STRIDE + ox, lanes, 4);
-        y[v] = _mm256_i32gather_ps(f + v * STRIDE + ox + 1, lanes, 4);
-        m[v] = _mm256_i32gather_epi32(u + v * STRIDE + om, lanes, 4);
-    }
-}
-
-/* One group of 8 triangles (batch vertices i .. i + 23) as classified.
- * lazy: their vertices are made (fs_vs_lazy_vertex) only if they reach.
- * x, yr: NULL, or (a draw that is timed, not filled) the corners' window x
- * and y_raster, from which one that does not reach is charged as tri_draw
- * charges it. */
-static void group8(const prim_ctx *p, size_t i, const uint8_t code[8], const float a2[8], bool lazy,
-                   const float (*x)[8], const float (*yr)[8])
+/* One group of 8 triangles (batch vertices i .. i + 23) as classified:
+ * one that reaches a sampled tile gets its vertices made
+ * (fs_vs_lazy_vertex) and goes to tri_draw; of a filled draw, one that
+ * does not is charged its area a2; of a timed draw, it is timed and
+ * charged from its corners' window x and y_raster, as tri_draw does. */
+static void group8(const prim_ctx *p, size_t i, const uint8_t code[8], const float a2[8], const float x[3][8],
+                   const float yr[3][8])
 {
     fs_context *c = p->c;
     for (size_t j = 0; j < 8; j++) {
         c->stats.triangles_in++;
         size_t k = i + 3 * j;
         if (code[j] == FILL_REACH) {
-            if (lazy)
-                for (size_t v = k; v < k + 3; v++)
-                    fs_vs_lazy_vertex(c, p->s, p->iv, p->pv, v);
+            for (size_t v = k; v < k + 3; v++)
+                fs_vs_lazy_vertex(c, p->s, p->iv, p->pv, v);
             tri_draw(p, k, k + 1, k + 2, true);
         } else if (p->fill) {
             if (code[j] == FILL_AREA)
@@ -302,29 +284,11 @@ static void group8(const prim_ctx *p, size_t i, const uint8_t code[8], const flo
     }
 }
 
-/* A filled triangle list's triangles, 8 at a time through
- * fill_classify8; returns where it stopped. */
-static size_t fill_triangles8(const prim_ctx *p, size_t count)
-{
-    size_t i = 0;
-    for (; i + 24 <= count; i += 24) {
-        uint8_t code[8];
-        float a2[8];
-        __m256 x[3], y[3];
-        __m256i m[3];
-        corners8(&p->pv[i], x, y, m);
-        fill_classify8(p, x, y, m, code, a2);
-        group8(p, i, code, a2, false, NULL, NULL);
-    }
-    return i;
-}
-
 /* A tile-sampled glDrawArrays(GL_TRIANGLES) read straight from a float
  * vertex array (fs_vs_corners8), without fs_vs_process: no batch of
  * transformed vertices to gather from, and only the vertices of triangles
- * that reach a sampled tile made.  Filled draws as fill_triangles8, timed
- * ones as tri: the same decisions, charges and bits (each lane does
- * vs_position's operations).  Returns how many of the n vertices it did
+ * that reach a sampled tile made.  Filled and timed draws as tri: the same
+ * decisions, charges and bits (each lane does vs_position's operations).  Returns how many of the n vertices it did
  * (groups of 24). */
 __attribute__((target("avx2,fma"))) static size_t sampled_list(const prim_ctx *pp, size_t first, size_t n)
 {
@@ -339,12 +303,12 @@ __attribute__((target("avx2,fma"))) static size_t sampled_list(const prim_ctx *p
         __m256i m[3];
         fs_vs_corners8(c, s, first + i, x, y, yr, m);
         fill_classify8(&p, x, y, m, code, a2);
-        if (!p.fill)
+        if (!p.fill) /* group8 charges from them */
             for (int k = 0; k < 3; k++) {
                 _mm256_storeu_ps(xs[k], x[k]);
                 _mm256_storeu_ps(ys[k], yr[k]);
             }
-        group8(&p, i, code, a2, true, xs, ys);
+        group8(&p, i, code, a2, xs, ys);
     }
     return i;
 }
@@ -407,12 +371,7 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
             line(&p, count - 1, 0);
         break;
     case GL_TRIANGLES:
-        i = 0;
-#if FS_VS_HAVE_FMA
-        if (p.fill && !idx && s->has_avx2)
-            i = fill_triangles8(&p, count);
-#endif
-        for (; i + 2 < count; i += 3)
+        for (i = 0; i + 2 < count; i += 3)
             tri(&p, i, i + 1, i + 2);
         break;
     case GL_TRIANGLE_STRIP:

@@ -15,7 +15,6 @@
 #include <string.h>
 #include "vertex_internal.h"
 
-
 int fs_type_size(GLenum type)
 {
     switch (type) {

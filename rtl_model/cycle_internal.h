@@ -179,6 +179,7 @@ struct fs_cycle {
     /* work_add_area's work per fragment of pool wpf_pool (NULL: due again) */
     const struct fs_cyc_pool *wpf_pool;
     double wpf;
+    double pool_keep; /* pool_add's weight of the sums so far (set_tiles: the window) */
     bool kq_stale; /* kq is due from area_done / frags_done (fs_cycle_quad asks) */
     /* spread timing of tile-sampled triangles: the current draw's pool,
      * all pools, the one of every kind together (fallback), the current

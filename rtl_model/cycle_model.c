@@ -318,6 +318,8 @@ static void set_tiles(fs_cycle *cy, uint32_t n)
     cy->tiles.every = n > 1 ? n : 1;
     cy->kq = (double)cy->tiles.every;
     cy->kq_stale = false;
+    double window = FS_CYC_POOL_WINDOW / (double)cy->tiles.every;
+    cy->pool_keep = 1.0 - 1.0 / (window > FS_CYC_POOL_MIN ? window : FS_CYC_POOL_MIN);
     cy->tiles.step = st;
     cy->tiles.shift = sh;
     tile_tables_alloc(cy);
@@ -934,12 +936,10 @@ static void sample_quad(fs_cycle *cy, fs_context *c, const fs_quad *q, unsigned 
         v.occ_writes = writes ? 1.0 : 0.0;
     }
     fs_cyc_pool *p = cy->pool_cur ? cy->pool_cur : &cy->pool_any;
-    double window = FS_CYC_POOL_WINDOW / (double)cy->tiles.every;
-    double keep = 1.0 - 1.0 / (window > FS_CYC_POOL_MIN ? window : FS_CYC_POOL_MIN);
-    pool_add(p, &v, keep);
+    pool_add(p, &v, cy->pool_keep);
     cy->wpf_pool = NULL;
     if (p != &cy->pool_any)
-        pool_add(&cy->pool_any, &v, keep);
+        pool_add(&cy->pool_any, &v, cy->pool_keep);
     if (fill)
         return; /* its triangle has no area charged: only the costs count */
     cy->frags_cur += n;
