@@ -210,33 +210,19 @@ void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
 
     /* Bounding box (llvmpipe rounds both ends up for lines). */
     const int adj = 1;
-    int64_t minx = x[0], maxx = x[0], miny = y[0], maxy = y[0];
-    for (int i = 1; i < 4; i++) {
-        if (x[i] < minx) minx = x[i];
-        if (x[i] > maxx) maxx = x[i];
-        if (y[i] < miny) miny = y[i];
-        if (y[i] > maxy) maxy = y[i];
-    }
+    int64_t minx, maxx, miny, maxy;
+    fs_corner_box(x, y, 4, &minx, &maxx, &miny, &maxy);
     const int64_t round_up = (1 << order) - 1;
     int64_t bx0 = fs_floor_shift(minx + round_up, order);
     int64_t bx1 = fs_floor_shift(maxx + round_up, order) - 1;
     int64_t by0 = fs_floor_shift(miny + round_up + adj, order);
     int64_t by1 = fs_floor_shift(maxy + round_up + adj, order) - 1;
-    if (bx0 < 0) bx0 = 0;
-    if (by0 < 0) by0 = 0;
-    if (bx1 > W - 1) bx1 = W - 1;
-    if (by1 > H - 1) by1 = H - 1;
-    if (bx0 > bx1 || by0 > by1)
-        return;
-
     fs_edge_planes e;
+    if (!fs_window_box(bx0, by0, bx1, by1, W, H, &e.x0, &e.x1, &e.y0, &e.y1))
+        return;
     e.n = 4;
     for (int i = 0; i < 4; i++)
         fs_edge_plane(&e, i, x[i], y[i], x[(i + 1) & 3], y[(i + 1) & 3], order);
-    e.x0 = (int)bx0;
-    e.x1 = (int)bx1;
-    e.y0 = (int)by0;
-    e.y1 = (int)by1;
 
     /* Attribute planes from the vertices in their original order. */
     fs_prim_setup s;

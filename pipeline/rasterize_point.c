@@ -54,18 +54,10 @@ void fs_raster_point(fs_context *c, const fs_rvertex *v)
         by0 = fs_floor_shift(ys + half, order) - iw / 2;
     }
     int64_t bx1 = bx0 + iw - 1, by1 = by0 + iw - 1;
-    if (bx0 < 0) bx0 = 0;
-    if (by0 < 0) by0 = 0;
-    if (bx1 > W - 1) bx1 = W - 1;
-    if (by1 > H - 1) by1 = H - 1;
-    if (bx0 > bx1 || by0 > by1)
-        return;
     fs_edge_planes e;
+    if (!fs_window_box(bx0, by0, bx1, by1, W, H, &e.x0, &e.x1, &e.y0, &e.y1))
+        return;
     e.n = 0; /* the box alone */
-    e.x0 = (int)bx0;
-    e.x1 = (int)bx1;
-    e.y0 = (int)by0;
-    e.y1 = (int)by1;
 
     fs_prim_setup s;
     s.front = true;

@@ -290,13 +290,6 @@ typedef struct tri_edges {
     int x0, x1, y0, y1; /* bounding box in raster pixels, inclusive, on screen */
 } tri_edges;
 
-/* Floor division by 2^s for negative values too (>> of a negative signed
- * value is implementation-defined in C). */
-static inline int64_t floor_shift(int64_t v, int s)
-{
-    return v >= 0 ? v >> s : -(((-v) - 1) >> s) - 1;
-}
-
 /* Fixed-point limit: coordinates of |v| < 2^29 subpixels keep every edge
  * product below 2^61.  llvmpipe itself only ever sees clipped vertices (draw
  * clips with no guard band), so anything beyond is not a case to match. */
@@ -406,31 +399,17 @@ static bool tri_snap_box(fs_context *c, const float px[3], const float py[3], tr
     /* Bounding box (do_triangle_ccw): inclusive x0, exclusive max x; the y
      * rounding is adjusted by one subpixel for the bottom-edge rule. */
     const int adj = 1;
-    int64_t minx = x[0], maxx = x[0], miny = y[0], maxy = y[0];
-    for (int i = 1; i < 3; i++) {
-        if (x[i] < minx) minx = x[i];
-        if (x[i] > maxx) maxx = x[i];
-        if (y[i] < miny) miny = y[i];
-        if (y[i] > maxy) maxy = y[i];
-    }
-    int64_t bx0 = floor_shift(minx, order);
-    int64_t bx1 = floor_shift(maxx - 1, order);
-    int64_t by0 = floor_shift(miny + adj, order);
-    int64_t by1 = floor_shift(maxy - 1 + adj, order);
-    /* Pixel ownership (GL 1.5 spec 4.1.1): only the window's pixels. */
-    if (bx0 < 0) bx0 = 0;
-    if (by0 < 0) by0 = 0;
-    if (bx1 > W - 1) bx1 = W - 1;
-    if (by1 > H - 1) by1 = H - 1;
-    if (bx0 > bx1 || by0 > by1) {
+    int64_t minx, maxx, miny, maxy;
+    fs_corner_box(x, y, 3, &minx, &maxx, &miny, &maxy);
+    int64_t bx0 = fs_floor_shift(minx, order);
+    int64_t bx1 = fs_floor_shift(maxx - 1, order);
+    int64_t by0 = fs_floor_shift(miny + adj, order);
+    int64_t by1 = fs_floor_shift(maxy - 1 + adj, order);
+    if (!fs_window_box(bx0, by0, bx1, by1, W, H, &t->e.x0, &t->e.x1, &t->e.y0, &t->e.y1)) {
         /* Entirely off screen: llvmpipe counts it culled too. */
         c->stats.triangles_rasterized++;
         return false;
     }
-    t->e.x0 = (int)bx0;
-    t->e.x1 = (int)bx1;
-    t->e.y0 = (int)by0;
-    t->e.y1 = (int)by1;
     return true;
 }
 

@@ -53,6 +53,38 @@ typedef struct fs_edge_planes {
     int x0, x1, y0, y1; /* raster-frame bounding box, inclusive, on screen */
 } fs_edge_planes;
 
+/* The inclusive box of fixed-point corners (x[i], y[i]), i < n. */
+static inline void fs_corner_box(const int64_t *x, const int64_t *y, int n, int64_t *minx, int64_t *maxx,
+                                 int64_t *miny, int64_t *maxy)
+{
+    *minx = *maxx = x[0];
+    *miny = *maxy = y[0];
+    for (int i = 1; i < n; i++) {
+        if (x[i] < *minx) *minx = x[i];
+        if (x[i] > *maxx) *maxx = x[i];
+        if (y[i] < *miny) *miny = y[i];
+        if (y[i] > *maxy) *maxy = y[i];
+    }
+}
+
+/* Pixel ownership (GL 1.5 spec 4.1.1): clips the inclusive pixel box to the
+ * W x H window into *x0..*y1; false when nothing of it is on screen. */
+static inline bool fs_window_box(int64_t bx0, int64_t by0, int64_t bx1, int64_t by1, int W, int H, int *x0,
+                                 int *x1, int *y0, int *y1)
+{
+    if (bx0 < 0) bx0 = 0;
+    if (by0 < 0) by0 = 0;
+    if (bx1 > W - 1) bx1 = W - 1;
+    if (by1 > H - 1) by1 = H - 1;
+    if (bx0 > bx1 || by0 > by1)
+        return false;
+    *x0 = (int)bx0;
+    *x1 = (int)bx1;
+    *y0 = (int)by0;
+    *y1 = (int)by1;
+    return true;
+}
+
 /* Adds the fill-rule bias and scales one plane through fixed-point corners
  * (xa, ya) -> (xb, yb) (llvmpipe's plane setup shared by all primitives). */
 void fs_edge_plane(fs_edge_planes *e, int i, int64_t xa, int64_t ya, int64_t xb, int64_t yb, int order);
