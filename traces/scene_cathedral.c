@@ -288,15 +288,10 @@ int sg_scene_cathedrals(sg *s, const sg_params *p, char *err, size_t errlen)
     G(s, DepthFunc, GL_LEQUAL);
     G(s, Enable, GL_CULL_FACE);
     G(s, ShadeModel, GL_SMOOTH);
-    G(s, Enable, GL_LIGHTING);
-    G(s, Enable, GL_COLOR_MATERIAL);
-    G(s, ColorMaterial, GL_FRONT, GL_AMBIENT_AND_DIFFUSE);
+    sg_lighting(s, GL_FRONT);
     const float amb[4] = {0.15f, 0.15f, 0.18f, 1};
     G(s, LightModelfv, GL_LIGHT_MODEL_AMBIENT, amb);
-    G(s, MatrixMode, GL_PROJECTION);
-    G0(s, LoadIdentity);
     sg_perspective(s, 65.0, (double)p->width / p->height, 0.3, 800.0);
-    G(s, MatrixMode, GL_MODELVIEW);
 
     for (int fr = 0; fr < p->frames; fr++) {
         float t = p->frames > 1 ? (float)fr / (float)(p->frames - 1) : 0.0f;

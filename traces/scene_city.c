@@ -260,14 +260,9 @@ static int city_run(sg *s, const sg_params *p, int paper_houses, double paper_de
     G(s, Enable, GL_CULL_FACE);
     G(s, CullFace, GL_BACK);
     G(s, ShadeModel, GL_FLAT);
-    G(s, Enable, GL_LIGHTING);
-    G(s, Enable, GL_COLOR_MATERIAL);
-    G(s, ColorMaterial, GL_FRONT, GL_AMBIENT_AND_DIFFUSE);
+    sg_lighting(s, GL_FRONT);
     G(s, Enable, GL_NORMALIZE);
-    G(s, MatrixMode, GL_PROJECTION);
-    G0(s, LoadIdentity);
     sg_perspective(s, 60.0, (double)p->width / p->height, 0.5, 3000.0);
-    G(s, MatrixMode, GL_MODELVIEW);
 
     float street_x = (float)(cols / 2) * CITY_LOT;
     float z_end = rows * CITY_LOT * 0.9f;

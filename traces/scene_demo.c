@@ -16,18 +16,13 @@ int sg_scene_demo(sg *s, const sg_params *p, char *err, size_t errlen)
     G(s, Enable, GL_CULL_FACE);
     G(s, CullFace, GL_BACK);
     G(s, FrontFace, GL_CCW);
-    G(s, Enable, GL_LIGHTING);
-    G(s, Enable, GL_COLOR_MATERIAL);
-    G(s, ColorMaterial, GL_FRONT, GL_AMBIENT_AND_DIFFUSE);
+    sg_lighting(s, GL_FRONT);
     const float spec[4] = {0.8f, 0.8f, 0.8f, 1};
     G(s, Materialfv, GL_FRONT, GL_SPECULAR, spec);
     G(s, Materialf, GL_FRONT, GL_SHININESS, 40.0f);
     const float amb[4] = {0.12f, 0.12f, 0.14f, 1};
     G(s, LightModelfv, GL_LIGHT_MODEL_AMBIENT, amb);
-    G(s, MatrixMode, GL_PROJECTION);
-    G0(s, LoadIdentity);
     sg_perspective(s, 45.0, (double)p->width / p->height, 1.0, 100.0);
-    G(s, MatrixMode, GL_MODELVIEW);
 
     for (int fr = 0; fr < p->frames; fr++) {
         float ang = 0.5f + 0.25f * (float)fr;

@@ -199,13 +199,8 @@ int sg_scene_forest(sg *s, const sg_params *p, char *err, size_t errlen)
     G(s, Enable, GL_DEPTH_TEST);
     G(s, Enable, GL_CULL_FACE);
     G(s, ShadeModel, GL_SMOOTH);
-    G(s, Enable, GL_LIGHTING);
-    G(s, Enable, GL_COLOR_MATERIAL);
-    G(s, ColorMaterial, GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE);
-    G(s, MatrixMode, GL_PROJECTION);
-    G0(s, LoadIdentity);
+    sg_lighting(s, GL_FRONT_AND_BACK);
     sg_perspective(s, 55.0, (double)p->width / p->height, 0.5, 1000.0);
-    G(s, MatrixMode, GL_MODELVIEW);
 
     sg_rng r;
     sg_rng_seed(&r, p->seed * 17 + 3);

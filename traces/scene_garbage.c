@@ -102,17 +102,12 @@ int sg_scene_garbage(sg *s, const sg_params *p, char *err, size_t errlen)
     G(s, Enable, GL_DEPTH_TEST);
     G(s, Enable, GL_CULL_FACE);
     G(s, ShadeModel, GL_SMOOTH);
-    G(s, Enable, GL_LIGHTING);
-    G(s, Enable, GL_COLOR_MATERIAL);
-    G(s, ColorMaterial, GL_FRONT, GL_AMBIENT_AND_DIFFUSE);
+    sg_lighting(s, GL_FRONT);
     G(s, Enable, GL_NORMALIZE); /* objects are scaled */
     const float spec[4] = {0.4f, 0.4f, 0.4f, 1};
     G(s, Materialfv, GL_FRONT, GL_SPECULAR, spec);
     G(s, Materialf, GL_FRONT, GL_SHININESS, 24.0f);
-    G(s, MatrixMode, GL_PROJECTION);
-    G0(s, LoadIdentity);
     sg_perspective(s, 50.0, (double)p->width / p->height, 1.0, 1000.0);
-    G(s, MatrixMode, GL_MODELVIEW);
 
     /* The can: a box of side ~ cube root of n, objects ~2 m apart. */
     float side = 2.2f * (float)cbrt((double)n);

@@ -139,14 +139,9 @@ int sg_scene_terrain(sg *s, const sg_params *p, char *err, size_t errlen)
     G(s, Enable, GL_DEPTH_TEST);
     G(s, Enable, GL_CULL_FACE);
     G(s, ShadeModel, GL_SMOOTH);
-    G(s, Enable, GL_LIGHTING);
-    G(s, Enable, GL_COLOR_MATERIAL);
-    G(s, ColorMaterial, GL_FRONT, GL_AMBIENT_AND_DIFFUSE);
-    G(s, MatrixMode, GL_PROJECTION);
-    G0(s, LoadIdentity);
+    sg_lighting(s, GL_FRONT);
     /* Hüttner 1999, sec. 2.3.5: a 50 mm lens, i.e. about 40 degrees. */
     sg_perspective(s, 40.0, (double)p->width / p->height, 50.0, 200000.0);
-    G(s, MatrixMode, GL_MODELVIEW);
 
     for (int fr = 0; fr < p->frames; fr++) {
         double t = p->frames > 1 ? (double)fr / (double)(p->frames - 1) : 0.0;

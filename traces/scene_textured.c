@@ -84,10 +84,7 @@ int sg_scene_textured(sg *s, const sg_params *p, char *err, size_t errlen)
     G(s, TexEnvi, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
     G(s, Enable, GL_DEPTH_TEST);
     G(s, Enable, GL_CULL_FACE);
-    G(s, MatrixMode, GL_PROJECTION);
-    G0(s, LoadIdentity);
     sg_perspective(s, 50.0, (double)p->width / p->height, 0.5, 400.0);
-    G(s, MatrixMode, GL_MODELVIEW);
 
     /* Ground: quads over [-100, 100]^2, 64 per row, as many as the budget
      * holds; texture coordinates repeat every 4 units. */

@@ -204,7 +204,17 @@ void *sg_buf(sg *s, int slot, size_t bytes)
 void sg_perspective(sg *s, double fovy_deg, double aspect, double znear, double zfar)
 {
     double ymax = znear * tan(fovy_deg * SG_PI / 360.0);
+    G(s, MatrixMode, GL_PROJECTION);
+    G0(s, LoadIdentity);
     G(s, Frustum, -ymax * aspect, ymax * aspect, -ymax, ymax, znear, zfar);
+    G(s, MatrixMode, GL_MODELVIEW);
+}
+
+void sg_lighting(sg *s, GLenum face)
+{
+    G(s, Enable, GL_LIGHTING);
+    G(s, Enable, GL_COLOR_MATERIAL);
+    G(s, ColorMaterial, face, GL_AMBIENT_AND_DIFFUSE);
 }
 
 static void norm3(float v[3])

@@ -97,7 +97,10 @@ void sg_frame_end(sg *s);
 void *sg_buf(sg *s, int slot, size_t bytes);
 
 /* ---- camera helpers (no GLU in the command table) ---- */
+/* The projection matrix of gluPerspective; leaves GL_MODELVIEW current. */
 void sg_perspective(sg *s, double fovy_deg, double aspect, double znear, double zfar);
+/* Lighting on, with glColor driving the ambient and diffuse material of face. */
+void sg_lighting(sg *s, GLenum face);
 void sg_look_at(sg *s, const float eye[3], const float at[3], const float up[3]);
 void sg_light(sg *s, GLenum light, const float pos[4], const float diffuse[4],
               const float ambient[4], const float specular[4]);
