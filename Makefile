@@ -44,7 +44,7 @@ FRAGSIM := $(BUILD)/fragsim
 # Link the archive whole so that every executor overrides its weak fallback.
 WHOLE_LIB = -Wl,--whole-archive $(LIB) -Wl,--no-whole-archive
 
-.PHONY: all deps test run sanitize bench golden docs clean scenes tests shim study-filters
+.PHONY: all deps test run sanitize fuzz bench golden docs clean scenes tests shim study-filters
 .PHONY: studies study-occlusion study-query-cost study-texture-cache
 all: $(LIB) $(FRAGSIM) tests scenes shim
 
@@ -93,6 +93,11 @@ sanitize:
 	$(MAKE) BUILD=build-san OPT=-O1 SAN="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" all
 	FRAGSIM_SKIP_COMPILER_TEST=1 ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 tests/run_all.sh build-san
 
+# Fuzzing the trace path (scripts/fuzz.sh; FUZZ_SECONDS, default 300).
+fuzz: deps all
+	$(MAKE) BUILD=build-fuzz CC=clang OPT=-O1 SAN="-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" build-fuzz/libfragsim.a
+	@scripts/fuzz.sh $(BUILD) build-fuzz
+
 bench: deps all
 	@scripts/bench.sh $(BUILD)
 
@@ -119,6 +124,6 @@ docs: all
 	@scripts/gen_docs.sh $(BUILD)
 
 clean:
-	rm -rf build build-san build-clang
+	rm -rf build build-san build-clang build-fuzz
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

@@ -1,0 +1,44 @@
+#!/bin/bash
+# `make fuzz`: coverage-guided fuzzing of the trace reader, the replayer and
+# the GL dispatch (tests/fuzz/fuzz_trace.c) under ASan + UBSan with clang's
+# libFuzzer.  Seeds are the decompressed streams of small traces: two OSMesa
+# programs captured through the shim (FRAGSIM_TRACE) and tiny scenegen scenes.
+# FUZZ_SECONDS (default 300) bounds the run; the corpus persists in
+# $FB/corpus, and a crash or hang is written to $FB/crash-* (see
+# tests/fuzz/README.md for what to do with one).
+set -euo pipefail
+B=${1:-build}
+FB=${2:-build-fuzz}
+SECONDS_MAX=${FUZZ_SECONDS:-300}
+LIBS="$(pkg-config --libs snappy inih) -lm"
+CFLAGS_F="-std=c11 -D_POSIX_C_SOURCE=200809L -g -O1 -Wall -Wextra -Werror -fno-omit-frame-pointer"
+
+clang $CFLAGS_F -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
+    tests/fuzz/fuzz_trace.c -Wl,--whole-archive "$FB/libfragsim.a" -Wl,--no-whole-archive $LIBS \
+    -o "$FB/fuzz_trace"
+cc $CFLAGS_F tests/fuzz/unpack_trace.c $(pkg-config --libs snappy) -o "$FB/unpack_trace"
+
+seeds="$FB/seeds"
+mkdir -p "$seeds" "$FB/corpus"
+if [ -z "$(ls -A "$seeds")" ]; then
+    tmp=$(mktemp -d)
+    trap 'rm -rf "$tmp"' EXIT
+    for p in osmesa_boxes osmesa_api; do
+        cc -std=c11 -O1 "tests/programs/$p.c" -o "$tmp/$p" -L"$B" -lfragsimGL -Wl,-rpath,"$PWD/$B"
+        (cd "$tmp" && FRAGSIM_TRACE="$tmp/$p.trace" "./$p" "$tmp/$p.ppm" >/dev/null 2>&1) || true
+    done
+    "$B/scenegen" bench8 --scale 100 --frames 2 --size 32x32 -o "$tmp/bench8.trace" >/dev/null
+    "$B/scenegen" demo --scale 100 --frames 1 --size 32x32 -o "$tmp/demo.trace" >/dev/null
+    "$B/scenegen" textured --scale 100 --frames 1 --size 32x32 -o "$tmp/textured.trace" >/dev/null
+    for t in "$tmp"/*.trace; do
+        [ -s "$t" ] || continue
+        "$FB/unpack_trace" "$t" > "$seeds/$(basename "$t" .trace).raw"
+        # The container itself as a seed too (the "at" path of the harness),
+        # when it is small.
+        [ "$(stat -c %s "$t")" -le 65536 ] && cp "$t" "$seeds/$(basename "$t" .trace).at"
+    done
+fi
+echo "fuzz: $SECONDS_MAX s; seeds $(ls "$seeds" | wc -l), corpus $(ls "$FB/corpus" | wc -l) inputs"
+ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+    "$FB/fuzz_trace" -max_total_time="$SECONDS_MAX" -timeout=20 -rss_limit_mb=4096 -max_len=262144 \
+    -artifact_prefix="$FB/" -print_final_stats=1 "$FB/corpus" "$seeds"
