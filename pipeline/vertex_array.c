@@ -645,10 +645,13 @@ void fs_exec_ArrayElement(fs_context *c, GLint i)
         fs_error(c, GL_INVALID_VALUE);
         return;
     }
+    /* GL 1.5 spec 2.8: the values of the enabled arrays become current, as
+     * if the corresponding commands had been called; a disabled array is
+     * not read (its pointer may be NULL or stale). */
     fs_ivert v;
-    fetch_vertex(c, (size_t)i, &v);
-    /* GL 1.5 spec 2.8: the array values become current, as if the
-     * corresponding commands had been called. */
+    if (c->arrays.vertex.enabled)
+        fetch_position(c, (size_t)i, &v);
+    fetch_attributes(c, (size_t)i, &v);
     if (c->arrays.color.enabled) fs_exec_Color4fv(c, v.col);
     if (c->arrays.normal.enabled) fs_exec_Normal3fv(c, v.nrm);
     if (c->arrays.texcoord.enabled) memcpy(c->current.texcoord, v.tc, sizeof v.tc);

@@ -1,25 +1,29 @@
 #!/bin/bash
-# `make fuzz`: coverage-guided fuzzing of the trace reader, the replayer and
-# the GL dispatch (tests/fuzz/fuzz_trace.c) under ASan + UBSan with clang's
-# libFuzzer.  Seeds are the decompressed streams of small traces: two OSMesa
-# programs captured through the shim (FRAGSIM_TRACE) and tiny scenegen scenes.
-# FUZZ_SECONDS (default 300) bounds the run; the corpus persists in
-# $FB/corpus, and a crash or hang is written to $FB/crash-* (see
-# tests/fuzz/README.md for what to do with one).
+# `make fuzz`: coverage-guided fuzzing under ASan + UBSan with clang's
+# libFuzzer, of two harnesses in turn (tests/fuzz/README.md):
+#  - fuzz_trace: trace files through the reader, the replayer and the model;
+#    seeds are the decompressed streams of small traces (two OSMesa programs
+#    captured through the shim, tiny scenegen scenes);
+#  - fuzz_gl: sequences of GL calls with arbitrary arguments into fs_submit.
+# FUZZ_SECONDS (default 150) bounds each; the corpora persist in $FB/corpus*,
+# and a crash or hang is written to $FB/crash-* (or timeout-*, leak-*).
 set -euo pipefail
 B=${1:-build}
 FB=${2:-build-fuzz}
-SECONDS_MAX=${FUZZ_SECONDS:-300}
+SECONDS_MAX=${FUZZ_SECONDS:-150}
 LIBS="$(pkg-config --libs snappy inih) -lm"
 CFLAGS_F="-std=c11 -D_POSIX_C_SOURCE=200809L -g -O1 -Wall -Wextra -Werror -fno-omit-frame-pointer"
 
 clang $CFLAGS_F -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
     tests/fuzz/fuzz_trace.c -Wl,--whole-archive "$FB/libfragsim.a" -Wl,--no-whole-archive $LIBS \
     -o "$FB/fuzz_trace"
+clang $CFLAGS_F -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
+    tests/fuzz/fuzz_gl.c -Wl,--whole-archive "$FB/libfragsim.a" -Wl,--no-whole-archive $LIBS \
+    -o "$FB/fuzz_gl"
 cc $CFLAGS_F tests/fuzz/unpack_trace.c $(pkg-config --libs snappy) -o "$FB/unpack_trace"
 
 seeds="$FB/seeds"
-mkdir -p "$seeds" "$FB/corpus"
+mkdir -p "$seeds" "$FB/corpus" "$FB/corpus_gl"
 if [ -z "$(ls -A "$seeds")" ]; then
     tmp=$(mktemp -d)
     trap 'rm -rf "$tmp"' EXIT
@@ -38,7 +42,9 @@ if [ -z "$(ls -A "$seeds")" ]; then
         [ "$(stat -c %s "$t")" -le 65536 ] && cp "$t" "$seeds/$(basename "$t" .trace).at"
     done
 fi
-echo "fuzz: $SECONDS_MAX s; seeds $(ls "$seeds" | wc -l), corpus $(ls "$FB/corpus" | wc -l) inputs"
-ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-    "$FB/fuzz_trace" -max_total_time="$SECONDS_MAX" -timeout=20 -rss_limit_mb=4096 -max_len=262144 \
-    -artifact_prefix="$FB/" -print_final_stats=1 "$FB/corpus" "$seeds"
+export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1
+opts=(-max_total_time="$SECONDS_MAX" -timeout=20 -rss_limit_mb=4096 -artifact_prefix="$FB/" -print_final_stats=1)
+echo "fuzz_trace: $SECONDS_MAX s; seeds $(ls "$seeds" | wc -l), corpus $(ls "$FB/corpus" | wc -l) inputs"
+"$FB/fuzz_trace" "${opts[@]}" -max_len=262144 "$FB/corpus" "$seeds"
+echo "fuzz_gl: $SECONDS_MAX s; corpus $(ls "$FB/corpus_gl" | wc -l) inputs"
+"$FB/fuzz_gl" "${opts[@]}" -max_len=8192 "$FB/corpus_gl"

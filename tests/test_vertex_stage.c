@@ -481,6 +481,27 @@ TEST(begin_end_and_array_errors)
     fs_context_destroy(c);
 }
 
+/* glArrayElement reads only the enabled arrays (GL 1.5 spec 2.8): found by
+ * tests/fuzz/fuzz_gl.c, it read the disabled (NULL) vertex array. */
+TEST(array_element_reads_enabled_arrays_only)
+{
+    fs_context *c = ctx(8, 8);
+    REQUIRE(c);
+    fsglColor4f(c, 0.25f, 0.5f, 0.75f, 1.0f);
+    fsglArrayElement(c, 1000); /* no array enabled: nothing happens */
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    CHECK(c->current.color[0] == 0.25f && c->current.color[2] == 0.75f);
+    /* Only the colour array: element 1 becomes the current colour. */
+    const float col[8] = {0, 0, 0, 1, 1.0f, 0.0f, 0.5f, 1.0f};
+    fsglColorPointer(c, 4, GL_FLOAT, 0, col);
+    fsglEnableClientState(c, GL_COLOR_ARRAY);
+    fsglArrayElement(c, 1);
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    CHECK(c->current.color[0] == 1.0f && c->current.color[1] == 0.0f && c->current.color[2] == 0.5f);
+    CHECK_EQ_INT(c->stats.vertices, 0);
+    fs_context_destroy(c);
+}
+
 TEST(color_conversions_table_2_9)
 {
     fs_context *c = ctx(16, 16);
@@ -922,6 +943,7 @@ TEST_LIST = {
     TEST_ENTRY(clip_near_plane_exact),
     TEST_ENTRY(bad_coordinates_do_not_crash),
     TEST_ENTRY(begin_end_and_array_errors),
+    TEST_ENTRY(array_element_reads_enabled_arrays_only),
     TEST_ENTRY(color_conversions_table_2_9),
     TEST_ENTRY(lit_sphere_vs_osmesa),
     TEST_ENTRY(gears_vs_osmesa),
