@@ -34,7 +34,8 @@ typedef struct dl_list {
 
 typedef struct fs_dlist_state {
     dl_list **slots; /* open addressing on name; NULL = empty */
-    size_t nslots, used;
+    size_t nslots, used; /* used: slots taken, tombstones included */
+    size_t names;        /* lists held */
     dl_list *building; /* between glNewList and glEndList */
     GLenum mode;
     GLuint base;
@@ -132,6 +133,7 @@ static int insert_list(fs_dlist_state *s, dl_list *l)
     if (!s->slots[j])
         s->used++;
     s->slots[j] = l;
+    s->names++;
     return 0;
 }
 
@@ -141,6 +143,7 @@ static void delete_list(fs_dlist_state *s, GLuint name)
     if (p) {
         list_free(*p);
         *p = TOMBSTONE(s);
+        s->names--;
     }
 }
 
@@ -289,6 +292,11 @@ static void execute_list(fs_context *c, GLuint name)
     s->depth--;
 }
 
+/* Names held at once.  Each reserved name is a list object (as in Mesa), so
+ * glGenLists(2^31 - 1) from a bad trace would otherwise allocate for hours;
+ * beyond this it sets GL_OUT_OF_MEMORY, which GL allows for any command. */
+#define FS_DLIST_MAX_NAMES ((size_t)1 << 20)
+
 GLuint fs_exec_GenLists(fs_context *c, GLsizei range)
 {
     if (range < 0) {
@@ -298,7 +306,7 @@ GLuint fs_exec_GenLists(fs_context *c, GLsizei range)
     if (range == 0)
         return 0;
     fs_dlist_state *s = state(c);
-    if (!s) {
+    if (!s || (size_t)range > FS_DLIST_MAX_NAMES - s->names) {
         fs_error(c, GL_OUT_OF_MEMORY);
         return 0;
     }

@@ -502,6 +502,26 @@ TEST(array_element_reads_enabled_arrays_only)
     fs_context_destroy(c);
 }
 
+/* glGenLists of a huge range fails with GL_OUT_OF_MEMORY and changes
+ * nothing, instead of allocating 2^31 lists (found by fuzz_gl). */
+TEST(gen_lists_huge_range_is_out_of_memory)
+{
+    fs_context *c = ctx(8, 8);
+    REQUIRE(c);
+    CHECK_EQ_UINT(fsglGenLists(c, 2147483647), 0);
+    CHECK_EQ_INT(fsglGetError(c), GL_OUT_OF_MEMORY);
+    CHECK_EQ_UINT(fsglGenLists(c, -1), 0);
+    CHECK_EQ_INT(fsglGetError(c), GL_INVALID_VALUE);
+    CHECK_EQ_UINT(fsglGenLists(c, 3), 1); /* names 1..3: nothing was reserved */
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    fsglDeleteLists(c, 1, 3);
+    CHECK_EQ_UINT(fsglGenLists(c, 1 << 20), 1); /* the whole allowance, after deleting */
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    CHECK_EQ_UINT(fsglGenLists(c, 1), 0);
+    CHECK_EQ_INT(fsglGetError(c), GL_OUT_OF_MEMORY);
+    fs_context_destroy(c);
+}
+
 TEST(color_conversions_table_2_9)
 {
     fs_context *c = ctx(16, 16);
@@ -944,6 +964,7 @@ TEST_LIST = {
     TEST_ENTRY(bad_coordinates_do_not_crash),
     TEST_ENTRY(begin_end_and_array_errors),
     TEST_ENTRY(array_element_reads_enabled_arrays_only),
+    TEST_ENTRY(gen_lists_huge_range_is_out_of_memory),
     TEST_ENTRY(color_conversions_table_2_9),
     TEST_ENTRY(lit_sphere_vs_osmesa),
     TEST_ENTRY(gears_vs_osmesa),
