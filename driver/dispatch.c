@@ -343,6 +343,16 @@ static int dispatch(fs_context *c, fs_call *call, bool in_bounds)
     int pk, slot = fs_pointer_slot(call->cmd, &pk);
     if (slot >= 0 && call->a[pk].is_data)
         return dispatch_pointer_data(c, call, slot, pk);
+    if (call->cmd == FS_CMD_OcclusionBuffers && call->a[1].is_data) {
+        /* glOcclusionBuffers' second argument holds addresses the unit
+         * writes to at glRenderMode: data from a trace are no addresses of
+         * this process, so the records stay in the unit, as when the trace
+         * gives a pointer. */
+        fs_call local = *call;
+        local.a[1].p = NULL;
+        local.a[1].is_data = 0;
+        return dispatch_call(c, &local);
+    }
     return dispatch_call(c, call);
 }
 

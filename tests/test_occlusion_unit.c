@@ -28,6 +28,7 @@
 #include "../pipeline/context.h"
 #include "../units/occlusion_unit.h"
 #include "../driver/osmesa_ref.h"
+#include "../driver/gl_call.h"
 #include "../glext/GL_FRAGSIM_occlusion_unit.h"
 
 #define W 128
@@ -713,8 +714,42 @@ TEST(example_collision_detection)
     fs_context_destroy(c);
 }
 
+/* glOcclusionBuffers' pointer array as data from a trace holds no
+ * addresses of this process: the records stay in the unit instead of being
+ * written through them at glRenderMode (found by tests/fuzz/fuzz_gl.c). */
+TEST(occlusion_buffers_from_trace_data_are_not_written)
+{
+    fs_context *c = new_ctx(1, 32);
+    REQUIRE(c);
+    GLint tile[4] = {0, 0, W, H};
+    fsglScissors(c, 1, tile);
+    GLint sizes[1] = {16};
+    unsigned char junk[8];
+    memset(junk, 0x41, sizeof junk); /* the pointer 0x4141414141414141 */
+    fs_call call = {0};
+    call.cmd = FS_CMD_OcclusionBuffers;
+    call.nargs = 2;
+    call.a[0].p = sizes;
+    call.a[0].count = 1;
+    call.a[1].p = junk;
+    call.a[1].count = sizeof junk;
+    call.a[1].is_data = 1;
+    CHECK_EQ_INT(fs_submit(c, &call), 0);
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    fsglRenderMode(c, GL_VERBOSE_OCCLUSION);
+    fsglBegin(c, GL_TRIANGLES);
+    fsglVertex2f(c, -1, -1);
+    fsglVertex2f(c, 1, -1);
+    fsglVertex2f(c, 0, 1);
+    fsglEnd(c);
+    CHECK_EQ_INT(fsglRenderMode(c, GL_RENDER), 1); /* one tile's record, kept by the unit */
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    fs_context_destroy(c);
+}
+
 TEST_LIST = {
     TEST_ENTRY(errors_and_state),
+    TEST_ENTRY(occlusion_buffers_from_trace_data_are_not_written),
     TEST_ENTRY(query_errors_vs_osmesa),
     TEST_ENTRY(random_boxes_counters_vs_recount_and_osmesa),
     TEST_ENTRY(saturation_overflow_and_terminator),
