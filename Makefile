@@ -93,7 +93,8 @@ sanitize:
 	$(MAKE) BUILD=build-san OPT=-O1 SAN="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" all
 	FRAGSIM_SKIP_COMPILER_TEST=1 ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 tests/run_all.sh build-san
 
-# Fuzzing the trace path (scripts/fuzz.sh; FUZZ_SECONDS, default 300).
+# Fuzzing the trace path and the GL API (scripts/fuzz.sh, tests/fuzz/README.md;
+# FUZZ_SECONDS per harness, default 150).
 fuzz: deps all
 	$(MAKE) BUILD=build-fuzz CC=clang OPT=-O1 SAN="-fsanitize=fuzzer-no-link,address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" build-fuzz/libfragsim.a
 	@scripts/fuzz.sh $(BUILD) build-fuzz

@@ -747,9 +747,31 @@ TEST(occlusion_buffers_from_trace_data_are_not_written)
     fs_context_destroy(c);
 }
 
+/* The dispatcher gives a pointer argument's trace data a meaning for the
+ * client-array pointer calls (copied into the context) and drops it for
+ * glOcclusionBuffers (above).  A new command with a pointer argument must
+ * be added there too, or its trace data would be taken for addresses. */
+TEST(every_pointer_argument_has_a_rule_for_trace_data)
+{
+    for (int cmd = 0; cmd < FS_CMD_COUNT; cmd++) {
+        const fs_cmd_info *info = &fs_cmd_table[cmd];
+        int pk, slot = fs_pointer_slot(cmd, &pk);
+        for (int k = 0; k < info->nargs; k++) {
+            if (info->kinds[k] != FS_K_CPTR)
+                continue;
+            bool ruled = (slot >= 0 && k == pk) || (cmd == FS_CMD_OcclusionBuffers && k == 1);
+            if (!ruled)
+                fprintf(stderr, "  %s argument %d (%s): no rule for trace data\n", info->name, k,
+                        info->argnames[k]);
+            CHECK(ruled);
+        }
+    }
+}
+
 TEST_LIST = {
     TEST_ENTRY(errors_and_state),
     TEST_ENTRY(occlusion_buffers_from_trace_data_are_not_written),
+    TEST_ENTRY(every_pointer_argument_has_a_rule_for_trace_data),
     TEST_ENTRY(query_errors_vs_osmesa),
     TEST_ENTRY(random_boxes_counters_vs_recount_and_osmesa),
     TEST_ENTRY(saturation_overflow_and_terminator),

@@ -14,7 +14,7 @@
  * (the dispatcher gives them scratch space; an application's own output
  * buffers are trusted, as GL trusts them).  Buffers live until the input ends,
  * because the context keeps vertex-array pointers, as with a replay.
- * The input's length modulo 3 picks functional, full-cycle or sampled mode.
+ * The mode (functional, full-cycle or sampled) is fuzz_cycle.h's.
  */
 #include <float.h>
 #include <math.h>
@@ -23,9 +23,7 @@
 #include <string.h>
 #include "../../driver/gl_call.h"
 #include "../../driver/gl_enums.h"
-#include "../../pipeline/config.h"
-#include "../../pipeline/context.h"
-#include "../../rtl_model/cycle_model.h"
+#include "fuzz_cycle.h"
 
 int LLVMFuzzerInitialize(int *argc, char ***argv);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -202,30 +200,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fs_context *c = fs_context_create(&cfg, 32, 32);
     if (!c)
         return 0;
-    char err[256];
-    fs_cycle *cy = NULL;
-    int mode = (int)(size % 3) - 1; /* -1: functional */
-    if (mode >= 0 && (cy = fs_cycle_create(&cfg, (fs_cycle_mode)mode, err, sizeof err))) {
-        fs_cycle_set_frames(cy, 1);
-        fs_cycle_attach(cy, c);
-    }
+    fs_cycle *cy = fuzz_cycle_begin(&cfg, c, size, 1);
     input in = {data, size};
     arena ar = {0};
     fs_call call;
     for (int n = 0; in.n && n < 4096; n++) {
         if (!make_call(&in, &ar, &call))
             break;
-        if (cy && fs_cycle_skip_call(cy, c, call.cmd))
-            continue;
-        fs_submit(c, &call);
+        fuzz_cycle_submit(cy, c, &call);
     }
-    if (cy) {
-        fs_cycle_stats st;
-        fs_cycle_frame_end(cy, &st);
-        fs_cycle_finish(cy);
-        fs_cycle_totals(cy, &st);
-        fs_cycle_destroy(cy);
-    }
+    fuzz_cycle_frame_end(cy);
+    fuzz_cycle_end(cy);
     fs_context_destroy(c);
     for (size_t i = 0; i < ar.n; i++)
         free(ar.p[i]);

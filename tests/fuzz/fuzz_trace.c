@@ -1,9 +1,8 @@
 /*
  * libFuzzer harness for the path a captured trace takes: the apitrace
  * reader (driver/trace_read.c), the replayer's validation pass and the GL
- * dispatch into the model on a small window: in functional mode, or with
- * the cycle model attached in full or sampled mode (chosen by the input's
- * length modulo 3, so each input always takes the same path).
+ * dispatch into the model on a small window, in the mode fuzz_cycle.h
+ * picks.
  *
  * The input is the *decompressed* event stream (the fuzzer mutates calls,
  * not Snappy blocks); the harness wraps it in the Snappy container in a
@@ -23,9 +22,7 @@
 #include <unistd.h>
 #include "../../driver/gl_call.h"
 #include "../../driver/replay.h"
-#include "../../pipeline/config.h"
-#include "../../pipeline/context.h"
-#include "../../rtl_model/cycle_model.h"
+#include "fuzz_cycle.h"
 
 /* The writer's chunk size (driver/trace_write.c): apitrace's limit too. */
 #define CHUNK (1u << 20)
@@ -90,32 +87,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fs_config cfg;
     fs_config_defaults(&cfg);
     fs_context *c = fs_context_create(&cfg, info->width, info->height);
-    fs_cycle *cy = NULL;
-    int mode = (int)(size % 3) - 1; /* -1: functional */
-    if (c && mode >= 0 && (cy = fs_cycle_create(&cfg, (fs_cycle_mode)mode, err, sizeof err))) {
-        fs_cycle_set_frames(cy, info->frames);
-        fs_cycle_attach(cy, c);
-    }
     if (c) {
+        fs_cycle *cy = fuzz_cycle_begin(&cfg, c, size, info->frames);
         fs_call call;
         fs_replay_event ev;
         while ((ev = fs_replay_next(r, &call)) != FS_REPLAY_EOF && ev != FS_REPLAY_ERROR) {
-            if (ev == FS_REPLAY_FRAME_END && cy) {
-                fs_cycle_stats st;
-                fs_cycle_frame_end(cy, &st);
-            } else if (ev == FS_REPLAY_CALL) {
-                if (cy && fs_cycle_skip_call(cy, c, call.cmd))
-                    continue;
-                if (fs_submit(c, &call) != 0)
-                    break;
-            }
+            if (ev == FS_REPLAY_FRAME_END)
+                fuzz_cycle_frame_end(cy);
+            else if (ev == FS_REPLAY_CALL && fuzz_cycle_submit(cy, c, &call) != 0)
+                break;
         }
-        if (cy) {
-            fs_cycle_stats t;
-            fs_cycle_finish(cy);
-            fs_cycle_totals(cy, &t);
-        }
-        fs_cycle_destroy(cy);
+        fuzz_cycle_end(cy);
         fs_context_destroy(c);
     }
     fs_replay_close(r);
