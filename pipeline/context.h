@@ -38,6 +38,12 @@ struct fs_context {
     fs_framebuffer fb;
 
     GLint pack_alignment, unpack_alignment, unpack_row_length, pack_row_length;
+    /* The rest of the pixel-store state (GL 1.5 spec table 3.1 / 4.5; all
+     * 0 initially, swap bytes and LSB first as 0/1), read by
+     * pipeline/pixel_transfer.c. */
+    GLint unpack_skip_pixels, unpack_skip_rows, unpack_image_height, unpack_skip_images;
+    GLint pack_skip_pixels, pack_skip_rows, pack_image_height, pack_skip_images;
+    GLint unpack_swap_bytes, unpack_lsb_first, pack_swap_bytes, pack_lsb_first;
     bool unmodelled_caps[32];     /* enables fragsim stores but does not model (driver/gl_state.c) */
 
     struct fs_dlist_state *lists;
