@@ -10,8 +10,9 @@
  * description only the first time the id appears.
  *
  * The writer writes version 6 (what apitrace 11 writes and reads).  The
- * reader accepts versions 0-6 of the Snappy container; gzip-compressed (old)
- * traces are reported as unsupported.
+ * reader accepts versions 0-6 in the Snappy container and in the old zlib
+ * container (the whole file one gzip stream of the same events, as
+ * apitrace's lib/trace/trace_file_zlib.cpp reads it with gzread).
  */
 #ifndef FS_TRACE_H
 #define FS_TRACE_H

@@ -17,11 +17,18 @@
 #include <errno.h>
 #include <sys/stat.h>
 #include <snappy-c.h>
+#include <zlib.h>
 #include "trace.h"
 
 
 #define CHUNK_MAX (1u << 20)          /* a chunk decompresses to at most 1 MiB */
 #define EXPANSION 22u
+/* Deflate's largest expansion: a match of 258 bytes costs at least 2 bits
+ * (a 1-bit length code and a 1-bit distance code), so 1032 bytes per
+ * compressed byte, plus one match inflate may hold back. */
+#define GZ_EXPANSION 1032u
+#define GZ_HELD 258u
+#define GZ_IN (64u << 10)             /* compressed bytes read at a time */
 #define MAX_ITEM (1ull << 30)         /* longest string, blob or array: 1 GiB */
 #define MAX_SIG_STRING (1u << 20)     /* names in signatures and properties */
 #define MAX_SIG_ID (1u << 20)         /* ids of function/enum/bitmask/struct signatures */
@@ -197,6 +204,13 @@ struct fs_trace_reader {
     uint64_t file_size;
     uint64_t file_pos;       /* file offset of the next chunk */
     uint64_t chunk_off;      /* file offset of the current chunk's length */
+    /* The zlib container (old apitrace; lib/trace/trace_file_zlib.cpp reads
+     * it with gzread): the whole file is one gzip stream, or gzip members
+     * one after another, of the same event stream the Snappy chunks carry. */
+    z_stream *gz;            /* NULL for the Snappy container */
+    int gz_file_eof;         /* every byte of the file was handed to inflate */
+    int gz_member_end;       /* inflate reached a member's end mark */
+    int gz_cut;              /* the file ended inside a member (lenient mode) */
     char *cbuf;
     size_t cbuf_cap;
     unsigned char *buf;      /* current decompressed chunk */
@@ -241,10 +255,16 @@ static int rfail_at(fs_trace_reader *r, uint64_t off, const char *fmt, ...)
         va_start(ap, fmt);
         vsnprintf(msg, sizeof msg, fmt, ap);
         va_end(ap);
-        snprintf(r->err, sizeof r->err,
-                 "%s: %s%s%s at stream offset %llu (in the chunk at file offset %llu)",
-                 r->path, msg, r->hint ? " " : "", r->hint ? r->hint : "",
-                 (unsigned long long)off, (unsigned long long)r->chunk_off);
+        if (r->gz)
+            snprintf(r->err, sizeof r->err,
+                     "%s: %s%s%s at stream offset %llu (gzip container, before file offset %llu)",
+                     r->path, msg, r->hint ? " " : "", r->hint ? r->hint : "",
+                     (unsigned long long)off, (unsigned long long)r->file_pos);
+        else
+            snprintf(r->err, sizeof r->err,
+                     "%s: %s%s%s at stream offset %llu (in the chunk at file offset %llu)",
+                     r->path, msg, r->hint ? " " : "", r->hint ? r->hint : "",
+                     (unsigned long long)off, (unsigned long long)r->chunk_off);
     }
     r->failed = 1;
     return -1;
@@ -252,9 +272,65 @@ static int rfail_at(fs_trace_reader *r, uint64_t off, const char *fmt, ...)
 
 #define rfail(r, ...) rfail_at((r), stream_off(r), __VA_ARGS__)
 
+/*
+ * The zlib container's load_chunk: inflates up to 1 MiB of the stream into
+ * buf.  A member's end mark followed by more bytes starts the next member (as
+ * gzread reads concatenated members); anything after the end mark that is no
+ * gzip member is an error, as is corrupt data.  A stream cut before its end
+ * mark (apitrace's old writer flushed without finishing the stream when the
+ * program was killed) is an error in strict mode; otherwise what was
+ * decompressed is read and the warning says where it stopped.
+ */
+static __attribute__((noinline)) int load_gz(fs_trace_reader *r)
+{
+    z_stream *z = r->gz;
+    r->stream_base += r->len;
+    r->len = r->pos = 0;
+    z->next_out = r->buf;
+    z->avail_out = CHUNK_MAX;
+    while (z->avail_out) {
+        if (z->avail_in == 0 && !r->gz_file_eof) {
+            size_t got = fread(r->cbuf, 1, GZ_IN, r->f);
+            if (got == 0 && ferror(r->f))
+                return rfail(r, "read error: %s", strerror(errno));
+            r->file_pos += got;
+            r->gz_file_eof = got < GZ_IN;
+            z->next_in = (unsigned char *)r->cbuf;
+            z->avail_in = (unsigned)got;
+        }
+        if (r->gz_member_end) {
+            if (z->avail_in == 0)
+                break;           /* the clean end of the file */
+            if (inflateReset(z) != Z_OK)
+                return rfail(r, "zlib: cannot start the next gzip member");
+            r->gz_member_end = 0;
+        }
+        if (z->avail_in == 0) {  /* the file ends inside a member */
+            if (r->strict_end)
+                return rfail(r, "truncated gzip stream (the file ends before the stream's end mark)");
+            snprintf(r->warning, sizeof r->warning,
+                     "%s: the gzip stream ends without its end mark (truncated file?); read up to stream offset %llu",
+                     r->path, (unsigned long long)(r->stream_base + (CHUNK_MAX - z->avail_out)));
+            r->gz_member_end = r->gz_cut = 1;
+            break;
+        }
+        int zr = inflate(z, Z_NO_FLUSH);
+        if (zr == Z_STREAM_END)
+            r->gz_member_end = 1;
+        else if (zr == Z_MEM_ERROR)
+            return rfail(r, "out of memory");
+        else if (zr != Z_OK && zr != Z_BUF_ERROR)
+            return rfail(r, "bad gzip data (zlib: %s)", z->msg ? z->msg : "inflate failed");
+    }
+    r->len = CHUNK_MAX - z->avail_out;
+    return r->len > 0;
+}
+
 /* Loads the next chunk.  Returns 1, 0 at the end of the file, -1 on error. */
 static int load_chunk(fs_trace_reader *r)
 {
+    if (r->gz)
+        return load_gz(r);
     for (;;) {
         r->stream_base += r->len;
         r->len = r->pos = 0;
@@ -431,6 +507,9 @@ static inline int rd_uint(fs_trace_reader *r, uint64_t *v)
 /* Upper bound of the decompressed bytes still to come. */
 static uint64_t remaining_bound(const fs_trace_reader *r)
 {
+    if (r->gz)
+        return (uint64_t)(r->len - r->pos) + GZ_HELD +
+               ((uint64_t)r->gz->avail_in + (r->file_size - r->file_pos)) * GZ_EXPANSION;
     return (uint64_t)(r->len - r->pos) + (r->file_size - r->file_pos) * EXPANSION;
 }
 
@@ -441,8 +520,14 @@ static int check_count(fs_trace_reader *r, uint64_t off, uint64_t n, uint64_t li
     if (n > limit)
         return rfail_at(r, off, "absurd %s %llu (limit %llu)", what, (unsigned long long)n,
                         (unsigned long long)limit);
-    if (n > remaining_bound(r) / min_bytes)
+    if (n > remaining_bound(r) / min_bytes) {
+        /* A gzip stream cut before its end mark, all of it inflated: the
+         * bound is the data left exactly, so the trace ends inside this
+         * event, as a killed capture's does. */
+        if (r->gz_cut || (r->gz && r->gz_file_eof && r->gz->avail_in == 0 && !r->gz_member_end))
+            r->cut_in_event = 1;
         return rfail_at(r, off, "%s %llu is beyond the remaining data", what, (unsigned long long)n);
+    }
     return 0;
 }
 
@@ -1453,17 +1538,31 @@ fs_trace_reader *fs_trace_open(const char *path, char *err, size_t errlen)
     const char *bad = NULL;
     if (got < 2)
         bad = "file too short to be a trace";
-    else if (magic[0] == 0x1f && magic[1] == 0x8b)
-        bad = "gzip traces unsupported (an old apitrace format; `apitrace repack` converts it to Snappy)";
-    else if (magic[0] != 'a' || magic[1] != 't')
-        bad = "not an apitrace trace (the file does not start with 'at', the Snappy container's mark)";
+    else if (magic[0] == 0x1f && magic[1] == 0x8b) {
+        /* apitrace's zlib container (lib/trace/trace_file_read.cpp picks it
+         * by gzip's magic bytes); inflate from the file's first byte, with
+         * gzip framing (windowBits 16 + 15). */
+        r->gz = calloc(1, sizeof *r->gz);
+        r->cbuf = malloc(GZ_IN);
+        if (!r->gz || !r->cbuf || inflateInit2(r->gz, 16 + MAX_WBITS) != Z_OK) {
+            free(r->gz);
+            r->gz = NULL;
+            bad = "out of memory (zlib)";
+        } else {
+            r->cbuf_cap = GZ_IN;
+            rewind(r->f);
+            r->file_pos = 0;
+        }
+    } else if (magic[0] != 'a' || magic[1] != 't')
+        bad = "not an apitrace trace (the file does not start with 'at' (Snappy) or gzip's mark)";
     if (bad) {
         if (err && errlen)
             snprintf(err, errlen, "%s: %s", path, bad);
         fs_trace_close(r);
         return NULL;
     }
-    r->file_pos = 2;
+    if (!r->gz)
+        r->file_pos = 2;
 
     /* header = version_no semantic_version_no properties (version >= 6) | version_no */
     uint64_t v = 0, sv = 0;
@@ -1519,6 +1618,10 @@ void fs_trace_close(fs_trace_reader *r)
         return;
     if (r->f)
         fclose(r->f);
+    if (r->gz) {
+        inflateEnd(r->gz);
+        free(r->gz);
+    }
     if (r->returned)
         pending_free(r, r->returned);
     while (r->qcount)

@@ -167,10 +167,35 @@ EOF2
     ! [ -e "$WORK/t7.trace" ] && ! [ -e "$WORK/tb.trace" ] || fail "scenegen wrote a trace after a bad argument"
 }
 
+# An old apitrace trace (the zlib container, made by `apitrace repack --zlib`)
+# replays to the same images and statistics as the Snappy trace it came from.
+test_zlib_trace_replays_the_same() {
+    command -v apitrace >/dev/null || skip "apitrace is not installed"
+    local t; t=$(scene_trace textured) || fail "scenegen failed"
+    apitrace repack --zlib "$t" "$WORK/textured_zlib.trace" || fail "apitrace repack failed"
+    [ "$(head -c 2 "$WORK/textured_zlib.trace" | od -An -tx1 | tr -d ' ')" = 1f8b ] || fail "not gzip"
+    "$FRAGSIM" replay --out "$WORK/zs" "$t" >/dev/null 2>&1 || fail "snappy replay failed"
+    "$FRAGSIM" replay --out "$WORK/zz" "$WORK/textured_zlib.trace" >/dev/null 2>"$WORK/e" ||
+        fail "zlib replay failed: $(cat "$WORK/e")"
+    local n=0 f
+    for f in "$WORK"/zs/*.png; do
+        cmp -s "$f" "$WORK/zz/${f##*/}" || fail "${f##*/} differs"
+        n=$((n + 1))
+    done
+    [ $n -ge 2 ] || fail "only $n images"
+    diff <(grep -v '"trace":' "$WORK/zs/stats.json") <(grep -v '"trace":' "$WORK/zz/stats.json") ||
+        fail "statistics differ"
+    head -c 3000 "$WORK/textured_zlib.trace" >"$WORK/zcut.trace"
+    printf 'garbage!' >>"$WORK/zcut.trace"
+    "$FRAGSIM" replay --out "$WORK/zc" "$WORK/zcut.trace" 2>"$WORK/e"
+    [ $? -eq 1 ] || fail "damaged zlib trace: expected exit 1"
+    grep -q "gzip" "$WORK/e" || fail "message: $(cat "$WORK/e")"
+}
+
 for t in test_help test_missing_trace test_truncated_trace test_garbage_trace test_config_errors \
          test_replay_writes_images_and_stats test_replay_is_deterministic test_frames_option test_diff \
          test_check_every_scene test_apitrace_dump_reads_our_traces test_glxgears_capture \
-         test_new_commands_bad_arguments; do
+         test_new_commands_bad_arguments test_zlib_trace_replays_the_same; do
     run_test "$t"
 done
 finish

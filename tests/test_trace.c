@@ -11,6 +11,7 @@
 #include <string.h>
 #include <unistd.h>
 #include <snappy-c.h>
+#include <zlib.h>
 #include "check.h"
 #include "../driver/trace.h"
 #include "../driver/gl_enums.h"
@@ -686,8 +687,9 @@ TEST(bad_magic_and_gzip)
     FILE *f = fopen(tmp_path(path, sizeof path, "gzip.trace"), "wb");
     fwrite("\x1f\x8b\x08\x00\x00\x00", 1, 6, f);
     fclose(f);
+    /* a gzip header cut short: the zlib container, but no header */
     CHECK(fs_trace_open(path, err, sizeof err) == NULL);
-    CHECK(strstr(err, "gzip traces unsupported") != NULL);
+    CHECK(strstr(err, "gzip") != NULL);
     f = fopen(tmp_path(path, sizeof path, "magic.trace"), "wb");
     fwrite("PK\x03\x04", 1, 4, f);
     fclose(f);
@@ -749,6 +751,211 @@ static void put_file(const char *path, const void *p, size_t n)
     FILE *f = fopen(path, "wb");
     fwrite(p, 1, n, f);
     fclose(f);
+}
+
+/* ---- the zlib container (old apitrace traces) ---- */
+
+/* Writes the stream s as gzip data: members gzip members one after another
+ * (what gzread reads as one stream), cut to keep bytes of the file when
+ * keep is not 0. */
+static void write_gzip(const char *path, const unsigned char *s, size_t n, int members, size_t keep)
+{
+    size_t cap = compressBound((uLong)n) + 64u * (unsigned)members + 64, used = 0;
+    unsigned char *out = malloc(cap);
+    for (int m = 0; m < members; m++) {
+        size_t from = n * (size_t)m / (size_t)members, to = n * (size_t)(m + 1) / (size_t)members;
+        z_stream z;
+        memset(&z, 0, sizeof z);
+        deflateInit2(&z, 6, Z_DEFLATED, 16 + MAX_WBITS, 8, Z_DEFAULT_STRATEGY);
+        z.next_in = (unsigned char *)s + from;
+        z.avail_in = (uInt)(to - from);
+        z.next_out = out + used;
+        z.avail_out = (uInt)(cap - used);
+        deflate(&z, Z_FINISH);
+        used = cap - z.avail_out;
+        deflateEnd(&z);
+    }
+    put_file(path, out, keep && keep < used ? keep : used);
+    free(out);
+}
+
+/* Every call of a and b equal: numbers, names, flags, arguments, returns. */
+static void check_same_calls(check_state *check_st_, const char *a, const char *b, long *ncalls)
+{
+    char err[600];
+    *ncalls = -1;
+    fs_trace_reader *ra = fs_trace_open(a, err, sizeof err), *rb;
+    REQUIRE(ra != NULL);
+    rb = fs_trace_open(b, err, sizeof err);
+    if (!rb) {
+        CHECK_FAIL_("%s", err);
+        fs_trace_close(ra);
+        return;
+    }
+    fs_tcall ca, cb;
+    int ka, kb;
+    long n = 0;
+    for (;;) {
+        ka = fs_trace_next(ra, &ca);
+        kb = fs_trace_next(rb, &cb);
+        if (ka != 1 || kb != 1)
+            break;
+        int same = ca.no == cb.no && strcmp(ca.name, cb.name) == 0 && ca.flags == cb.flags &&
+                   ca.nargs == cb.nargs && ca.has_ret == cb.has_ret &&
+                   (!ca.has_ret || tval_equal(&ca.ret, &cb.ret));
+        for (unsigned k = 0; same && k < ca.nargs; k++)
+            same = tval_equal(&ca.args[k], &cb.args[k]);
+        if (!same) {
+            CHECK_FAIL_("call %ld differs: %llu %s / %llu %s", n, (unsigned long long)ca.no,
+                        ca.name, (unsigned long long)cb.no, cb.name);
+            break;
+        }
+        n++;
+    }
+    CHECK_EQ_INT(ka, 0);
+    CHECK_EQ_INT(kb, 0);
+    if (kb < 0)
+        CHECK_FAIL_("%s", fs_trace_error(rb));
+    fs_trace_close(ra);
+    fs_trace_close(rb);
+    *ncalls = n;
+}
+
+/* A stream of many calls with a blob argument, over 1 MiB decompressed. */
+static void big_stream(bytes *b, int ncalls)
+{
+    b_header(b);
+    unsigned char blob[700];
+    for (int i = 0; i < ncalls; i++) {
+        if (i == 0)
+            b_enter_sig(b, 0, "glFoo");
+        else {
+            b_byte(b, 0);
+            b_uint(b, 0);
+            b_uint(b, 0);
+        }
+        for (size_t k = 0; k < sizeof blob; k++)
+            blob[k] = (unsigned char)((unsigned)i * 31u + k * k);
+        b_byte(b, 1); b_uint(b, 0); b_byte(b, 8); b_uint(b, sizeof blob); b_put(b, blob, sizeof blob);
+        b_byte(b, 0);
+        b_byte(b, 1); b_uint(b, (uint64_t)i); b_byte(b, 0);
+    }
+}
+
+/* apitrace's zlib container (lib/trace/trace_file_zlib.cpp: the file is a
+ * gzip stream of the events) reads as the same calls as the Snappy trace it
+ * was repacked from, by apitrace itself (`apitrace repack --zlib`) and by
+ * zlib directly, in one member or several, across 1 MiB boundaries. */
+TEST(zlib_container_reads_like_snappy)
+{
+    char snap[512], gz[512], cmd[1200];
+    bytes b = {0};
+    big_stream(&b, 3000);
+    REQUIRE(b.n > (2u << 20));
+    tmp_path(snap, sizeof snap, "big.trace");
+    write_container(snap, b.p, b.n);
+    long n = 0;
+    write_gzip(tmp_path(gz, sizeof gz, "big1.trace"), b.p, b.n, 1, 0);
+    check_same_calls(check_st_, snap, gz, &n);
+    CHECK_EQ_INT(n, 3000);
+    write_gzip(tmp_path(gz, sizeof gz, "big3.trace"), b.p, b.n, 3, 0);
+    check_same_calls(check_st_, snap, gz, &n);
+    CHECK_EQ_INT(n, 3000);
+    free(b.p);
+    if (!have_cmd("apitrace"))
+        SKIP("apitrace is not installed");
+    tmp_path(snap, sizeof snap, "capture_z.trace");
+    REQUIRE(capture_scene(snap) == 0);
+    tmp_path(gz, sizeof gz, "capture_zlib.trace");
+    snprintf(cmd, sizeof cmd, "apitrace repack --zlib '%s' '%s' >/dev/null 2>&1", snap, gz);
+    REQUIRE(system(cmd) == 0);
+    size_t len;
+    unsigned char *head = file_bytes(gz, &len);
+    REQUIRE(len > 2 && head[0] == 0x1f && head[1] == 0x8b);
+    free(head);
+    check_same_calls(check_st_, snap, gz, &n);
+    CHECK_EQ_INT(n, 20);
+}
+
+/* Damaged gzip data: one clear error, never a crash. */
+TEST(bad_gzip_data)
+{
+    bytes b = {0};
+    big_stream(&b, 200);
+    char path[512], err[600];
+    tmp_path(path, sizeof path, "badgz.trace");
+    /* corrupt deflate data in the middle */
+    write_gzip(path, b.p, b.n, 1, 0);
+    size_t n;
+    unsigned char *f = file_bytes(path, &n);
+    for (size_t k = n / 2; k < n / 2 + 16; k++)
+        f[k] ^= 0x5a;
+    put_file(path, f, n);
+    CHECK_EQ_INT(read_all(path, err, sizeof err), -1);
+    CHECK(strstr(err, "bad gzip data") != NULL);
+    CHECK(strstr(err, "gzip container") != NULL);
+    /* a wrong CRC in the trailer */
+    write_gzip(path, b.p, b.n, 1, 0);
+    free(f);
+    f = file_bytes(path, &n);
+    f[n - 6] ^= 1;
+    put_file(path, f, n);
+    CHECK_EQ_INT(read_all(path, err, sizeof err), -1);
+    CHECK(strstr(err, "incorrect data check") != NULL);
+    /* bytes after the end mark that are no gzip member */
+    write_gzip(path, b.p, b.n, 1, 0);
+    free(f);
+    f = file_bytes(path, &n);
+    f = realloc(f, n + 4);
+    memcpy(f + n, "junk", 4);
+    put_file(path, f, n + 4);
+    CHECK_EQ_INT(read_all(path, err, sizeof err), -1);
+    CHECK(strstr(err, "bad gzip data") != NULL);
+    /* cut short: an error in strict mode, a warning and the calls before the
+     * cut otherwise (as apitrace's gzread-based reader keeps them) */
+    write_gzip(path, b.p, b.n, 1, 0);
+    free(f);
+    f = file_bytes(path, &n);
+    put_file(path, f, n / 2);
+    fs_trace_reader *r = fs_trace_open(path, err, sizeof err);
+    REQUIRE(r != NULL);
+    fs_trace_set_strict_end(r, 1);
+    fs_tcall c;
+    int rc;
+    while ((rc = fs_trace_next(r, &c)) == 1)
+        ;
+    CHECK_EQ_INT(rc, -1);
+    CHECK(strstr(fs_trace_error(r), "truncated") || strstr(fs_trace_error(r), "beyond the remaining data"));
+    fs_trace_close(r);
+    r = fs_trace_open(path, err, sizeof err);
+    REQUIRE(r != NULL);
+    long calls = 0;
+    while ((rc = fs_trace_next(r, &c)) == 1)
+        calls++;
+    CHECK_EQ_INT(rc, 0);
+    CHECK(calls > 10 && calls < 200);
+    CHECK(fs_trace_warning(r) != NULL);
+    fs_trace_close(r);
+    /* only a gzip header */
+    put_file(path, f, 10);
+    CHECK(read_all(path, err, sizeof err) <= 0);
+    /* every cut and a damaged byte at many places: an error or a clean read */
+    for (size_t cut = 3; cut < n; cut += n / 97 + 1) {
+        put_file(path, f, cut);
+        read_all(path, err, sizeof err);
+    }
+    unsigned seed = 777;
+    unsigned char *d = malloc(n);
+    for (int t = 0; t < 300; t++) {
+        memcpy(d, f, n);
+        seed = seed * 1103515245u + 12345u;
+        d[2 + (seed >> 8) % (n - 2)] ^= (unsigned char)(1u + (seed >> 20) % 255u);
+        put_file(path, d, n);
+        read_all(path, err, sizeof err);
+    }
+    free(d);
+    free(f);
+    free(b.p);
 }
 
 TEST(truncated_chunk)
@@ -1125,6 +1332,8 @@ TEST_LIST = {
     TEST_ENTRY(capture_reads_back),
     TEST_ENTRY(read_glxgears_capture),
     TEST_ENTRY(bad_magic_and_gzip),
+    TEST_ENTRY(zlib_container_reads_like_snappy),
+    TEST_ENTRY(bad_gzip_data),
     TEST_ENTRY(bad_version),
     TEST_ENTRY(truncated_chunk),
     TEST_ENTRY(bad_snappy_data),
