@@ -28,6 +28,10 @@ void fs_depth_compare(const uint32_t *a, const uint32_t *b, int width, int heigh
  * with a message in err. */
 int fs_image_write_png(const char *path, const uint8_t *rgba_bottom_up, int width, int height,
                        char *err, size_t errlen);
+/* The same with channels 3 (RGB: alpha dropped, as glretrace's snapshots) or
+ * 4 (RGBA, unassociated alpha: the buffer's bytes as they are). */
+int fs_image_write_png_channels(const char *path, const uint8_t *rgba_bottom_up, int width,
+                                int height, int channels, char *err, size_t errlen);
 /* Reads any image OpenImageIO reads into RGBA8, bottom row first; the caller
  * frees *rgba.  Returns 0, or -1 with a message in err. */
 int fs_image_read(const char *path, uint8_t **rgba, int *width, int *height, char *err, size_t errlen);

@@ -11,15 +11,24 @@
 
 using namespace OIIO;
 
-extern "C" int fs_image_write_png(const char *path, const uint8_t *rgba, int width, int height,
-                                  char *err, size_t errlen)
+extern "C" int fs_image_write_png_channels(const char *path, const uint8_t *rgba, int width,
+                                           int height, int channels, char *err, size_t errlen)
 {
+    if (channels != 3 && channels != 4) {
+        std::snprintf(err, errlen, "%s: %d channels (3 or 4)", path, channels);
+        return -1;
+    }
     std::unique_ptr<ImageOutput> out = ImageOutput::create(path);
     if (!out) {
         std::snprintf(err, errlen, "%s: cannot create: %s", path, OIIO::geterror().c_str());
         return -1;
     }
-    ImageSpec spec(width, height, 4, TypeDesc::UINT8);
+    ImageSpec spec(width, height, channels, TypeDesc::UINT8);
+    // The colour buffer's RGB is not premultiplied by its alpha.  Without
+    // this attribute OpenImageIO takes RGBA as associated alpha and divides
+    // RGB by alpha on writing a PNG (whose alpha is unassociated), so every
+    // pixel with alpha < 255 was stored wrong.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
     if (!out->open(path, spec)) {
         std::snprintf(err, errlen, "%s: %s", path, out->geterror().c_str());
         return -1;
@@ -27,6 +36,7 @@ extern "C" int fs_image_write_png(const char *path, const uint8_t *rgba, int wid
     // GL's row 0 is the bottom; files store the top row first.
     const stride_t row = (stride_t)width * 4;
     const uint8_t *last_row = rgba + (size_t)(height - 1) * (size_t)row;
+    // With 3 channels the 4-byte pixels' alpha is skipped (xstride 4).
     bool ok = out->write_image(TypeDesc::UINT8, last_row, 4, -row);
     ok = out->close() && ok;
     if (!ok) {
@@ -36,10 +46,19 @@ extern "C" int fs_image_write_png(const char *path, const uint8_t *rgba, int wid
     return 0;
 }
 
+extern "C" int fs_image_write_png(const char *path, const uint8_t *rgba, int width, int height,
+                                  char *err, size_t errlen)
+{
+    return fs_image_write_png_channels(path, rgba, width, height, 4, err, errlen);
+}
+
 extern "C" int fs_image_read(const char *path, uint8_t **rgba, int *width, int *height, char *err,
                              size_t errlen)
 {
-    std::unique_ptr<ImageInput> in = ImageInput::open(path);
+    // Read RGB as stored, not multiplied by alpha (see fs_image_write_png).
+    ImageSpec config;
+    config.attribute("oiio:UnassociatedAlpha", 1);
+    std::unique_ptr<ImageInput> in = ImageInput::open(path, &config);
     if (!in) {
         std::snprintf(err, errlen, "%s: cannot read: %s", path, OIIO::geterror().c_str());
         return -1;
