@@ -15,6 +15,8 @@ extern "C" {
 typedef struct fs_image_diff {
     uint64_t pixels;          /* pixels compared */
     uint64_t pixels_differ;   /* pixels with any channel different */
+    uint64_t pixels_within_1; /* of those, pixels whose largest channel difference is 1 */
+    uint64_t pixels_beyond_1; /* pixels with a channel differing by more than 1 */
     int max_diff;             /* largest channel difference, 0..255 */
     double psnr;              /* over RGB, in dB; INFINITY when identical */
     uint64_t depth_differ;    /* pixels whose depth differs (when compared) */

@@ -5,23 +5,27 @@
 
 void fs_image_compare(const uint8_t *a, const uint8_t *b, int width, int height, fs_image_diff *out)
 {
-    uint64_t n = (uint64_t)width * (uint64_t)height, differ = 0;
+    uint64_t n = (uint64_t)width * (uint64_t)height, differ = 0, by1 = 0;
     double sq = 0;
     int maxd = 0;
     for (uint64_t i = 0; i < n; i++) {
-        int any = 0;
+        int pm = 0;
         for (int ch = 0; ch < 4; ch++) {
             int d = abs((int)a[4 * i + ch] - (int)b[4 * i + ch]);
-            any |= d;
-            if (d > maxd)
-                maxd = d;
+            if (d > pm)
+                pm = d;
             if (ch < 3)
                 sq += (double)d * d;
         }
-        differ += any != 0;
+        if (pm > maxd)
+            maxd = pm;
+        differ += pm != 0;
+        by1 += pm == 1;
     }
     out->pixels = n;
     out->pixels_differ = differ;
+    out->pixels_within_1 = by1;
+    out->pixels_beyond_1 = differ - by1;
     out->max_diff = maxd;
     double mse = n ? sq / (3.0 * (double)n) : 0;
     out->psnr = mse > 0 ? 10.0 * log10(255.0 * 255.0 / mse) : INFINITY;
