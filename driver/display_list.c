@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "../pipeline/context.h"
+#include "../pipeline/pixel_transfer.h"
 #include "display_list.h"
 
 /* GL leaves the nesting limit to the implementation (GL_MAX_LIST_NESTING,
@@ -21,7 +22,7 @@ typedef struct dl_entry {
      * the unpack state at compile time, which GL 1.5 spec 5.4 says the
      * list uses ("pixel data are unpacked when the list is compiled"). */
     bool has_unpack;
-    GLint unpack_alignment, unpack_row_length;
+    fs_pixel_store unpack;
 } dl_entry;
 
 typedef struct dl_list {
@@ -229,8 +230,7 @@ void fs_dlist_compile(fs_context *c, const fs_call *call)
     /* The image blob was sized by the current unpack state
      * (fs_teximage_bytes); keep that state with it. */
     e->has_unpack = call->cmd == FS_CMD_TexImage2D || call->cmd == FS_CMD_TexSubImage2D;
-    e->unpack_alignment = c->unpack_alignment;
-    e->unpack_row_length = c->unpack_row_length;
+    e->unpack = fs_pixel_store_unpack(c);
     const fs_cmd_info *info = &fs_cmd_table[call->cmd];
     for (int i = 0; i < info->nargs; i++) {
         size_t es = fs_kind_elem_size(info->kinds[i]);
@@ -278,12 +278,10 @@ static void execute_list(fs_context *c, GLuint name)
             fs_dispatch(c, &e->call);
             c->arrays = saved;
         } else if (e->has_unpack) {
-            GLint align = c->unpack_alignment, len = c->unpack_row_length;
-            c->unpack_alignment = e->unpack_alignment;
-            c->unpack_row_length = e->unpack_row_length;
+            fs_pixel_store saved = fs_pixel_store_unpack(c);
+            fs_pixel_store_set_unpack(c, &e->unpack);
             fs_dispatch(c, &e->call);
-            c->unpack_alignment = align;
-            c->unpack_row_length = len;
+            fs_pixel_store_set_unpack(c, &saved);
         } else {
             fs_dispatch(c, &e->call);
         }

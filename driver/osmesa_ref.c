@@ -10,6 +10,7 @@
 #include <string.h>
 #include "osmesa_ref.h"
 #include "gl_call_unpack.h"
+#include "../pipeline/pixel_transfer.h"
 
 struct fs_osmesa {
     OSMesaContext ctx;
@@ -57,41 +58,51 @@ static void *scratch(fs_osmesa *o, size_t bytes)
     return o->scratch;
 }
 
-/* OSMesa's own glReadPixels needs the real pack state, which the same call
- * stream sets, so the byte count is computed like the model's. */
-static int64_t osm_readpixels_bytes(GLsizei w, GLsizei h)
+/* OSMesa's own pixel-store state of one direction (unpack: pack = false),
+ * which the same call stream sets. */
+static fs_pixel_store osm_pixel_store(bool pack)
 {
-    /* Up to 4 bytes per pixel plus the largest row padding (alignment 8). */
-    return w > 0 && h > 0 ? ((int64_t)w + 8) * h * 4 : 0;
+    static const GLenum names[2][6] = {
+        {GL_UNPACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_PIXELS, GL_UNPACK_SKIP_ROWS,
+         GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST},
+        {GL_PACK_ALIGNMENT, GL_PACK_ROW_LENGTH, GL_PACK_SKIP_PIXELS, GL_PACK_SKIP_ROWS, GL_PACK_SWAP_BYTES,
+         GL_PACK_LSB_FIRST},
+    };
+    GLint v[6] = {4, 0, 0, 0, 0, 0};
+    for (int k = 0; k < 6; k++)
+        glGetIntegerv(names[pack][k], &v[k]);
+    return (fs_pixel_store){.alignment = v[0], .row_length = v[1], .skip_pixels = v[2], .skip_rows = v[3],
+                            .swap_bytes = v[4] != 0, .lsb_first = v[5] != 0};
 }
 
-/* glTexImage2D reads by OSMesa's own unpack state, which the same call
- * stream sets: ask it, and size the image as the model does. */
+/* glReadPixels, glTexImage2D and glGetTexImage read or write by OSMesa's
+ * own pixel-store state: ask it, and size the image as the model does
+ * (pipeline/pixel_transfer.h).  A pair GL 1.5 does not have (Mesa takes
+ * more, e.g. half floats) is sized as the largest group, RGBA floats, so
+ * that OSMesa never reads or writes past the buffer. */
+static int64_t osm_image_bytes(bool pack, GLsizei w, GLsizei h, GLenum format, GLenum type)
+{
+    fs_pixel_store ps = osm_pixel_store(pack);
+    int64_t n = fs_pixel_image_bytes(&ps, 2, w, h, 1, format, type);
+    return n || w <= 0 || h <= 0 ? n : fs_pixel_image_bytes(&ps, 2, w, h, 1, GL_RGBA, GL_FLOAT);
+}
+
+static int64_t osm_readpixels_bytes(GLsizei w, GLsizei h, GLenum format, GLenum type)
+{
+    return osm_image_bytes(true, w, h, format, type);
+}
+
 static int64_t osm_teximage_bytes(GLsizei w, GLsizei h, GLenum format, GLenum type)
 {
-    int n = format == GL_RGBA || format == GL_BGRA ? 4 : format == GL_RGB || format == GL_BGR ? 3
-            : format == GL_LUMINANCE_ALPHA ? 2 : 1;
-    int sz = type == GL_FLOAT ? 4 : 1;
-    GLint len = 0, a = 4;
-    if (w <= 0 || h <= 0)
-        return 0;
-    glGetIntegerv(GL_UNPACK_ROW_LENGTH, &len);
-    glGetIntegerv(GL_UNPACK_ALIGNMENT, &a);
-    int64_t row = (int64_t)n * (len > 0 ? len : w) * sz;
-    if (sz < a)
-        row = (row + a - 1) / a * a;
-    return row * (h - 1) + (int64_t)n * w * sz;
+    return osm_image_bytes(false, w, h, format, type);
 }
 
-/* glGetTexImage writes the level by OSMesa's own pack state: an upper
- * bound from the level's size (16 bytes a pixel, alignment 8). */
-static int64_t osm_gettex_bytes(GLenum target, GLint level)
+static int64_t osm_gettex_bytes(GLenum target, GLint level, GLenum format, GLenum type)
 {
-    GLint w = 0, h = 0, len = 0;
+    GLint w = 0, h = 0;
     glGetTexLevelParameteriv(target, level, GL_TEXTURE_WIDTH, &w);
     glGetTexLevelParameteriv(target, level, GL_TEXTURE_HEIGHT, &h);
-    glGetIntegerv(GL_PACK_ROW_LENGTH, &len);
-    return w > 0 && h > 0 ? ((int64_t)(len > w ? len : w) * 16 + 8) * h : 0;
+    return osm_image_bytes(true, w, h, format, type);
 }
 
 #define FS_OCK_ARR(k, name, cnt) \
@@ -134,9 +145,9 @@ static int64_t osm_gettex_bytes(GLenum target, GLint level)
 #define FS_OCK_OU(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLuint))
 #define FS_OCK_OB(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLboolean))
 #define FS_OCHECK(k, kind, name, cnt) FS_OCK_##kind(k, name, cnt)
-#define fs_readpixels_bytes(c, w, h, f, t) osm_readpixels_bytes(w, h)
+#define fs_readpixels_bytes(c, w, h, f, t) osm_readpixels_bytes(w, h, f, t)
 #define fs_teximage_bytes(c, w, h, f, t) osm_teximage_bytes(w, h, f, t)
-#define fs_gettexImage_bytes(c, tg, l, f, t) osm_gettex_bytes(tg, l)
+#define fs_gettexImage_bytes(c, tg, l, f, t) osm_gettex_bytes(tg, l, f, t)
 #define FS_OCALL_V(e) e
 #define FS_OCALL_U(e) (void)(e)
 #define FS_OCALL_E(e) (void)(e)

@@ -931,8 +931,10 @@ TEST(gl_errors)
     CHECK_EQ_INT(err(c), GL_INVALID_VALUE);
     fsglMPGridImage(c, GL_TEXTURE_2D, 0, 0, 0, 16, 16, GL_COLOR_INDEX, GL_UNSIGNED_BYTE, px);
     CHECK_EQ_INT(err(c), GL_INVALID_ENUM);
-    fsglMPGridImage(c, GL_TEXTURE_2D, 0, 0, 0, 16, 16, GL_RGBA, GL_SHORT, px);
+    fsglMPGridImage(c, GL_TEXTURE_2D, 0, 0, 0, 16, 16, GL_RGBA, 0x1234, px);
     CHECK_EQ_INT(err(c), GL_INVALID_ENUM);
+    fsglMPGridImage(c, GL_TEXTURE_2D, 0, 0, 0, 16, 16, GL_RGBA, GL_UNSIGNED_SHORT_5_6_5, px);
+    CHECK_EQ_INT(err(c), GL_INVALID_OPERATION);
     fsglGetMPGridiv(c, GL_TEXTURE_2D, GL_MPGRID_IMAGES_MISSING, &v);
     CHECK_EQ_INT(v, 2 * 2 * 5); /* nothing changed */
     fsglMPGridImage(c, GL_TEXTURE_2D, 0, 0, 0, 16, 16, GL_RGBA, GL_UNSIGNED_BYTE, px);

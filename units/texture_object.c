@@ -11,6 +11,7 @@
 #include "mpgrid_gl.h"
 #include "footprint.h"
 #include "../pipeline/context.h"
+#include "../pipeline/pixel_transfer.h"
 #include "../glext/GL_FRAGSIM_footprint_filter.h"
 
 static void object_defaults(fs_tex_object *t, GLuint name)
@@ -213,62 +214,28 @@ GLboolean fs_exec_IsTexture(fs_context *c, GLuint texture)
     return t && t->bound_once ? GL_TRUE : GL_FALSE;
 }
 
-/* ---- pixel formats (3.6.4, 3.8.1) ---- */
+/* ---- pixel formats (3.6.4, 3.8.1; pipeline/pixel_transfer.h) ---- */
 
-/* Elements per group of a client format; 0 for formats fragsim does not
- * know (not a GL 1.x colour format). */
-static int format_components(GLenum format)
+/* The format/type errors of glTexImage2D and glTexSubImage2D: those of
+ * 3.6.4 (fs_pixel_check), and INVALID_ENUM for the depth and stencil
+ * formats, which GL 1.5 takes for DrawPixels but not for textures
+ * (3.8.1).  COLOR_INDEX is valid; fragsim has no colour tables to convert
+ * it with. */
+static GLenum tex_format_error(GLenum format, GLenum type)
 {
-    switch (format) {
-    case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE: return 1;
-    case GL_LUMINANCE_ALPHA: return 2;
-    case GL_RGB: case GL_BGR: return 3;
-    case GL_RGBA: case GL_BGRA: return 4;
-    default: return 0;
-    }
+    GLenum err = fs_pixel_check(format, type);
+    if (err == GL_NO_ERROR && (fs_pixel_format_kind(format) & (FS_PIXEL_STENCIL | FS_PIXEL_DEPTH)))
+        return GL_INVALID_ENUM;
+    return err;
 }
 
-static bool format_valid_enum(GLenum format)
-{
-    /* Valid GL 1.5 formats that are not colour formats fragsim converts
-     * (COLOR_INDEX, DEPTH_COMPONENT for textures is GL 1.4 ARB only). */
-    return format_components(format) > 0 || format == GL_COLOR_INDEX;
-}
-
-static bool type_valid_enum(GLenum type)
-{
-    switch (type) {
-    case GL_UNSIGNED_BYTE: case GL_BYTE: case GL_UNSIGNED_SHORT: case GL_SHORT:
-    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: case GL_BITMAP:
-        return true;
-    default:
-        return false;
-    }
-}
-
-static int type_bytes(GLenum type)
-{
-    switch (type) {
-    case GL_UNSIGNED_BYTE: return 1;
-    case GL_FLOAT: return 4;
-    default: return 0;
-    }
-}
-
-/* Bytes glTexImage2D/glTexSubImage2D read (GL 1.5 spec 3.6.4, unpacking:
- * row length and alignment).  0 for unknown formats and types (the command
+/* Bytes glTexImage2D/glTexSubImage2D read (GL 1.5 spec 3.6.4, unpacking by
+ * the whole unpack state).  0 for invalid formats and types (the command
  * then fails with an error and reads nothing). */
 int64_t fs_teximage_bytes(fs_context *c, GLsizei w, GLsizei h, GLenum format, GLenum type)
 {
-    int n = format_components(format), sz = type_bytes(type);
-    if (w <= 0 || h <= 0 || n == 0 || sz == 0)
-        return 0;
-    int64_t len = c->unpack_row_length > 0 ? c->unpack_row_length : w;
-    int64_t a = c->unpack_alignment;
-    int64_t row = (int64_t)n * len * sz;
-    if (sz < a)
-        row = (row + a - 1) / a * a;
-    return row * (h - 1) + (int64_t)n * w * sz;
+    fs_pixel_store ps = fs_pixel_store_unpack(c);
+    return fs_pixel_image_bytes(&ps, 2, w, h, 1, format, type);
 }
 
 int fs_texparam_count(GLenum pname) { return pname == GL_TEXTURE_BORDER_COLOR ? 4 : 1; }
@@ -314,47 +281,6 @@ static bool low_precision_format(GLint f)
     }
 }
 
-static uint8_t float_to_ubyte(float v)
-{
-    /* Conversion of a float component to an 8-bit fixed-point texel
-     * (2.14.9 eq. 2.3 applied to 3.6.4's clamped values), rounded to
-     * nearest. */
-    v = v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
-    return (uint8_t)lrintf(v * 255.0f);
-}
-
-/* Reads one client pixel group as RGBA (3.6.4: missing colour components
- * are 0, a missing alpha is 1; luminance goes to R, G and B). */
-static void read_group(const uint8_t *p, GLenum format, GLenum type, uint8_t out[4])
-{
-    uint8_t e[4];
-    int n = format_components(format);
-    for (int k = 0; k < n; k++) {
-        if (type == GL_UNSIGNED_BYTE) {
-            e[k] = p[k];
-        } else {
-            float f;
-            memcpy(&f, p + 4 * k, sizeof f);
-            e[k] = float_to_ubyte(f);
-        }
-    }
-    out[0] = out[1] = out[2] = 0;
-    out[3] = 255;
-    switch (format) {
-    case GL_RED: out[0] = e[0]; break;
-    case GL_GREEN: out[1] = e[0]; break;
-    case GL_BLUE: out[2] = e[0]; break;
-    case GL_ALPHA: out[3] = e[0]; break;
-    case GL_LUMINANCE: out[0] = out[1] = out[2] = e[0]; break;
-    case GL_LUMINANCE_ALPHA: out[0] = out[1] = out[2] = e[0]; out[3] = e[1]; break;
-    case GL_RGB: out[0] = e[0]; out[1] = e[1]; out[2] = e[2]; break;
-    case GL_BGR: out[0] = e[2]; out[1] = e[1]; out[2] = e[0]; break;
-    case GL_RGBA: memcpy(out, e, 4); break;
-    case GL_BGRA: out[0] = e[2]; out[1] = e[1]; out[2] = e[0]; out[3] = e[3]; break;
-    default: break;
-    }
-}
-
 /* Keeps the components of the base internal format (table 3.15) and
  * expands them as the sampler reads them (see fs_tex_image). */
 static void store_texel(uint8_t *dst, const uint8_t rgba[4], GLenum base)
@@ -369,24 +295,24 @@ static void store_texel(uint8_t *dst, const uint8_t rgba[4], GLenum base)
     }
 }
 
-/* Unpacks a client image into rows [y0, y0+h) and columns [x0, x0+w) of img. */
+/* Unpacks a client image into rows [y0, y0+h) and columns [x0, x0+w) of img
+ * (3.6.4 to RGBA, then table 3.15's components of the base format). */
 static void unpack_image(fs_context *c, fs_tex_image *img, int x0, int y0, int w, int h, GLenum format,
                          GLenum type, const uint8_t *pixels)
 {
-    int n = format_components(format), sz = type_bytes(type);
-    int64_t len = c->unpack_row_length > 0 ? c->unpack_row_length : w;
-    int64_t a = c->unpack_alignment;
-    int64_t row = (int64_t)n * len * sz;
-    if (sz < a)
-        row = (row + a - 1) / a * a;
+    fs_pixel_store ps = fs_pixel_store_unpack(c);
+    fs_pixel_layout l;
+    if (!fs_pixel_layout_init(&l, &ps, 2, w, h, 1, format, type))
+        return;
     for (int y = 0; y < h; y++) {
-        const uint8_t *src = pixels + row * y;
         uint8_t *dst = img->texels + ((size_t)(y0 + y) * (size_t)img->width + (size_t)x0) * 4;
-        for (int x = 0; x < w; x++) {
-            uint8_t rgba[4];
-            read_group(src + (size_t)x * (size_t)(n * sz), format, type, rgba);
-            store_texel(dst + 4 * x, rgba, img->base_format);
-        }
+        fs_pixel_unpack_rgba8(&l, pixels, 0, y, 0, w, dst);
+        if (img->base_format != GL_RGBA)
+            for (int x = 0; x < w; x++) {
+                uint8_t rgba[4];
+                memcpy(rgba, dst + 4 * x, 4);
+                store_texel(dst + 4 * x, rgba, img->base_format);
+            }
     }
 }
 
@@ -395,10 +321,14 @@ GLenum fs_tex_base_format(GLint internalformat) { return base_format(internalfor
 GLenum fs_tex_unpack_rgba8(fs_context *c, uint8_t *dst, int w, int h, GLenum base, GLenum format, GLenum type,
                            const void *pixels)
 {
-    /* GL_FRAGSIM_mp_grid refuses what glTexImage2D cannot convert with
-     * INVALID_ENUM (docs/extensions/mp_grid.txt). */
-    if (format_components(format) == 0 || type_bytes(type) == 0)
-        return GL_INVALID_ENUM;
+    /* GL_FRAGSIM_mp_grid takes the formats and types glTexImage2D takes,
+     * with its errors, and refuses COLOR_INDEX, which it cannot convert,
+     * with INVALID_ENUM (docs/extensions/mp_grid.txt). */
+    GLenum err = tex_format_error(format, type);
+    if (err == GL_NO_ERROR && format == GL_COLOR_INDEX)
+        err = GL_INVALID_ENUM;
+    if (err != GL_NO_ERROR)
+        return err;
     if (dst && pixels && w > 0 && h > 0) {
         fs_tex_image img = {.width = w, .height = h, .base_format = base, .texels = dst};
         unpack_image(c, &img, 0, 0, w, h, format, type, pixels);
@@ -465,18 +395,11 @@ void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint interna
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    if (!format_valid_enum(format) || !type_valid_enum(type)) {
-        fs_error(c, GL_INVALID_ENUM);
-        return;
-    }
-    GLenum err = check_image_args(level, internalformat, width, height, border);
+    GLenum err = tex_format_error(format, type);
+    if (err == GL_NO_ERROR)
+        err = check_image_args(level, internalformat, width, height, border);
     if (err != GL_NO_ERROR) {
         fs_error(c, err);
-        return;
-    }
-    /* 3.6.4: BITMAP only goes with COLOR_INDEX (and STENCIL_INDEX). */
-    if (type == GL_BITMAP && format != GL_COLOR_INDEX) {
-        fs_error(c, GL_INVALID_ENUM);
         return;
     }
     if (target == GL_PROXY_TEXTURE_2D) {
@@ -487,8 +410,8 @@ void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint interna
         fs_unsupported(c, "glTexImage2D with a border");
         return;
     }
-    if (format_components(format) == 0 || type_bytes(type) == 0) {
-        fs_unsupported(c, "glTexImage2D pixel format/type (only colour formats as GL_UNSIGNED_BYTE or GL_FLOAT)");
+    if (format == GL_COLOR_INDEX) {
+        fs_unsupported(c, "glTexImage2D(GL_COLOR_INDEX)");
         return;
     }
     fs_tex_image *img = define_level(c, level, internalformat, width, height);
@@ -522,16 +445,20 @@ static fs_tex_image *subimage_target(fs_context *c, GLint level, GLint xoffset, 
 void fs_exec_TexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoffset, GLint yoffset,
                            GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *pixels)
 {
-    if (target != GL_TEXTURE_2D || !format_valid_enum(format) || !type_valid_enum(type) ||
-        (type == GL_BITMAP && format != GL_COLOR_INDEX)) {
-        fs_error(c, GL_INVALID_ENUM);
+    GLenum err = target != GL_TEXTURE_2D ? GL_INVALID_ENUM : tex_format_error(format, type);
+    if (err == GL_INVALID_ENUM) {
+        fs_error(c, err);
         return;
     }
     fs_tex_image *img = subimage_target(c, level, xoffset, yoffset, width, height);
     if (!img)
         return;
-    if (format_components(format) == 0 || type_bytes(type) == 0) {
-        fs_unsupported(c, "glTexSubImage2D pixel format/type (only colour formats as GL_UNSIGNED_BYTE or GL_FLOAT)");
+    if (err != GL_NO_ERROR) {
+        fs_error(c, err);
+        return;
+    }
+    if (format == GL_COLOR_INDEX) {
+        fs_unsupported(c, "glTexSubImage2D(GL_COLOR_INDEX)");
         return;
     }
     if (width > 0 && height > 0 && pixels)
@@ -1048,52 +975,13 @@ void fs_exec_PrioritizeTextures(fs_context *c, GLsizei n, const GLuint *textures
     }
 }
 
-/* Layout of a packed pixel type (3.6.4 table 3.8): bits per component from
- * the most significant end, or from the least for the _REV types; 0 when
- * the type is not packed. */
-typedef struct packed_layout { int bytes, n, bits[4]; bool rev; } packed_layout;
-
-static packed_layout packed_type(GLenum type)
-{
-    switch (type) {
-    case GL_UNSIGNED_BYTE_3_3_2: return (packed_layout){1, 3, {3, 3, 2, 0}, false};
-    case GL_UNSIGNED_BYTE_2_3_3_REV: return (packed_layout){1, 3, {3, 3, 2, 0}, true};
-    case GL_UNSIGNED_SHORT_5_6_5: return (packed_layout){2, 3, {5, 6, 5, 0}, false};
-    case GL_UNSIGNED_SHORT_5_6_5_REV: return (packed_layout){2, 3, {5, 6, 5, 0}, true};
-    case GL_UNSIGNED_SHORT_4_4_4_4: return (packed_layout){2, 4, {4, 4, 4, 4}, false};
-    case GL_UNSIGNED_SHORT_4_4_4_4_REV: return (packed_layout){2, 4, {4, 4, 4, 4}, true};
-    case GL_UNSIGNED_SHORT_5_5_5_1: return (packed_layout){2, 4, {5, 5, 5, 1}, false};
-    case GL_UNSIGNED_SHORT_1_5_5_5_REV: return (packed_layout){2, 4, {5, 5, 5, 1}, true};
-    case GL_UNSIGNED_INT_8_8_8_8: return (packed_layout){4, 4, {8, 8, 8, 8}, false};
-    case GL_UNSIGNED_INT_8_8_8_8_REV: return (packed_layout){4, 4, {8, 8, 8, 8}, true};
-    case GL_UNSIGNED_INT_10_10_10_2: return (packed_layout){4, 4, {10, 10, 10, 2}, false};
-    case GL_UNSIGNED_INT_2_10_10_10_REV: return (packed_layout){4, 4, {10, 10, 10, 2}, true};
-    default: return (packed_layout){0, 0, {0, 0, 0, 0}, false};
-    }
-}
-
-/* Bytes per component of an unpacked type GetTexImage writes, 0 otherwise. */
-static int component_type_bytes(GLenum type)
-{
-    switch (type) {
-    case GL_UNSIGNED_BYTE: case GL_BYTE: return 1;
-    case GL_UNSIGNED_SHORT: case GL_SHORT: return 2;
-    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: return 4;
-    default: return 0;
-    }
-}
-
 /* The GL error of a GetTexImage format/type pair (6.1.4 with 3.6.4's rules
- * for packed types), GL_NO_ERROR when the pair is valid. */
+ * for packed types), GL_NO_ERROR when the pair is valid: colour formats only. */
 static GLenum get_image_format_error(GLenum format, GLenum type)
 {
-    if (format_components(format) == 0)
-        return GL_INVALID_ENUM; /* includes COLOR_INDEX, STENCIL_INDEX, DEPTH_COMPONENT */
-    packed_layout pl = packed_type(type);
-    if (pl.bytes == 0)
-        return component_type_bytes(type) ? GL_NO_ERROR : GL_INVALID_ENUM;
-    bool ok = pl.n == 3 ? format == GL_RGB : format == GL_RGBA || format == GL_BGRA;
-    return ok ? GL_NO_ERROR : GL_INVALID_OPERATION;
+    if (fs_pixel_format_kind(format) != FS_PIXEL_COLOR)
+        return GL_INVALID_ENUM; /* COLOR_INDEX, STENCIL_INDEX, DEPTH_COMPONENT */
+    return fs_pixel_check(format, type);
 }
 
 int64_t fs_gettexImage_bytes(fs_context *c, GLenum target, GLint level, GLenum format, GLenum type)
@@ -1105,7 +993,8 @@ int64_t fs_gettexImage_bytes(fs_context *c, GLenum target, GLint level, GLenum f
     if (!img->texels)
         return 0;
     /* The pack layout is glReadPixels' (4.3.2, 6.1.4). */
-    return fs_readpixels_bytes(c, img->width, img->height, format, type);
+    fs_pixel_store ps = fs_pixel_store_pack(c);
+    return fs_pixel_image_bytes(&ps, 2, img->width, img->height, 1, format, type);
 }
 
 /* A texel as GetTexImage sees it: table 6.1 assigns the base format's
@@ -1121,64 +1010,6 @@ static void texel_for_get(const uint8_t *t, GLenum base, uint8_t out[4])
     case GL_LUMINANCE: case GL_INTENSITY: out[1] = out[2] = 0; out[3] = 255; break;
     case GL_LUMINANCE_ALPHA: out[1] = out[2] = 0; break;
     default: break;
-    }
-}
-
-/* The components of a client format in order, as indices into RGBA; L is R
- * (Mesa's GetTexImage does not sum R, G and B as ReadPixels would). */
-static int format_order(GLenum format, int idx[4])
-{
-    switch (format) {
-    case GL_RED: case GL_LUMINANCE: idx[0] = 0; return 1;
-    case GL_GREEN: idx[0] = 1; return 1;
-    case GL_BLUE: idx[0] = 2; return 1;
-    case GL_ALPHA: idx[0] = 3; return 1;
-    case GL_LUMINANCE_ALPHA: idx[0] = 0; idx[1] = 3; return 2;
-    case GL_RGB: idx[0] = 0; idx[1] = 1; idx[2] = 2; return 3;
-    case GL_BGR: idx[0] = 2; idx[1] = 1; idx[2] = 0; return 3;
-    case GL_RGBA: idx[0] = 0; idx[1] = 1; idx[2] = 2; idx[3] = 3; return 4;
-    case GL_BGRA: idx[0] = 2; idx[1] = 1; idx[2] = 0; idx[3] = 3; return 4;
-    default: return 0;
-    }
-}
-
-/* An 8-bit unsigned normalized value as a b-bit one (2.14.9 eq. 2.3's
- * c = f * (2^b - 1) in integers): narrowing rounds to nearest; widening
- * multiplies by floor((2^b - 1) / 255) and fills the low bits with x's top
- * bits, which is exact for multiples of 8 and is how Mesa converts unorm8
- * storage (util/format_utils.h, checked by the tests), so 255 gives the
- * largest value.  Signed types use b - 1 bits of magnitude.  `round` asks
- * for rounding to nearest also when widening: Mesa goes through float for
- * images whose base format is not RGBA, which differs for 10 bits. */
-static uint32_t unorm8_to_bits(uint32_t x, int b, bool round)
-{
-    if (b <= 8 || (round && b <= 16))
-        return (x * ((1u << b) - 1u) + 127u) / 255u;
-    uint32_t maxv = b == 32 ? 0xffffffffu : (1u << b) - 1u;
-    uint32_t v = x * (maxv / 255u);
-    if (b % 8)
-        v += x >> (8 - b % 8);
-    return v;
-}
-
-/* Writes component k of a pixel of an unpacked type (4.3.2 final
- * conversion).  Floats are x times the float 1/255, as Mesa computes them. */
-static void put_component(uint8_t *p, int k, GLenum type, uint8_t x)
-{
-    switch (type) {
-    case GL_UNSIGNED_BYTE: p[k] = x; break;
-    case GL_BYTE: p[k] = (uint8_t)unorm8_to_bits(x, 7, false); break;
-    case GL_UNSIGNED_SHORT: case GL_SHORT: {
-        uint16_t v = (uint16_t)unorm8_to_bits(x, type == GL_SHORT ? 15 : 16, false);
-        memcpy(p + 2 * k, &v, 2);
-        break;
-    }
-    case GL_UNSIGNED_INT: case GL_INT: {
-        uint32_t v = unorm8_to_bits(x, type == GL_INT ? 31 : 32, false);
-        memcpy(p + 4 * k, &v, 4);
-        break;
-    }
-    default: { float v = (float)x * (1.0f / 255.0f); memcpy(p + 4 * k, &v, 4); break; }
     }
 }
 
@@ -1198,38 +1029,22 @@ void fs_exec_GetTexImage(fs_context *c, GLenum target, GLint level, GLenum forma
     const fs_tex_image *img = &c->texture->bound->level[level];
     if (!img->texels || !pixels)
         return; /* an undefined level writes nothing */
-    int idx[4];
-    int n = format_order(format, idx);
-    packed_layout pl = packed_type(type);
-    int64_t bpp = pl.bytes ? pl.bytes : (int64_t)n * component_type_bytes(type);
-    int64_t stride = fs_readpixels_bytes(c, img->width, 2, format, type) - img->width * bpp;
-    for (int y = 0; y < img->height; y++) {
-        uint8_t *row = (uint8_t *)pixels + stride * y;
-        for (int x = 0; x < img->width; x++) {
-            uint8_t rgba[4];
-            texel_for_get(img->texels + ((size_t)y * (size_t)img->width + (size_t)x) * 4, img->base_format, rgba);
-            uint8_t *out = row + bpp * x;
-            if (!pl.bytes) {
-                for (int k = 0; k < n; k++)
-                    put_component(out, k, type, rgba[idx[k]]);
-                continue;
-            }
-            /* Packed: the first component in the high bits unless _REV. */
-            uint32_t word = 0;
-            int shift = 0;
-            for (int k = 0; k < pl.n; k++) {
-                int comp = pl.rev ? k : pl.n - 1 - k;
-                word |= unorm8_to_bits(rgba[idx[comp]], pl.bits[comp], img->base_format != GL_RGBA) << shift;
-                shift += pl.bits[comp];
-            }
-            if (pl.bytes == 1) {
-                out[0] = (uint8_t)word;
-            } else if (pl.bytes == 2) {
-                uint16_t h = (uint16_t)word;
-                memcpy(out, &h, 2);
-            } else {
-                memcpy(out, &word, 4);
-            }
-        }
+    fs_pixel_store ps = fs_pixel_store_pack(c);
+    fs_pixel_layout l;
+    fs_pixel_layout_init(&l, &ps, 2, img->width, img->height, 1, format, type);
+    /* Luminance is R (6.1.4); Mesa packs a texture whose base format is
+     * not RGBA through float (pixel_transfer.h). */
+    unsigned flags = img->base_format != GL_RGBA ? FS_PACK_ROUND_PACKED : 0;
+    uint8_t *row = malloc((size_t)img->width * 4);
+    if (!row) {
+        fs_error(c, GL_OUT_OF_MEMORY);
+        return;
     }
+    for (int y = 0; y < img->height; y++) {
+        const uint8_t *src = img->texels + (size_t)y * (size_t)img->width * 4;
+        for (int x = 0; x < img->width; x++)
+            texel_for_get(src + 4 * x, img->base_format, row + 4 * x);
+        fs_pixel_pack_rgba8(&l, pixels, y, 0, img->width, row, flags);
+    }
+    free(row);
 }
