@@ -9,10 +9,10 @@
  * float arithmetic of new vertices (x_w = x_c * (1/w_c) * scale + translate,
  * unfused, while unclipped vertices keep the transform's fused result)
  * follow Mesa's draw module so that clipped edges land on the same
- * sub-pixel positions.  Lines are clipped by z only and points dropped by
- * z only; their x/y extent is bounded by the window (guard band for
- * points and lines, as llvmpipe does).  Non-finite distances drop the
- * primitive.
+ * sub-pixel positions.  Lines are clipped by z only; their x/y extent is
+ * bounded by the window (guard band, as llvmpipe does).  Points are
+ * dropped when their vertex is outside any plane (primitive.c).
+ * Non-finite distances drop the primitive.
  */
 #include <math.h>
 #include <string.h>

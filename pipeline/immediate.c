@@ -81,6 +81,7 @@ void fs_vertex_stage_free(fs_context *c)
         free(v->iv);
         free(v->pv);
         free(v->idx);
+        free(v->mat_seg);
         free(v);
     }
     c->prim.impl = NULL;
@@ -135,8 +136,41 @@ void fs_exec_Begin(fs_context *c, GLenum mode)
     c->prim.inside_begin = true;
     c->prim.mode = mode;
     c->prim.count = 0;
-    if (fs_vs(c))
+    if (fs_vs(c)) {
         fs_vs(c)->iv_n = 0;
+        fs_vs(c)->mat_seg_n = 0;
+    }
+}
+
+static bool push_mat_seg(fs_context *c, size_t start, const fs_material mat[2])
+{
+    fs_vs_impl *v = fs_vs(c);
+    if (!grow((void **)&v->mat_seg, &v->mat_seg_cap, v->mat_seg_n + 1, sizeof *v->mat_seg)) {
+        fs_error(c, GL_OUT_OF_MEMORY);
+        return false;
+    }
+    v->mat_seg[v->mat_seg_n].start = start;
+    memcpy(v->mat_seg[v->mat_seg_n].mat, mat, sizeof v->mat_seg[0].mat);
+    v->mat_seg_n++;
+    return true;
+}
+
+/* The vertices so far keep the material they were given with (`before`,
+ * the one current at Begin or after the previous change); those that
+ * follow get the new one, as llvmpipe's per-vertex material attributes
+ * do. */
+void fs_vs_material_changed(fs_context *c, const fs_material before[2])
+{
+    fs_vs_impl *v = fs_vs(c);
+    if (!v)
+        return;
+    if (v->mat_seg_n == 0 && !push_mat_seg(c, 0, before))
+        return;
+    fs_mat_seg *last = &v->mat_seg[v->mat_seg_n - 1];
+    if (last->start == v->iv_n)
+        memcpy(last->mat, c->lighting.material, sizeof last->mat);
+    else
+        push_mat_seg(c, v->iv_n, c->lighting.material);
 }
 
 void fs_exec_End(fs_context *c)
@@ -159,7 +193,20 @@ void fs_exec_End(fs_context *c)
         return;
     }
     fs_vs_prepare(c, &v->setup);
-    bool lazy = fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_sample(c, c->prim.mode));
+    bool lazy = false;
+    if (v->mat_seg_n) {
+        /* Materials changed within the primitive: each run of vertices is
+         * lit with its own (none lazily, which would light with one). */
+        for (size_t k = 0; k < v->mat_seg_n; k++) {
+            size_t a = v->mat_seg[k].start, b = k + 1 < v->mat_seg_n ? v->mat_seg[k + 1].start : n;
+            memcpy(v->setup.mat, v->mat_seg[k].mat, sizeof v->setup.mat);
+            if (a < b)
+                fs_vs_process(&v->setup, v->iv + a, v->pv + a, b - a, NULL);
+        }
+        v->mat_seg_n = 0;
+    } else {
+        lazy = fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_sample(c, c->prim.mode));
+    }
     fs_prim_draw(c, &v->setup, c->prim.mode, v->pv, lazy ? v->iv : NULL, NULL, n, c->prim.list_depth > 0);
 }
 

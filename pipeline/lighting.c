@@ -175,6 +175,8 @@ static void material_v(fs_context *c, GLenum face, GLenum pname, const float *p)
         fs_error(c, GL_INVALID_VALUE);
         return;
     }
+    fs_material before[2];
+    memcpy(before, c->lighting.material, sizeof before);
     for (int f = 0; f < 2; f++) {
         if (!(mask & (1 << f)))
             continue;
@@ -190,6 +192,10 @@ static void material_v(fs_context *c, GLenum face, GLenum pname, const float *p)
         default: fs_error(c, GL_INVALID_ENUM); return;
         }
     }
+    /* GL 1.5 spec 2.6.3: Material is allowed between Begin and End and
+     * applies to the vertices that follow. */
+    if (c->prim.inside_begin)
+        fs_vs_material_changed(c, before);
 }
 
 void fs_exec_Materialfv(fs_context *c, GLenum face, GLenum pname, const GLfloat *params)

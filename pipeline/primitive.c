@@ -350,9 +350,12 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
     case GL_POINTS:
         for (i = 0; i < count; i++) {
             const fs_pvert *v = V(&p, i);
-            /* Points are clipped by z only; x/y are left to the rasterizer's
-             * window bounds, as llvmpipe does (guard band for points). */
-            if ((v->mask & 0x30) || !(v->clip[3] > 0.0f) || !isfinite(v->win[0]) || !isfinite(v->win[1]))
+            /* GL 1.5 spec 2.12 / 3.3: a point whose vertex lies outside the
+             * clip volume is discarded, however wide (measured on OSMesa:
+             * a size-9 point centred 0.01 pixel outside any window or
+             * viewport edge draws nothing, one on the edge or inside draws
+             * its whole square, also outside the viewport). */
+            if (v->mask || !(v->clip[3] > 0.0f) || !isfinite(v->win[0]) || !isfinite(v->win[1]))
                 continue;
             fs_emit_point(c, s, v);
         }

@@ -234,8 +234,12 @@ void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
     s.perspective = !(va->inv_w == 1.0f && vb->inv_w == 1.0f);
     if (s.perspective)
         line_coef(&s.w, &li, va->inv_w, vb->inv_w);
+    /* Flat shading: the provoking colour as a constant (fs_raster_state.flat_color). */
+    s.color_constant = r->flat_color;
     for (int k = 0; k < 4; k++) {
-        if (s.perspective)
+        if (s.color_constant)
+            fs_plane_constant(&s.color[k], vb->color[k]);
+        else if (s.perspective)
             line_coef(&s.color[k], &li, va->color[k] * va->inv_w, vb->color[k] * vb->inv_w);
         else
             line_coef(&s.color[k], &li, va->color[k], vb->color[k]);

@@ -69,8 +69,10 @@ void fs_raster_point(fs_context *c, const fs_rvertex *v)
      * divided by the (constant) interpolated 1/w, as llvmpipe does. */
     s.perspective = v->inv_w != 1.0f;
     fs_plane_constant(&s.w, v->inv_w);
+    /* Flat shading: the colour itself (fs_raster_state.flat_color). */
+    s.color_constant = r->flat_color;
     for (int k = 0; k < 4; k++) {
-        fs_plane_constant(&s.color[k], s.perspective ? v->color[k] * v->inv_w : v->color[k]);
+        fs_plane_constant(&s.color[k], s.perspective && !s.color_constant ? v->color[k] * v->inv_w : v->color[k]);
         if (s.use_tex)
             fs_plane_constant(&s.tex[k], s.perspective ? v->tex[k] * v->inv_w : v->tex[k]);
     }

@@ -151,7 +151,7 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
          * a0.x of the position), even when it is zero. */                       \
         float z = PLANE_AT(&s->z, px, py) + s->zoffset;                           \
         q->z[i] = quantize_depth(z, depth_bits);                                  \
-        if (s->perspective) {                                                     \
+        if (s->perspective && !s->color_constant) {                               \
             /* Perspective-correct (GL 1.5 spec 3.5.1 eq. 3.7): a/w and 1/w are \
              * linear in window space; llvmpipe divides per pixel. */             \
             float oow = 1.0f / PLANE_AT(&s->w, px, py);                           \
@@ -526,9 +526,15 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     }
     calc_coef(&s.z, &g, a->z, b->z, d->z);
     s.perspective = !(a->inv_w == 1.0f && b->inv_w == 1.0f && d->inv_w == 1.0f);
+    /* Flat shading: the provoking colour (every vertex carries it) as a
+     * constant (fs_raster_state.flat_color). */
+    s.color_constant = r->flat_color;
+    if (s.color_constant)
+        for (int k = 0; k < 4; k++)
+            fs_plane_constant(&s.color[k], a->color[k]);
     if (s.perspective) {
         calc_coef(&s.w, &g, a->inv_w, b->inv_w, d->inv_w);
-        for (int k = 0; k < 4; k++) {
+        for (int k = 0; k < 4 && !s.color_constant; k++) {
             float ca = a->color[k] * a->inv_w, cb = b->color[k] * b->inv_w, cd = d->color[k] * d->inv_w;
             calc_coef(&s.color[k], &g, ca, cb, cd);
         }
@@ -540,7 +546,7 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     } else {
         /* With every 1/w equal to 1, llvmpipe's multiply by 1/w and divide by
          * the interpolated 1/w (exactly 1) change nothing. */
-        for (int k = 0; k < 4; k++)
+        for (int k = 0; k < 4 && !s.color_constant; k++)
             calc_coef(&s.color[k], &g, a->color[k], b->color[k], d->color[k]);
         if (s.use_tex)
             for (int k = 0; k < 4; k++)

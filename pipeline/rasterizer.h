@@ -80,6 +80,11 @@ typedef struct fs_raster_state {
     bool reference_path;
     /* The vertex stage fills fs_rvertex.y_raster (see there). */
     bool use_y_raster;
+    /* GL_FLAT shading (GL 1.5 spec 2.14.7), set by the vertex stage per
+     * draw: every vertex carries the provoking colour, which llvmpipe
+     * uses as a constant (LP_INTERP_CONSTANT) instead of interpolating it
+     * with perspective, where (c/w)/(1/w) need not give c back. */
+    bool flat_color;
     /* The CPU has FMA instructions: attribute evaluation uses them (llvmpipe
      * does), otherwise an exact-in-practice double emulation.  Set by
      * fs_raster_state_init; tests clear it to compare the two. */

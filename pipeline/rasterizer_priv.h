@@ -27,6 +27,7 @@ typedef struct fs_prim_setup {
     fs_plane z, w, color[4], tex[4];
     float zoffset;       /* polygon offset, added after interpolation */
     bool perspective;    /* false when every 1/w is 1: the division is exact then */
+    bool color_constant; /* flat shading: colour planes constant, not divided by 1/w */
     bool use_tex;        /* interpolate texture coordinates */
     bool front;
     int height;          /* framebuffer height, for the y flip */

@@ -275,6 +275,7 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     s->yr_trans = (float)c->fb.height - s->vp_trans[1];
     c->raster.use_y_raster = true; /* every fs_rvertex from here carries it */
     s->flat = c->lighting.shade_model == GL_FLAT;
+    c->raster.flat_color = s->flat;
     fs_lighting_setup(c, s);
     /* Draws of one object share a modelview: invert it once (the
      * persistent setup of the context keeps the last one). */

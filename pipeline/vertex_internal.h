@@ -82,10 +82,22 @@ typedef struct fs_vs_setup {
     bool flat;
 } fs_vs_setup;
 
+/* The material from batch vertex `start` on, after a glMaterial between
+ * Begin and End (immediate.c). */
+typedef struct fs_mat_seg {
+    size_t start;
+    fs_material mat[2];
+} fs_mat_seg;
+
 /* Growable buffers kept across draws (no per-vertex allocation). */
 typedef struct fs_vs_impl {
     fs_ivert *iv;
     size_t iv_n, iv_cap;
+    /* glMaterial between Begin and End (GL 1.5 spec 2.6.3) applies to the
+     * vertices that follow: the materials of the batch, in order (none
+     * when the primitive changed no material). */
+    fs_mat_seg *mat_seg;
+    size_t mat_seg_n, mat_seg_cap;
     fs_pvert *pv;
     size_t pv_cap;
     uint32_t *idx;
@@ -132,6 +144,9 @@ void fs_viewport_xform(fs_context *c, float scale[3], float trans[3]);
 
 /* lighting.c */
 void fs_lighting_setup(fs_context *c, fs_vs_setup *s);
+/* immediate.c: glMaterial changed the material between Begin and End;
+ * `before` is the material it replaced. */
+void fs_vs_material_changed(fs_context *c, const fs_material before[2]);
 /* Lights one vertex: eye position (when s->need_eye), eye normal, vertex
  * colour; writes clamped front and (if two-sided) back colours. */
 void fs_light_vertex(const fs_vs_setup *s, const float eye[4], const float n[3],
