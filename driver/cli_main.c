@@ -16,6 +16,8 @@
 #include "osmesa_ref.h"
 #include "cli.h"
 #include "replay.h"
+#include "callset.h"
+#include "error_log.h"
 
 /* Exact by default: fragsim must render as llvmpipe does; pixels off by
  * exactly 1 are reported apart ("within 1") so that a rounding difference is
@@ -38,6 +40,12 @@ typedef struct cli_opts {
     const char *csv_file;     /* --csv: cycle statistics as CSV */
     bool draw_stats;          /* --draw-stats: cycle statistics per draw too */
     fs_cli_cycle *cycle;      /* the cycle model of the run, NULL in functional mode */
+    /* --snapshot CALLSET / --snapshot-prefix P: glretrace's snapshots,
+     * P%010u.png after each call of the set (callset.h). */
+    fs_callset snaps;
+    bool snapshot;
+    const char *snapshot_prefix;
+    bool snapshot_alpha;
 } cli_opts;
 
 static const char *prog = "fragsim";
@@ -67,7 +75,16 @@ static void usage_replay(FILE *f, bool check)
             "                     cycles come with an error estimate (docs/cycle_model.md)\n"
             "  --csv FILE         cycle statistics, one row per frame and query (with --mode)\n"
             "  --draw-stats       cycle statistics per draw too (JSON and CSV; large for big traces)\n"
-            "  --quiet            no progress line\n",
+            "  --snapshot CALLSET write the colour buffer after each call of CALLSET (glretrace's\n"
+            "                     call sets: frame, draw, N, A-B, A-B/S, A-B/draw, *, lists with\n"
+            "                     commas; numbers as `apitrace dump` prints them) to\n"
+            "                     DIR/NNNNNNNNNN.png (the call number, 10 digits), RGB, top row first\n"
+            "  --snapshot-prefix P  snapshot file names start with P (default DIR/; a prefix\n"
+            "                     alone snapshots every frame, as glretrace does)\n"
+            "  --snapshot-alpha   snapshots with alpha (RGBA, unassociated)\n"
+            "  --quiet            no progress line\n"
+            "GL errors are printed as glretrace prints them (N: warning: glGetError(glName) = ERR;\n"
+            "the first 10) and listed with call number, command and error in the statistics file.\n",
             check ? "check" : "replay",
             check ? "Replays TRACE on the model and on OSMesa (llvmpipe, in this process) and\n"
                     "reports per frame: pixels whose colour differs, the largest channel\n"
@@ -188,6 +205,20 @@ static int parse_opts(int argc, char **argv, cli_opts *o, bool check)
             o->draw_stats = true;
         } else if (!strcmp(a, "--quiet")) {
             o->quiet = true;
+        } else if (!strcmp(a, "--snapshot")) {
+            NEEDV();
+            char cerr[512];
+            if (fs_callset_parse(&o->snaps, v, cerr, sizeof cerr) != 0) {
+                fprintf(stderr, "%s: --snapshot: %s\n", prog, cerr);
+                fs_callset_free(&o->snaps);
+                return -1;
+            }
+            o->snapshot = true;
+        } else if (!strcmp(a, "--snapshot-prefix")) {
+            NEEDV();
+            o->snapshot_prefix = v;
+        } else if (!strcmp(a, "--snapshot-alpha")) {
+            o->snapshot_alpha = true;
         } else if (a[0] == '-' && a[1]) {
             fprintf(stderr, "%s: unknown option %s (see --help)\n", prog, a);
             return -1;
@@ -201,9 +232,29 @@ static int parse_opts(int argc, char **argv, cli_opts *o, bool check)
     }
     if (!o->trace) {
         fprintf(stderr, "%s: no trace given (see --help)\n", prog);
+        fs_callset_free(&o->snaps);
         return -1;
     }
+    if (o->snapshot_prefix && !o->snapshot) {
+        /* glretrace: a prefix without a call set snapshots every frame */
+        char cerr[512];
+        fs_callset_parse(&o->snaps, "frame", cerr, sizeof cerr);
+        o->snapshot = true;
+    }
     return 0;
+}
+
+/* glretrace's snapshot (retrace_main.cpp takeSnapshot): PREFIX%010u.png,
+ * named by the call number, after the call executed. */
+static int take_snapshot(const cli_opts *o, const fs_context *c, uint64_t call_no, char *err, size_t errlen)
+{
+    char path[4200];
+    if (o->snapshot_prefix)
+        snprintf(path, sizeof path, "%s%010llu.png", o->snapshot_prefix, (unsigned long long)call_no);
+    else
+        snprintf(path, sizeof path, "%s/%010llu.png", o->out_dir, (unsigned long long)call_no);
+    return fs_image_write_png_channels(path, c->fb.color, c->fb.width, c->fb.height,
+                                       o->snapshot_alpha ? 4 : 3, err, errlen);
 }
 
 static int make_dir(const char *dir)
@@ -274,7 +325,7 @@ static void write_unsupported_json(FILE *f, const fs_context *c)
 
 static int write_stats(const char *path, const cli_opts *o, const fs_replay_info *info,
                        const fs_context *c, const fs_replayer *r, const frame_record *frames,
-                       size_t nframes, bool check, const char *status)
+                       size_t nframes, bool check, const char *status, const fs_error_log *errs)
 {
     FILE *f = fopen(path, "w");
     if (!f) {
@@ -319,6 +370,10 @@ static int write_stats(const char *path, const cli_opts *o, const fs_replay_info
     write_unsupported_json(f, c);
     fprintf(f, ",\n  \"skipped_trace_calls\": ");
     fs_replay_write_skipped_json(r, f, "  ");
+    fprintf(f, ",\n");
+    /* Every GL error with the call that raised it (numbered as apitrace
+     * dump numbers calls; an error inside a display list is its glCallList's). */
+    fs_error_log_write_json(errs, f, "  ");
     fprintf(f, ",\n");
     if (o->cycle)
         fs_cli_cycle_write_json(o->cycle, f);
@@ -408,6 +463,7 @@ static int run_replay(int argc, char **argv, bool check)
     }
     fs_replay_opts ro = {o.frame_end, o.width ? o.width : (int)cfg.framebuffer_width,
                          o.height ? o.height : (int)cfg.framebuffer_height};
+    ro.report_skipped = o.snapshot; /* glretrace snapshots at calls fragsim skips too */
     fs_replayer *r = fs_replay_open(o.trace, &ro, err, sizeof err);
     if (!r) {
         fprintf(stderr, "%s: %s\n", prog, err);
@@ -435,8 +491,13 @@ static int run_replay(int argc, char **argv, bool check)
             return 1;
         }
     }
-    if (make_dir(o.out_dir) != 0) {
-        fprintf(stderr, "%s: cannot create %s: %s\n", prog, o.out_dir, strerror(errno));
+    char snap_dir[4096] = "";
+    if (o.snapshot_prefix && strrchr(o.snapshot_prefix, '/')) {
+        snprintf(snap_dir, sizeof snap_dir, "%.*s", (int)(strrchr(o.snapshot_prefix, '/') - o.snapshot_prefix),
+                 o.snapshot_prefix);
+    }
+    if (make_dir(o.out_dir) != 0 || (snap_dir[0] && make_dir(snap_dir) != 0)) {
+        fprintf(stderr, "%s: cannot create %s: %s\n", prog, snap_dir[0] ? snap_dir : o.out_dir, strerror(errno));
         fs_osmesa_destroy(ref);
         fs_context_destroy(c);
         fs_replay_close(r);
@@ -473,6 +534,11 @@ static int run_replay(int argc, char **argv, bool check)
     bool count_samples = ref && !info->uses_queries;
     if (count_samples)
         fs_osmesa_samples_begin(ref);
+    fs_error_log errs = {0};
+    errs.print = stderr;
+    errs.print_max = 10;
+    fs_error_log_attach(&errs, c);
+    uint64_t snapshots = 0;
     for (;;) {
         if (o.frame_last >= 0 && frame > o.frame_last)
             break;
@@ -485,18 +551,29 @@ static int run_replay(int argc, char **argv, bool check)
         }
         if (ev == FS_REPLAY_EOF)
             break;
-        if (ev == FS_REPLAY_CALL) {
-            if (fs_cli_cycle_skip(o.cycle, c, call.cmd))
-                continue; /* sampled mode: a frame that is interpolated */
-            if (fs_submit(c, &call) != 0) {
+        if (ev == FS_REPLAY_SKIPPED || ev == FS_REPLAY_CALL) {
+            bool skip = ev == FS_REPLAY_SKIPPED || fs_cli_cycle_skip(o.cycle, c, call.cmd);
+            /* sampled mode skips the calls of a frame that is interpolated */
+            errs.call = fs_replay_call_no(r);
+            errs.command = fs_replay_call_name(r);
+            if (!skip && fs_submit(c, &call) != 0) {
                 fprintf(stderr, "%s: %s: malformed arguments to %s\n", prog, o.trace,
                         fs_cmd_table[call.cmd].name);
                 status = "error";
                 rc = 1;
                 break;
             }
-            if (ref)
+            if (ref && !skip)
                 fs_osmesa_dispatch(ref, &call);
+            if (o.snapshot && fs_callset_contains(&o.snaps, errs.call, fs_replay_call_flags(r))) {
+                if (take_snapshot(&o, c, errs.call, err, sizeof err) != 0) {
+                    fprintf(stderr, "%s: %s\n", prog, err);
+                    status = "error";
+                    rc = 1;
+                    break;
+                }
+                snapshots++;
+            }
             continue;
         }
         /* End of a frame. */
@@ -577,9 +654,16 @@ static int run_replay(int argc, char **argv, bool check)
         status = "beyond tolerance";
         rc = 3;
     }
-    if (write_stats(stats_path, &o, info, c, r, frames, nframes, check, status) != 0 && rc == 0)
+    c->error_hook = NULL;
+    if (write_stats(stats_path, &o, info, c, r, frames, nframes, check, status, &errs) != 0 && rc == 0)
         rc = 1;
     print_unsupported(stderr, c, r);
+    fs_error_log_summary(&errs, stderr, prog);
+    if (o.snapshot)
+        fprintf(stderr, "%s: %llu snapshot%s written\n", prog, (unsigned long long)snapshots,
+                snapshots == 1 ? "" : "s");
+    fs_error_log_free(&errs);
+    fs_callset_free(&o.snaps);
     if (rc == 0 || rc == 3)
         fprintf(stderr, "%s: %zu frame%s (%dx%d) in %.2f s; %s%s; statistics in %s\n", prog, nframes,
                 nframes == 1 ? "" : "s", info->width, info->height, now_seconds() - t0,
@@ -834,6 +918,15 @@ static int run_stats(int argc, char **argv)
         fs_stats_list(stdout);
         printf("\ncycle-level model (`replay --mode cycle|sampled`), per frame, draw and query:\n");
         fs_cycle_stats_list(stdout);
+        printf("\nper run, beside \"frames\" and \"totals\":\n");
+        printf("%-24s %-10s %s\n", "errors_total", "errors", "GL errors raised in the run");
+        printf("%-24s %-10s %s\n", "errors", "list",
+               "each GL error, the first 10000: {\"call\": N, \"command\": \"glName\", \"error\": \"GL_...\"},"
+               " N as `apitrace dump` numbers calls (an error inside a display list: its glCallList)");
+        printf("\nper frame of `fragsim check`:\n");
+        printf("%-24s %-10s %s\n", "pixels_differ", "pixels", "pixels whose colour differs from OSMesa's");
+        printf("%-24s %-10s %s\n", "pixels_within_1", "pixels", "of those, pixels off by exactly 1 in their largest channel");
+        printf("%-24s %-10s %s\n", "pixels_beyond_1", "pixels", "pixels off by more than 1 in some channel");
         return 0;
     }
     printf("usage: fragsim stats --list\n");

@@ -16,6 +16,7 @@
 #include <string.h>
 #include "replay.h"
 #include "trace.h"
+#include "callset.h"
 
 enum skip_kind { SKIP_UNKNOWN, SKIP_UNSAFE, SKIP_WINSYS };
 
@@ -72,6 +73,13 @@ struct fs_replayer {
     size_t rec_pos, rec_bytes, rec_max;
     bool rec_on;   /* pass 1 is recording; info.from_record: pass 2 reads the record */
     struct name_info *cmd_info; /* pass 2 from the record: name_info per command */
+    /* Pass 2's last call: its number as apitrace numbers calls (the order
+     * of enter events, which is the order the reader returns them in), its
+     * name in the trace and its apitrace call flags (callset.h). */
+    uint64_t call_no, p2_calls;
+    const char *call_name;
+    unsigned call_flags;
+    bool report_skipped;  /* fs_replay_opts.report_skipped */
 };
 
 static const char *const swap_calls[] = {
@@ -138,6 +146,7 @@ typedef struct name_info {
     const char *name; /* the reader's string; NULL: empty slot */
     int cmd;
     bool swap, winsys, user_end, frame_end;
+    unsigned flags; /* apitrace's call flags (fs_call_flags) */
 } name_info;
 
 /* The slot of `name` in a table of cap (a power of two) entries: its own
@@ -159,6 +168,7 @@ static void name_info_fill(const fs_replayer *r, name_info *ni, const char *name
     ni->winsys = is_winsys(name);
     ni->user_end = r->user_frame_end && !strcmp(name, r->user_frame_end);
     ni->frame_end = !strcmp(name, r->info.frame_end);
+    ni->flags = fs_call_flags(name);
 }
 
 static const name_info *name_info_of(fs_replayer *r, const char *name)
@@ -609,6 +619,7 @@ static int rec_next(fs_replayer *r, fs_call *call, const struct name_info **ni, 
         return -1;
     }
     *unsafe = h->unsafe;
+    r->call_name = h->name;
     if ((*ni)->cmd < 0 || h->unsafe)
         return 1;
     call_start(call, h->cmd, h->nargs, h->flags);
@@ -647,6 +658,7 @@ static int decode_next(fs_replayer *r, fs_call *call, bool pass1, const name_inf
     }
     *nip = ni;
     *unsafe = false;
+    r->call_name = tc.name;
     if (pass1) {
         r->info.calls++;
         r->p1_swaps += ni->swap;
@@ -696,10 +708,18 @@ static int next_call(fs_replayer *r, fs_call *call, bool pass1)
         int got = r->info.from_record ? rec_next(r, call, &ni, &unsafe) : decode_next(r, call, pass1, &ni, &unsafe);
         if (got <= 0)
             return got;
+        if (!pass1) {
+            r->call_no = r->p2_calls++;
+            r->call_flags = ni->flags;
+        }
         bool ends_frame = !pass1 && (r->frame_end_is_swap ? ni->swap : ni->frame_end);
         if (ni->cmd < 0) {
             if (!pass1)
                 count_skip(r, ni->name, ni->winsys ? SKIP_WINSYS : SKIP_UNKNOWN);
+            if (!pass1 && r->report_skipped) {
+                r->pending_frame_end = ends_frame;
+                return 3;
+            }
             if (ends_frame)
                 return 2;
             continue;
@@ -710,6 +730,8 @@ static int next_call(fs_replayer *r, fs_call *call, bool pass1)
                 snprintf(what, sizeof what, "%s (client arrays not recorded in the trace)", ni->name);
                 count_skip(r, what, SKIP_UNSAFE);
             }
+            if (!pass1 && r->report_skipped)
+                return 3;
             continue;
         }
         /* Fake calls are executed too: apitrace adds them for what a replay
@@ -745,6 +767,7 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
     /* Pass 1: validate everything, count frame ends, find the window size,
      * and keep the decoded calls for pass 2. */
     r->user_frame_end = opts ? opts->frame_end : NULL;
+    r->report_skipped = opts && opts->report_skipped;
     r->rec_max = opts && opts->max_record_bytes ? opts->max_record_bytes : REC_MAX_DEFAULT;
     r->rec_on = true;
     fs_call call;
@@ -810,6 +833,9 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
 }
 
 const fs_replay_info *fs_replay_info_get(const fs_replayer *r) { return &r->info; }
+uint64_t fs_replay_call_no(const fs_replayer *r) { return r->call_no; }
+const char *fs_replay_call_name(const fs_replayer *r) { return r->call_name; }
+unsigned fs_replay_call_flags(const fs_replayer *r) { return r->call_flags; }
 const char *fs_replay_error(const fs_replayer *r) { return r->err; }
 
 fs_replay_event fs_replay_next(fs_replayer *r, fs_call *call)
@@ -823,6 +849,8 @@ fs_replay_event fs_replay_next(fs_replayer *r, fs_call *call)
     int got = next_call(r, call, false);
     if (got < 0)
         return FS_REPLAY_ERROR;
+    if (got == 3)
+        return FS_REPLAY_SKIPPED;
     if (got == 2) {
         r->frames_done++;
         r->calls_since_frame = 0;

@@ -22,6 +22,9 @@ typedef struct fs_replay_opts {
      * many bytes in all (0: 1 GiB); a longer trace is read from the file
      * twice. */
     size_t max_record_bytes;
+    /* Also return the calls the model does not execute (unknown, window
+     * system, unsafe draws) as FS_REPLAY_SKIPPED, e.g. to snapshot at them. */
+    bool report_skipped;
 } fs_replay_opts;
 
 typedef struct fs_replay_info {
@@ -38,7 +41,8 @@ typedef enum fs_replay_event {
     FS_REPLAY_CALL,      /* *call is ready to execute */
     FS_REPLAY_FRAME_END, /* the frame just ended (after executing its last call) */
     FS_REPLAY_EOF,
-    FS_REPLAY_ERROR      /* fs_replay_error() says what and where */
+    FS_REPLAY_ERROR,     /* fs_replay_error() says what and where */
+    FS_REPLAY_SKIPPED    /* a call not executed (only with fs_replay_opts.report_skipped) */
 } fs_replay_event;
 
 typedef struct fs_replayer fs_replayer;
@@ -51,6 +55,13 @@ const fs_replay_info *fs_replay_info_get(const fs_replayer *r);
  * until the next call of this function. */
 fs_replay_event fs_replay_next(fs_replayer *r, fs_call *call);
 const char *fs_replay_error(const fs_replayer *r);
+/* The last FS_REPLAY_CALL or FS_REPLAY_SKIPPED call, which a following
+ * FS_REPLAY_FRAME_END belongs to: its number as `apitrace dump` numbers it,
+ * its name in the trace (valid until fs_replay_close) and its apitrace call
+ * flags (FS_CALL_* of callset.h). */
+uint64_t fs_replay_call_no(const fs_replayer *r);
+const char *fs_replay_call_name(const fs_replayer *r);
+unsigned fs_replay_call_flags(const fs_replayer *r);
 /* Calls the replay could not execute, by name (unknown to fragsim, or
  * unsafe: e.g. a draw whose client arrays the trace did not record), and
  * window-system calls that were deliberately ignored. */

@@ -66,6 +66,8 @@ void fs_error(fs_context *c, GLenum err)
     c->stats.gl_errors++;
     if (c->error == GL_NO_ERROR)
         c->error = err;
+    if (c->error_hook)
+        c->error_hook(c->error_user, err);
 }
 
 void fs_unsupported(fs_context *c, const char *what)

@@ -27,6 +27,11 @@ struct fs_texture_state;    /* units/texture_object.c */
 struct fs_context {
     fs_config cfg;
     GLenum error;                 /* sticky GL error flag (GL 1.5 spec 2.5) */
+    /* Called by fs_error with every error raised (NULL: nobody listens), so
+     * that a replay or the shim can name the call that raised it; it costs
+     * nothing while no error is raised. */
+    void (*error_hook)(void *user, GLenum err);
+    void *error_user;
 
     fs_transform_state xf;
     fs_lighting_state lighting;
