@@ -29,7 +29,10 @@
  * its whole life, are written as JSON ({"totals": {...}}, the block `fragsim
  * replay` writes under the same name) when it is destroyed or, still
  * current, when the program exits; so a capture's replay can be checked
- * against the run that made it.
+ * against the run that made it.  Beside them, "errors_total" and "errors"
+ * list every GL error as `fragsim replay` does, numbered by the shim's own
+ * count of the program's GL calls on the context (from 0; a capture's
+ * numbers differ by its initial glViewport and fake array calls).
  *
  * The only mutable state outside the contexts is GL's current context, one
  * per thread.
@@ -40,6 +43,7 @@
 #include <string.h>
 #include "../pipeline/context.h"
 #include "capture.h"
+#include "error_log.h"
 #include "shim.h"
 
 /* llvmpipe's largest 2D texture, which Mesa's OSMesa reports as
@@ -58,6 +62,11 @@ struct osmesa_context {
     GLboolean y_up;            /* OSMESA_Y_UP */
     void *depth_copy;          /* what OSMesaGetDepthBuffer hands out */
     int frame_open;            /* calls recorded since the last frame boundary */
+    /* The GL errors of the context's calls (FRAGSIM_STATS), numbered by the
+     * shim's own count of the program's GL calls on it, from 0; the
+     * command is named when the call returns (fs_shim_end). */
+    fs_error_log errs;
+    size_t errs_named;
 };
 
 static _Thread_local struct osmesa_context *current;
@@ -139,7 +148,9 @@ static void write_stats(struct osmesa_context *o)
     }
     fprintf(f, "{\n  \"totals\": {\n");
     fs_stats_write_json(f, &o->fs->stats, "    ");
-    fprintf(f, "  }\n}\n");
+    fprintf(f, "  },\n");
+    fs_error_log_write_json(&o->errs, f, "  ");
+    fprintf(f, "\n}\n");
     if (fclose(f) != 0)
         shim_message("FRAGSIM_STATS: cannot write", path);
 }
@@ -165,6 +176,11 @@ void fs_shim_end(enum fs_cmd cmd)
 {
     struct osmesa_context *o = current;
     o->frame_open = 1;
+    /* errors raised by this call (or by the lists a glCallList executes) */
+    for (size_t i = o->errs_named; i < o->errs.n; i++)
+        o->errs.entries[i].command = fs_cmd_table[cmd].name;
+    o->errs_named = o->errs.n;
+    o->errs.call++;
     switch (cmd) {
     case FS_CMD_Finish:
         copy_out(o);
@@ -285,6 +301,8 @@ GLboolean GLAPIENTRY OSMesaMakeCurrent(OSMesaContext o, void *buffer, GLenum typ
             return GL_FALSE;
         o->width = width;
         o->height = height;
+        fs_error_log_attach(&o->errs, o->fs);
+        o->errs_named = 0;
         capture_start(o);
     } else if (width != o->width || height != o->height) {
         /* A new size: the model's buffers start again (cleared), like a
@@ -315,8 +333,19 @@ void GLAPIENTRY OSMesaDestroyContext(OSMesaContext o)
     capture_finish(o);
     write_stats(o);
     fs_context_destroy(o->fs);
+    fs_error_log_free(&o->errs);
     free(o->depth_copy);
     free(o);
+}
+
+/* An error of an OSMesa function: listed under that function's name, with
+ * the number the next GL call will have. */
+static void osmesa_error(struct osmesa_context *o, GLenum err, const char *fn)
+{
+    fs_error(o->fs, err);
+    for (size_t i = o->errs_named; i < o->errs.n; i++)
+        o->errs.entries[i].command = fn;
+    o->errs_named = o->errs.n;
 }
 
 void GLAPIENTRY OSMesaPixelStore(GLint pname, GLint value)
@@ -327,7 +356,7 @@ void GLAPIENTRY OSMesaPixelStore(GLint pname, GLint value)
     switch (pname) {
     case OSMESA_ROW_LENGTH:
         if (value < 0) {
-            fs_error(o->fs, GL_INVALID_VALUE);
+            osmesa_error(o, GL_INVALID_VALUE, "OSMesaPixelStore");
             return;
         }
         o->row_length = value;
@@ -336,7 +365,7 @@ void GLAPIENTRY OSMesaPixelStore(GLint pname, GLint value)
         o->y_up = value ? GL_TRUE : GL_FALSE;
         break;
     default:
-        fs_error(o->fs, GL_INVALID_ENUM);
+        osmesa_error(o, GL_INVALID_ENUM, "OSMesaPixelStore");
         break;
     }
 }
@@ -355,7 +384,7 @@ void GLAPIENTRY OSMesaGetIntegerv(GLint pname, GLint *value)
     case OSMESA_MAX_HEIGHT: *value = SHIM_MAX_SIZE; break;
     default:
         if (o)
-            fs_error(o->fs, GL_INVALID_ENUM);
+            osmesa_error(o, GL_INVALID_ENUM, "OSMesaGetIntegerv");
         break;
     }
 }

@@ -120,7 +120,31 @@ test_capture_to_unwritable_path() {
     diff "$WORK/plain.txt" "$WORK/bad.txt" || fail "output changed"
 }
 
+# GL errors: the same codes as OSMesa, and FRAGSIM_STATS lists each with the
+# number of the program's GL call that raised it (from 0), as the program's
+# comments number them; the glCallList's error is raised by its list.
+test_shim_errors_listed_by_call() {
+    build osmesa_errors
+    "$WORK/osmesa_errors_osmesa" >"$WORK/err_osmesa.txt" 2>/dev/null || fail "OSMesa run failed"
+    FRAGSIM_STATS="$WORK/err_stats.json" "$WORK/osmesa_errors_shim" >"$WORK/err_shim.txt" 2>/dev/null ||
+        fail "shim run failed"
+    diff "$WORK/err_osmesa.txt" "$WORK/err_shim.txt" || fail "glGetError differs from OSMesa's"
+    grep -q '0x0500' "$WORK/err_osmesa.txt" || fail "OSMesa raised no GL_INVALID_ENUM: $(cat "$WORK/err_osmesa.txt")"
+    cat >"$WORK/err_want.txt" <<'EOF2'
+  "errors_total": 4,
+  "errors": [
+    {"call": 1, "command": "glEnable", "error": "GL_INVALID_ENUM"},
+    {"call": 7, "command": "glCallList", "error": "GL_INVALID_VALUE"},
+    {"call": 9, "command": "glPopMatrix", "error": "GL_STACK_UNDERFLOW"},
+    {"call": 12, "command": "glEnable", "error": "GL_INVALID_OPERATION"}
+  ]
+EOF2
+    sed -n '/"errors_total"/,/^  \]/p' "$WORK/err_stats.json" >"$WORK/err_got.txt"
+    diff "$WORK/err_want.txt" "$WORK/err_got.txt" || fail "errors list differs"
+}
+
 for t in test_shim_exports_table_and_osmesa_api test_boxes_same_numbers_as_osmesa test_api_same_as_osmesa \
+         test_shim_errors_listed_by_call \
          test_capture_dump_replay_check test_capture_to_unwritable_path; do
     run_test "$t"
 done
