@@ -290,21 +290,16 @@ static void execute_list(fs_context *c, GLuint name)
     s->depth--;
 }
 
-/* Names held at once.  Each reserved name is a list object (as in Mesa), so
- * glGenLists(2^31 - 1) from a bad trace would otherwise allocate for hours;
- * beyond this it sets GL_OUT_OF_MEMORY, which GL allows for any command. */
-#define FS_DLIST_MAX_NAMES ((size_t)1 << 20)
-
 GLuint fs_exec_GenLists(fs_context *c, GLsizei range)
 {
-    if (range < 0) {
-        fs_error(c, GL_INVALID_VALUE);
+    /* Each reserved name is a list object (as in Mesa): at most
+     * FS_MAX_NAMES held at once (fs_gen_names_ok). */
+    fs_dlist_state *s = state(c);
+    if (!fs_gen_names_ok(c, range, s ? s->names : 0))
         return 0;
-    }
     if (range == 0)
         return 0;
-    fs_dlist_state *s = state(c);
-    if (!s || (size_t)range > FS_DLIST_MAX_NAMES - s->names) {
+    if (!s) {
         fs_error(c, GL_OUT_OF_MEMORY);
         return 0;
     }

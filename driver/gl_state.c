@@ -114,6 +114,9 @@ GLboolean fs_exec_IsEnabled(fs_context *c, GLenum cap)
     }
     if (arr)
         return arr->enabled ? GL_TRUE : GL_FALSE;
+    bool *client = fs_client_state_flag(c, cap);
+    if (client)
+        return *client ? GL_TRUE : GL_FALSE;
     if (cap == GL_OCCLUSION_TEST_HP)
         return fs_occlusion_hp_enabled(c) ? GL_TRUE : GL_FALSE;
     bool *flag = cap_flag(c, cap);
@@ -198,6 +201,8 @@ static const fs_client_array *array_of(const fs_context *c, GLenum pname)
     }
 }
 
+static GLint *pixel_store(fs_context *c, GLenum pname, bool *boolean);
+
 /* Fills r with the state named by pname; returns false for an unknown name. */
 static bool get_state(fs_context *c, GLenum pname, get_result *r)
 {
@@ -280,14 +285,35 @@ static bool get_state(fs_context *c, GLenum pname, get_result *r)
         return true;
     case GL_DEPTH_BITS: put1(r, GET_NUM, c->fb.depth_bits); return true;
     case GL_STENCIL_BITS: put1(r, GET_NUM, c->fb.stencil_bits); return true;
-    case GL_PACK_ALIGNMENT: put1(r, GET_NUM, c->pack_alignment); return true;
-    case GL_UNPACK_ALIGNMENT: put1(r, GET_NUM, c->unpack_alignment); return true;
-    case GL_UNPACK_ROW_LENGTH: put1(r, GET_NUM, c->unpack_row_length); return true;
-    case GL_PACK_ROW_LENGTH: put1(r, GET_NUM, c->pack_row_length); return true;
+    /* Table 6.34: the window's buffers (pipeline/buffer_select.c); no
+     * colour index mode and no accumulation buffer. */
+    case GL_DOUBLEBUFFER: put1(r, GET_BOOL, c->double_buffered); return true;
+    case GL_STEREO: put1(r, GET_BOOL, 0); return true;
+    case GL_RGBA_MODE: put1(r, GET_BOOL, 1); return true;
+    case GL_INDEX_MODE: put1(r, GET_BOOL, 0); return true;
+    case GL_AUX_BUFFERS: case GL_INDEX_BITS:
+    case GL_ACCUM_RED_BITS: case GL_ACCUM_GREEN_BITS: case GL_ACCUM_BLUE_BITS: case GL_ACCUM_ALPHA_BITS:
+        put1(r, GET_NUM, 0);
+        return true;
+    case GL_DRAW_BUFFER: put1(r, GET_ENUM, c->draw_buffer); return true;
+    case GL_READ_BUFFER: put1(r, GET_ENUM, c->read_buffer); return true;
+    case GL_UNPACK_SWAP_BYTES: case GL_UNPACK_LSB_FIRST: case GL_PACK_SWAP_BYTES: case GL_PACK_LSB_FIRST: {
+        bool boolean;
+        put1(r, GET_BOOL, *pixel_store(c, pname, &boolean));
+        return true;
+    }
+    case GL_UNPACK_ROW_LENGTH: case GL_UNPACK_IMAGE_HEIGHT: case GL_UNPACK_SKIP_ROWS: case GL_UNPACK_SKIP_PIXELS:
+    case GL_UNPACK_SKIP_IMAGES: case GL_UNPACK_ALIGNMENT: case GL_PACK_ROW_LENGTH: case GL_PACK_IMAGE_HEIGHT:
+    case GL_PACK_SKIP_ROWS: case GL_PACK_SKIP_PIXELS: case GL_PACK_SKIP_IMAGES: case GL_PACK_ALIGNMENT: {
+        bool boolean;
+        put1(r, GET_NUM, *pixel_store(c, pname, &boolean));
+        return true;
+    }
     /* GL 1.5 spec table 6.15 and 6.26 (texture unit, units/texture_object.c). */
     case GL_TEXTURE_BINDING_2D: put1(r, GET_NUM, fs_texture_binding_2d(c)); return true;
     case GL_MAX_TEXTURE_SIZE: put1(r, GET_NUM, FS_TEX_MAX_SIZE); return true;
     case GL_VERTEX_ARRAY: case GL_NORMAL_ARRAY: case GL_COLOR_ARRAY: case GL_TEXTURE_COORD_ARRAY:
+    case GL_EDGE_FLAG_ARRAY: case GL_INDEX_ARRAY: case GL_FOG_COORDINATE_ARRAY: case GL_SECONDARY_COLOR_ARRAY:
         put1(r, GET_BOOL, fs_exec_IsEnabled(c, pname));
         return true;
     /* GL 1.5 spec table 6.30 and GL_FRAGSIM_occlusion_unit's New State. */
@@ -413,36 +439,67 @@ void fs_exec_Hint(fs_context *c, GLenum target, GLenum mode)
     /* Hints may be ignored (GL 1.5 spec 5.6); llvmpipe ignores these too. */
 }
 
+/* The pixel-store parameter pname names (GL 1.5 spec tables 3.1 and 4.5),
+ * or NULL; *boolean for the two booleans of each. */
+static GLint *pixel_store(fs_context *c, GLenum pname, bool *boolean)
+{
+    *boolean = false;
+    switch (pname) {
+    case GL_UNPACK_SWAP_BYTES: *boolean = true; return &c->unpack_swap_bytes;
+    case GL_UNPACK_LSB_FIRST: *boolean = true; return &c->unpack_lsb_first;
+    case GL_UNPACK_ROW_LENGTH: return &c->unpack_row_length;
+    case GL_UNPACK_IMAGE_HEIGHT: return &c->unpack_image_height;
+    case GL_UNPACK_SKIP_ROWS: return &c->unpack_skip_rows;
+    case GL_UNPACK_SKIP_PIXELS: return &c->unpack_skip_pixels;
+    case GL_UNPACK_SKIP_IMAGES: return &c->unpack_skip_images;
+    case GL_UNPACK_ALIGNMENT: return &c->unpack_alignment;
+    case GL_PACK_SWAP_BYTES: *boolean = true; return &c->pack_swap_bytes;
+    case GL_PACK_LSB_FIRST: *boolean = true; return &c->pack_lsb_first;
+    case GL_PACK_ROW_LENGTH: return &c->pack_row_length;
+    case GL_PACK_IMAGE_HEIGHT: return &c->pack_image_height;
+    case GL_PACK_SKIP_ROWS: return &c->pack_skip_rows;
+    case GL_PACK_SKIP_PIXELS: return &c->pack_skip_pixels;
+    case GL_PACK_SKIP_IMAGES: return &c->pack_skip_images;
+    case GL_PACK_ALIGNMENT: return &c->pack_alignment;
+    default: return NULL;
+    }
+}
+
+/* GL 1.5 spec 3.6.1: booleans are FALSE for 0 and TRUE otherwise; the
+ * alignments must be 1, 2, 4 or 8 and the other values non-negative
+ * (GL_INVALID_VALUE).  The values are only stored here; pixel transfers
+ * read them from the context. */
 void fs_exec_PixelStorei(fs_context *c, GLenum pname, GLint param)
 {
-    switch (pname) {
-    case GL_PACK_ALIGNMENT: case GL_UNPACK_ALIGNMENT:
-        if (param != 1 && param != 2 && param != 4 && param != 8) {
-            fs_error(c, GL_INVALID_VALUE);
-            return;
-        }
-        *(pname == GL_PACK_ALIGNMENT ? &c->pack_alignment : &c->unpack_alignment) = param;
-        return;
-    case GL_UNPACK_ROW_LENGTH: case GL_PACK_ROW_LENGTH:
-        if (param < 0) {
-            fs_error(c, GL_INVALID_VALUE);
-            return;
-        }
-        *(pname == GL_PACK_ROW_LENGTH ? &c->pack_row_length : &c->unpack_row_length) = param;
-        return;
-    case GL_PACK_SKIP_ROWS: case GL_PACK_SKIP_PIXELS:
-    case GL_UNPACK_SKIP_ROWS: case GL_UNPACK_SKIP_PIXELS: case GL_PACK_SWAP_BYTES:
-    case GL_UNPACK_SWAP_BYTES: case GL_PACK_LSB_FIRST: case GL_UNPACK_LSB_FIRST:
-        if (param < 0) {
-            fs_error(c, GL_INVALID_VALUE);
-            return;
-        }
-        if (param != 0)
-            fs_unsupported(c, "glPixelStorei(non-default skip/row-length/swap)");
-        return;
-    default:
+    bool boolean;
+    GLint *p = pixel_store(c, pname, &boolean);
+    if (!p) {
         fs_error(c, GL_INVALID_ENUM);
+        return;
     }
+    if (boolean) {
+        *p = param != 0;
+        return;
+    }
+    bool alignment = pname == GL_PACK_ALIGNMENT || pname == GL_UNPACK_ALIGNMENT;
+    if (alignment ? (param != 1 && param != 2 && param != 4 && param != 8) : param < 0) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    *p = param;
+}
+
+/* 3.6.1: a float parameter is rounded to the nearest integer.  As Mesa
+ * (measured on OSMesa): exactly, halves away from zero (0.49999997 gives
+ * 0), to a 64-bit integer whose low 32 bits are the value (so 3e9 becomes
+ * negative and is refused, -3e9 becomes 1294967296), NaN 0; booleans
+ * then follow the integer rule (0.4 is FALSE, -0.6 TRUE). */
+void fs_exec_PixelStoref(fs_context *c, GLenum pname, GLfloat param)
+{
+    GLint i = 0;
+    if (fabsf(param) < 9.2233715e18f) /* false for NaN */
+        i = (GLint)(uint32_t)(uint64_t)(int64_t)roundf(param);
+    fs_exec_PixelStorei(c, pname, i);
 }
 
 /* The model executes every command to completion when it is issued, so

@@ -793,6 +793,7 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
     r->tr = NULL;
     memset(r->arr, 0, sizeof r->arr);
     r->pending_frame_end = false;
+    r->info.double_buffered = r->p1_swaps > 0;
     if (r->user_frame_end) {
         r->frame_end_is_swap = false;
         snprintf(r->info.frame_end, sizeof r->info.frame_end, "%s", r->user_frame_end);

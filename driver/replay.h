@@ -33,6 +33,9 @@ typedef struct fs_replay_info {
     int width, height;      /* chosen window size */
     char frame_end[64];     /* the call that ends frames */
     bool uses_queries;      /* the trace begins occlusion queries itself */
+    /* The trace swaps buffers (glXSwapBuffers, ...): the captured context
+     * was double-buffered; give it to fs_context_set_double_buffered. */
+    bool double_buffered;
     char warning[400];      /* e.g. the trace ends inside an event (a killed capture) */
     bool from_record;       /* pass 2 replays pass 1's decoded calls, not the file */
 } fs_replay_info;

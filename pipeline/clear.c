@@ -61,7 +61,7 @@ void fs_exec_Clear(fs_context *c, GLbitfield mask)
     if (c->cycle)
         fs_cycle_clear(c->cycle, c, mask, x1 - x0, y1 - y0);
 
-    bool color = (mask & GL_COLOR_BUFFER_BIT) &&
+    bool color = (mask & GL_COLOR_BUFFER_BIT) && c->draw_buffer != GL_NONE && /* 4.2.1 */
                  (f->color_mask[0] || f->color_mask[1] || f->color_mask[2] || f->color_mask[3]);
     bool all_channels = f->color_mask[0] && f->color_mask[1] && f->color_mask[2] && f->color_mask[3];
     uint8_t rgba[4];

@@ -36,6 +36,7 @@ fs_context *fs_context_create(const fs_config *cfg, int width, int height)
     c->frag.scissor[0] = c->frag.scissor[1] = 0;
     c->frag.scissor[2] = width;
     c->frag.scissor[3] = height;
+    fs_context_set_double_buffered(c, false); /* OSMesa's contexts are single-buffered */
     return c;
 }
 
@@ -59,6 +60,19 @@ void fs_context_destroy(fs_context *c)
         for (int k = 0; k < 2; k++)
             free(c->array_copy[i].buf[k]);
     free(c);
+}
+
+bool fs_gen_names_ok(fs_context *c, GLsizei n, size_t held)
+{
+    if (n < 0) {
+        fs_error(c, GL_INVALID_VALUE);
+        return false;
+    }
+    if (held > FS_MAX_NAMES || (size_t)n > FS_MAX_NAMES - held) {
+        fs_error(c, GL_OUT_OF_MEMORY);
+        return false;
+    }
+    return true;
 }
 
 void fs_error(fs_context *c, GLenum err)

@@ -50,6 +50,17 @@ struct fs_context {
     GLint pack_skip_pixels, pack_skip_rows, pack_image_height, pack_skip_images;
     GLint unpack_swap_bytes, unpack_lsb_first, pack_swap_bytes, pack_lsb_first;
     bool unmodelled_caps[32];     /* enables fragsim stores but does not model (driver/gl_state.c) */
+    /* Client-state enables of the arrays fragsim does not fetch yet (edge
+     * flag, index, fog coordinate, secondary colour; GL 1.5 spec 2.8), kept
+     * so glIsEnabled answers (pipeline/vertex_array.c). */
+    bool edge_flag_array, index_array, fog_coord_array, secondary_color_array;
+    /* The window's buffers (GL 1.5 spec 4.2.1, 4.3.2, table 6.34): one colour
+     * buffer serves front and back.  double_buffered is what the captured
+     * program's context was (fs_context_set_double_buffered; false, as for
+     * OSMesa, unless replay sees swap calls); draw_buffer and read_buffer
+     * are the enums glDrawBuffer and glReadBuffer set (pipeline/buffer_select.c). */
+    bool double_buffered;
+    GLenum draw_buffer, read_buffer;
 
     struct fs_dlist_state *lists;
     struct fs_capture *capture;   /* non-NULL while recording a trace */
@@ -95,4 +106,19 @@ void *fs_scratch(fs_context *c, size_t bytes);
 /* A normalized value as glGetIntegerv returns it (GL 1.5 spec 6.1.2;
  * driver/gl_state.c), for every query of colours. */
 GLint fs_norm_to_int(double x);
+/* Sets whether the context is double-buffered and the draw and read
+ * buffers to its initial GL_BACK or GL_FRONT (GL 1.5 spec 4.2.1, 4.3.2);
+ * before any call, as when the context was created. */
+void fs_context_set_double_buffered(fs_context *c, bool double_buffered);
+
+/* Most names of one kind of object (display lists, texture objects,
+ * queries) held at once.  Each name generated is an object, so a glGen* of
+ * 2^31 - 1 names from a bad trace would otherwise allocate for hours. */
+#define FS_MAX_NAMES ((size_t)1 << 20)
+/* The check every glGen* shares: whether n more names may be generated
+ * where `held` are held.  Otherwise sets the error and nothing may be
+ * generated: GL_INVALID_VALUE for n < 0 (GL 1.5 spec 2.5 and each command's
+ * section), GL_OUT_OF_MEMORY beyond FS_MAX_NAMES (which GL allows for any
+ * command). */
+bool fs_gen_names_ok(fs_context *c, GLsizei n, size_t held);
 #endif

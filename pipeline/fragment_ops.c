@@ -112,6 +112,11 @@ void fs_fragment_quad_general(fs_context *c, fs_quad *q)
     occlusion_point(c, q, tested, passed);
     if (f->suppress_writes)
         return;
+    if (c->draw_buffer == GL_NONE) {
+        /* glDrawBuffer(GL_NONE): no colour buffer is written (4.2.1). */
+        c->stats.fragments_written += fs_popcount4(passed);
+        return;
+    }
 
     /* Dithering (4.1.9) is enabled by default but llvmpipe does not dither
      * an RGBA8 buffer, so it has no stage here. */
@@ -185,7 +190,7 @@ void fs_fragment_quad(fs_context *c, fs_quad *q)
     unsigned m = q->mask & 0xfu;
     if (!m)
         return;
-    bool simple = !f->suppress_writes && !f->scissor_enabled && !f->alpha_enabled && !f->stencil_enabled &&
+    bool simple = !f->suppress_writes && c->draw_buffer != GL_NONE && !f->scissor_enabled && !f->alpha_enabled && !f->stencil_enabled &&
                   !f->blend_enabled && !f->logic_op_enabled &&
                   f->color_mask[0] && f->color_mask[1] && f->color_mask[2] && f->color_mask[3];
     int qx = q->x, qy = q->y;

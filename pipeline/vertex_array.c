@@ -111,31 +111,40 @@ static fs_client_array *array_of(fs_context *c, GLenum array)
     }
 }
 
-void fs_exec_EnableClientState(fs_context *c, GLenum array)
+bool *fs_client_state_flag(fs_context *c, GLenum array)
 {
-    fs_client_array *a = array_of(c, array);
-    if (!a) {
-        /* Arrays fragsim does not model (index, edge flag, ...) are valid
-         * enums: count them instead of raising an error GL would not raise. */
-        if (array == GL_INDEX_ARRAY || array == GL_EDGE_FLAG_ARRAY)
-            fs_unsupported(c, "glEnableClientState(index/edge flag array)");
-        else
-            fs_error(c, GL_INVALID_ENUM);
-        return;
+    switch (array) {
+    case GL_EDGE_FLAG_ARRAY: return &c->edge_flag_array;
+    case GL_INDEX_ARRAY: return &c->index_array;
+    case GL_FOG_COORDINATE_ARRAY: return &c->fog_coord_array;
+    case GL_SECONDARY_COLOR_ARRAY: return &c->secondary_color_array;
+    default: return NULL;
     }
-    a->enabled = true;
 }
 
-void fs_exec_DisableClientState(fs_context *c, GLenum array)
+/* GL 1.5 spec 2.8: the six arrays of table 2.4 plus GL 1.4's fog
+ * coordinate and secondary colour arrays are valid names. */
+static void client_state(fs_context *c, GLenum array, bool on)
 {
     fs_client_array *a = array_of(c, array);
-    if (!a) {
-        if (array != GL_INDEX_ARRAY && array != GL_EDGE_FLAG_ARRAY)
-            fs_error(c, GL_INVALID_ENUM);
+    if (a) {
+        a->enabled = on;
         return;
     }
-    a->enabled = false;
+    bool *flag = fs_client_state_flag(c, array);
+    if (!flag) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    /* Arrays fragsim does not fetch: the enable is kept for glIsEnabled,
+     * and enabling one is counted, since a draw then ignores the array. */
+    *flag = on;
+    if (on)
+        fs_unsupported(c, "glEnableClientState(edge flag/index/fog coordinate/secondary colour array)");
 }
+
+void fs_exec_EnableClientState(fs_context *c, GLenum array) { client_state(c, array, true); }
+void fs_exec_DisableClientState(fs_context *c, GLenum array) { client_state(c, array, false); }
 
 /* ---- fetch ---- */
 /* Reads up to `size` components of element i; `norm` applies the colour

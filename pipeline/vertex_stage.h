@@ -106,4 +106,7 @@ const fs_matrix *fs_current_matrix(const fs_context *c, GLenum mode);
 /* Copies the current colour into the material properties that track it
  * (GL 1.5 spec 2.14.3); called on glColor and on enabling GL_COLOR_MATERIAL. */
 void fs_color_material_update(fs_context *c);
+/* The enable of a client array fragsim does not fetch yet (GL_EDGE_FLAG_ARRAY,
+ * GL_INDEX_ARRAY, GL_FOG_COORDINATE_ARRAY, GL_SECONDARY_COLOR_ARRAY), or NULL. */
+bool *fs_client_state_flag(fs_context *c, GLenum array);
 #endif

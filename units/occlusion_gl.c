@@ -374,10 +374,9 @@ static fs_query *add_query(struct fs_occlusion *o, GLuint id)
 
 void fs_exec_GenQueries(fs_context *c, GLsizei n, GLuint *ids)
 {
-    if (n < 0) {
-        fs_error(c, GL_INVALID_VALUE);
+    /* At most FS_MAX_NAMES queries held (fs_gen_names_ok). */
+    if (!fs_gen_names_ok(c, n, c->occlusion ? (size_t)c->occlusion->nqueries : 0))
         return;
-    }
     struct fs_occlusion *o = state(c);
     if (!o) {
         fs_error(c, GL_OUT_OF_MEMORY);

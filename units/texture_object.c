@@ -134,17 +134,23 @@ static fs_tex_object *create_object(struct fs_texture_state *s, GLuint name)
 void fs_exec_GenTextures(fs_context *c, GLsizei n, GLuint *textures)
 {
     struct fs_texture_state *s = c->texture;
-    if (n < 0) {
-        fs_error(c, GL_INVALID_VALUE);
+    /* At most FS_MAX_NAMES objects held: n = 2^31 - 1 from a bad trace
+     * is GL_OUT_OF_MEMORY at once, with nothing generated. */
+    if (!fs_gen_names_ok(c, n, s->count))
         return;
-    }
     /* Names are reserved by being returned; GL 1.5 creates the object on
      * first bind.  fragsim creates it at once (unbound, default state),
      * which glIsTexture cannot tell apart only because it also reports
      * bound_once (see fs_exec_IsTexture). */
+    /* Names above the largest held cannot be taken: no lookup for them
+     * (one per name would make a large n quadratic). */
+    GLuint max_held = 0;
+    for (size_t k = 0; k < s->count; k++)
+        if (s->objects[k]->name > max_held)
+            max_held = s->objects[k]->name;
     for (GLsizei i = 0; i < n; i++) {
         GLuint name = s->next_name;
-        while (name == 0 || lookup(s, name, NULL))
+        while (name == 0 || (name <= max_held && lookup(s, name, NULL)))
             name++;
         s->next_name = name + 1;
         if (!create_object(s, name)) {
