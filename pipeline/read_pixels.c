@@ -37,6 +37,12 @@ void fs_exec_ReadPixels(fs_context *c, GLint x, GLint y, GLsizei width, GLsizei 
         fs_error(c, GL_INVALID_OPERATION);
         return;
     }
+    /* glReadBuffer(GL_NONE) leaves no colour buffer to read (as Mesa
+     * answers; pipeline/buffer_select.c). */
+    if (c->read_buffer == GL_NONE && format != GL_DEPTH_COMPONENT && format != GL_STENCIL_INDEX) {
+        fs_error(c, GL_INVALID_OPERATION);
+        return;
+    }
     if (!pixels || width == 0 || height == 0)
         return;
 

@@ -118,6 +118,19 @@ static void seq_buffers(fs_context *c, rec *r)
         ERR();
         query(c, r, GL_READ_BUFFER);
     }
+    /* With no read buffer, colour cannot be read; depth and stencil can. */
+    GLubyte px[4];
+    GLuint z;
+    G(ReadBuffer, GL_NONE);
+    G(ReadPixels, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    ERR();
+    G(ReadPixels, 0, 0, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, &z);
+    ERR();
+    G(ReadPixels, 0, 0, 1, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, px);
+    ERR();
+    G(ReadBuffer, GL_BACK);
+    G(ReadPixels, 0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    ERR();
     G(Begin, GL_TRIANGLES);
     G(DrawBuffer, GL_BACK);
     G(ReadBuffer, GL_BACK);
