@@ -324,6 +324,27 @@ static uint32_t elem_from_8(uint8_t x, GLenum type)
     }
 }
 
+/* A float in [0, 1] as one element of an unpacked type, as Mesa converts
+ * floats: f * (2^b - 1) computed in float and rounded to nearest even,
+ * the 32-bit types wrapping where that product reaches 2^32 (or 2^31),
+ * so 1.0 reads as 0 (as INT_MIN for GL_INT). */
+static uint32_t elem_from_float(float f, GLenum type)
+{
+    switch (type) {
+    case GL_UNSIGNED_BYTE: return (uint32_t)lrintf(f * 255.0f);
+    case GL_BYTE: return (uint32_t)lrintf(f * 127.0f);
+    case GL_UNSIGNED_SHORT: return (uint32_t)lrintf(f * 65535.0f);
+    case GL_SHORT: return (uint32_t)lrintf(f * 32767.0f);
+    case GL_UNSIGNED_INT: return (uint32_t)(uint64_t)llrintf(f * 4294967295.0f);
+    case GL_INT: return (uint32_t)(uint64_t)llrintf(f * 2147483647.0f);
+    default: {
+        uint32_t v;
+        memcpy(&v, &f, 4);
+        return v;
+    }
+    }
+}
+
 /* The RGBA index of each element of a colour format, in order; L is R. */
 static int format_order(GLenum format, int idx[4])
 {
@@ -409,8 +430,14 @@ void fs_pixel_pack_rgba8(const fs_pixel_layout *l, void *pixels, int64_t y, int6
     for (int64_t i = 0; i < n; i++, out += l->group_bytes, rgba += 4) {
         uint8_t px[4] = {rgba[0], rgba[1], rgba[2], rgba[3]};
         if (lum_sum) {
-            unsigned s = (unsigned)px[0] + px[1] + px[2];
-            px[0] = (uint8_t)(s < 255 ? s : 255);
+            /* L = R + G + B clamped to [0, 1] (4.3.2), summed in float as
+             * Mesa does, and every element converted from float. */
+            float f[2] = {px[0] * (1.0f / 255.0f) + px[1] * (1.0f / 255.0f) + px[2] * (1.0f / 255.0f),
+                          px[3] * (1.0f / 255.0f)};
+            f[0] = f[0] < 1.0f ? f[0] : 1.0f;
+            for (int k = 0; k < nc; k++)
+                store(out + k * l->elem_bytes, l->elem_bytes, l->swap_bytes, elem_from_float(f[k], l->type));
+            continue;
         }
         if (p.bytes) {
             uint32_t w = 0;
@@ -454,15 +481,21 @@ void fs_pixel_pack_depth(const fs_pixel_layout *l, void *pixels, int64_t y, int6
         float f = (float)((double)depth[i] / dmax);
         uint32_t v;
         switch (l->type) {
-        case GL_UNSIGNED_INT: v = depth_to_uint(depth[i], bits); break;
+        /* Mesa's exact path, which swapped bytes skip: that case goes
+         * through the float value, truncated in double. */
+        case GL_UNSIGNED_INT:
+            v = l->swap_bytes ? (uint32_t)(4294967295.0 * (double)f) : depth_to_uint(depth[i], bits);
+            break;
         /* The other types go through the float value, scaled and rounded
          * in float as Mesa packs them: the float rounding of f * 65535 can
          * reach a .5 tie that exact arithmetic would not. */
         case GL_UNSIGNED_SHORT: v = (uint32_t)lrintf(f * 65535.0f); break;
-        case GL_UNSIGNED_BYTE: v = (uint32_t)lrintf(f * 255.0f); break;
-        case GL_BYTE: v = (uint32_t)lrintf(f * 127.0f); break;
-        case GL_SHORT: v = (uint32_t)lrintf(f * 32767.0f); break;
-        case GL_INT: v = (uint32_t)llrint((double)f * 2147483647.0); break;
+        /* The byte, short and int types truncate, and the signed ones
+         * map 2c + 1 = f (2^b - 1) (table 2.9 inverted), as Mesa packs depth. */
+        case GL_UNSIGNED_BYTE: v = (uint32_t)(int32_t)(f * 255.0f); break;
+        case GL_BYTE: v = (uint32_t)(((int32_t)(255.0f * f) - 1) / 2); break;
+        case GL_SHORT: v = (uint32_t)(((int32_t)(65535.0f * f) - 1) / 2); break;
+        case GL_INT: v = (uint32_t)(int32_t)(2147483647.0 * (double)f); break;
         default: memcpy(&v, &f, 4); break;
         }
         store(out, l->elem_bytes, l->swap_bytes, v);
@@ -491,6 +524,10 @@ void fs_pixel_pack_stencil(const fs_pixel_layout *l, void *pixels, int64_t y, in
     uint8_t *out = group_out(l, pixels, y, x0);
     for (int64_t i = 0; i < n; i++, out += l->group_bytes) {
         uint32_t v = stencil[i];
+        /* Indices are written as integers (4.3.2); GL_BYTE keeps 7 bits,
+         * as Mesa writes them. */
+        if (l->type == GL_BYTE)
+            v &= 0x7f;
         if (l->type == GL_FLOAT) {
             float f = (float)stencil[i];
             memcpy(&v, &f, 4);

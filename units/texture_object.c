@@ -223,15 +223,16 @@ GLboolean fs_exec_IsTexture(fs_context *c, GLuint texture)
 /* ---- pixel formats (3.6.4, 3.8.1; pipeline/pixel_transfer.h) ---- */
 
 /* The format/type errors of glTexImage2D and glTexSubImage2D: those of
- * 3.6.4 (fs_pixel_check), and INVALID_ENUM for the depth and stencil
- * formats, which GL 1.5 takes for DrawPixels but not for textures
- * (3.8.1).  COLOR_INDEX is valid; fragsim has no colour tables to convert
- * it with. */
+ * 3.6.4 (fs_pixel_check), and INVALID_OPERATION for the depth and stencil
+ * formats: the model has no depth textures, and 3.8.1 makes DEPTH_COMPONENT
+ * with a colour internal format INVALID_OPERATION (Mesa answers the same
+ * for STENCIL_INDEX).  COLOR_INDEX is valid; fragsim has no colour tables
+ * to convert it with. */
 static GLenum tex_format_error(GLenum format, GLenum type)
 {
     GLenum err = fs_pixel_check(format, type);
     if (err == GL_NO_ERROR && (fs_pixel_format_kind(format) & (FS_PIXEL_STENCIL | FS_PIXEL_DEPTH)))
-        return GL_INVALID_ENUM;
+        return GL_INVALID_OPERATION;
     return err;
 }
 
@@ -985,9 +986,15 @@ void fs_exec_PrioritizeTextures(fs_context *c, GLsizei n, const GLuint *textures
  * for packed types), GL_NO_ERROR when the pair is valid: colour formats only. */
 static GLenum get_image_format_error(GLenum format, GLenum type)
 {
-    if (fs_pixel_format_kind(format) != FS_PIXEL_COLOR)
-        return GL_INVALID_ENUM; /* COLOR_INDEX, STENCIL_INDEX, DEPTH_COMPONENT */
-    return fs_pixel_check(format, type);
+    /* The pair first (3.6.4); then DEPTH_COMPONENT of a colour texture is
+     * INVALID_OPERATION (6.1.4), and so is STENCIL_INDEX, as in Mesa.
+     * COLOR_INDEX is INVALID_ENUM (Mesa 22 reports an internal error). */
+    GLenum err = fs_pixel_check(format, type);
+    if (err == GL_NO_ERROR && format == GL_COLOR_INDEX)
+        err = GL_INVALID_ENUM;
+    else if (err == GL_NO_ERROR && fs_pixel_format_kind(format) != FS_PIXEL_COLOR)
+        err = GL_INVALID_OPERATION;
+    return err;
 }
 
 int64_t fs_gettexImage_bytes(fs_context *c, GLenum target, GLint level, GLenum format, GLenum type)
