@@ -153,12 +153,38 @@ static void scene_material_list(fs_context *c, int w, int h)
     G0(EndList);
 }
 
+/* With GL_COLOR_MATERIAL tracking the diffuse colour, glMaterial between
+ * Begin and End changes the other properties per vertex, and the tracked
+ * one follows glColor. */
+static void scene_material_color_tracking(fs_context *c, int w, int h)
+{
+    lit_setup(c, w, h);
+    G(ColorMaterial, GL_FRONT, GL_DIFFUSE);
+    G(Enable, GL_COLOR_MATERIAL);
+    G(Normal3f, 0.2f, 0.2f, 1);
+    G(Begin, GL_TRIANGLE_STRIP);
+    for (int i = 0; i < 8; i++) {
+        float t = (float)i / 7;
+        G(Color3f, 0.3f + 0.5f * t, 0.2f, 0.8f - 0.5f * t);
+        if (i % 2 == 0) {
+            mat(c, GL_FRONT, GL_AMBIENT, 0.1f, t, 0.3f, 1);
+            mat(c, GL_FRONT, GL_DIFFUSE, 1, 1, 0, 1); /* tracked: the colour wins */
+            mat(c, GL_FRONT, GL_SPECULAR, t, 0.6f, 0.6f, 1);
+            G(Materialf, GL_FRONT, GL_SHININESS, 4.0f + 20.0f * t);
+        }
+        G(Vertex3f, -1.3f + 2.6f * t, (i & 1) ? 0.7f : -0.7f, 0);
+    }
+    G0(End);
+}
+
 TEST(material_between_begin_end_vs_osmesa)
 {
     GLenum err;
     CHECK_EQ_INT(compare(scene_material_immediate, 96, 72, "material_immediate", &err), 0);
     CHECK_EQ_INT(err, GL_NO_ERROR);
     CHECK_EQ_INT(compare(scene_material_list, 96, 72, "material_list", &err), 0);
+    CHECK_EQ_INT(err, GL_NO_ERROR);
+    CHECK_EQ_INT(compare(scene_material_color_tracking, 96, 72, "material_tracking", &err), 0);
     CHECK_EQ_INT(err, GL_NO_ERROR);
 }
 
