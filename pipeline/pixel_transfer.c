@@ -424,8 +424,9 @@ void fs_pixel_pack_rgba8(const fs_pixel_layout *l, void *pixels, int64_t y, int6
         return;
     }
     packed_type p = packed_of(l->type);
-    bool lum_sum = (flags & FS_PACK_LUMINANCE_SUM) &&
-                   (l->format == GL_LUMINANCE || l->format == GL_LUMINANCE_ALPHA);
+    bool lum = l->format == GL_LUMINANCE || l->format == GL_LUMINANCE_ALPHA;
+    bool lum_sum = (flags & FS_PACK_LUMINANCE_SUM) && lum;
+    bool lum_float = (flags & FS_PACK_LUMINANCE_UINT_FLOAT) && lum && !lum_sum && l->type == GL_UNSIGNED_INT;
     bool round = (flags & FS_PACK_ROUND_PACKED) != 0;
     for (int64_t i = 0; i < n; i++, out += l->group_bytes, rgba += 4) {
         uint8_t px[4] = {rgba[0], rgba[1], rgba[2], rgba[3]};
@@ -435,6 +436,12 @@ void fs_pixel_pack_rgba8(const fs_pixel_layout *l, void *pixels, int64_t y, int6
             float f[2] = {px[0] * (1.0f / 255.0f) + px[1] * (1.0f / 255.0f) + px[2] * (1.0f / 255.0f),
                           px[3] * (1.0f / 255.0f)};
             f[0] = f[0] < 1.0f ? f[0] : 1.0f;
+            for (int k = 0; k < nc; k++)
+                store(out + k * l->elem_bytes, l->elem_bytes, l->swap_bytes, elem_from_float(f[k], l->type));
+            continue;
+        }
+        if (lum_float) {
+            float f[2] = {px[0] * (1.0f / 255.0f), px[3] * (1.0f / 255.0f)};
             for (int k = 0; k < nc; k++)
                 store(out + k * l->elem_bytes, l->elem_bytes, l->swap_bytes, elem_from_float(f[k], l->type));
             continue;

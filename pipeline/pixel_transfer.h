@@ -104,8 +104,11 @@ void fs_pixel_unpack_rgba8(const fs_pixel_layout *l, const void *pixels, int64_t
  * 4.3.2), else R (glGetTexImage, table 6.1 / 6.1.4).
  * FS_PACK_ROUND_PACKED: packed types wider than 8 bits round to nearest
  * (Mesa converts through float for textures whose base format is not RGBA)
- * instead of replicating the top bits. */
-enum { FS_PACK_LUMINANCE_SUM = 1, FS_PACK_ROUND_PACKED = 2 };
+ * instead of replicating the top bits.
+ * FS_PACK_LUMINANCE_UINT_FLOAT: LUMINANCE and LUMINANCE_ALPHA as
+ * GL_UNSIGNED_INT go through float (24 bits; 1.0 wraps to 0), as Mesa's
+ * glGetTexImage converts them, instead of x * 0x01010101. */
+enum { FS_PACK_LUMINANCE_SUM = 1, FS_PACK_ROUND_PACKED = 2, FS_PACK_LUMINANCE_UINT_FLOAT = 4 };
 void fs_pixel_pack_rgba8(const fs_pixel_layout *l, void *pixels, int64_t y, int64_t x0, int64_t n,
                          const uint8_t *rgba, unsigned flags);
 /* Depth values of `bits` bits (buffer units, max 2^bits - 1) to a

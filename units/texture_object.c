@@ -1046,8 +1046,9 @@ void fs_exec_GetTexImage(fs_context *c, GLenum target, GLint level, GLenum forma
     fs_pixel_layout l;
     fs_pixel_layout_init(&l, &ps, 2, img->width, img->height, 1, format, type);
     /* Luminance is R (6.1.4); Mesa packs a texture whose base format is
-     * not RGBA through float (pixel_transfer.h). */
-    unsigned flags = img->base_format != GL_RGBA ? FS_PACK_ROUND_PACKED : 0;
+     * not RGBA through float, and luminance as GL_UNSIGNED_INT
+     * (pixel_transfer.h). */
+    unsigned flags = FS_PACK_LUMINANCE_UINT_FLOAT | (img->base_format != GL_RGBA ? FS_PACK_ROUND_PACKED : 0);
     uint8_t *row = malloc((size_t)img->width * 4);
     if (!row) {
         fs_error(c, GL_OUT_OF_MEMORY);
