@@ -164,20 +164,31 @@ bool fs_pixel_layout_init(fs_pixel_layout *l, const fs_pixel_store *ps, int dims
         /* A row is ceil(len / 8) bytes padded to the alignment; skip pixels
          * count bits (3.6.4, "Unpacking of bitmaps"). */
         l->row_stride = ((len + 7) / 8 + a - 1) / a * a;
-        l->image_stride = l->row_stride * rows;
-        l->origin = (si * l->image_stride + sr * l->row_stride) * 8 + sp;
-        return true;
+    } else {
+        l->elem_bytes = p.bytes ? p.bytes : elem_bytes(type);
+        l->group_bytes = p.bytes ? p.bytes : (int64_t)l->comps * l->elem_bytes;
+        /* Swapping applies to elements of more than one byte (3.6.4 table 3.7). */
+        l->swap_bytes = ps->swap_bytes && l->elem_bytes > 1;
+        /* k = a/s * ceil(s n l / a) elements when s < a, else n l: in bytes
+         * the row is padded to a multiple of the alignment either way (a
+         * and s are powers of two). */
+        l->row_stride = (len * l->group_bytes + a - 1) / a * a;
     }
-    l->elem_bytes = p.bytes ? p.bytes : elem_bytes(type);
-    l->group_bytes = p.bytes ? p.bytes : (int64_t)l->comps * l->elem_bytes;
-    /* Swapping applies to elements of more than one byte (3.6.4 table 3.7). */
-    l->swap_bytes = ps->swap_bytes && l->elem_bytes > 1;
-    /* k = a/s * ceil(s n l / a) elements when s < a, else n l: in bytes the
-     * row is padded to a multiple of the alignment either way (a and s are
-     * powers of two). */
-    l->row_stride = (len * l->group_bytes + a - 1) / a * a;
+    /* An image that would span more than 2^60 bytes (skips and row lengths
+     * near 2^31 from a bad trace) is refused before any product can
+     * overflow: nothing is read or written, and its byte count is 0. */
+    double extent = ((double)si + (double)depth) * (double)rows * (double)l->row_stride +
+                    ((double)sr + (double)height) * (double)l->row_stride +
+                    ((double)sp + (double)width) * (double)(l->group_bytes ? l->group_bytes : 1);
+    if (extent > 1152921504606846976.0) {
+        memset(l, 0, sizeof *l);
+        return false;
+    }
     l->image_stride = l->row_stride * rows;
-    l->origin = si * l->image_stride + sr * l->row_stride + sp * l->group_bytes;
+    if (type == GL_BITMAP)
+        l->origin = (si * l->image_stride + sr * l->row_stride) * 8 + sp;
+    else
+        l->origin = si * l->image_stride + sr * l->row_stride + sp * l->group_bytes;
     return true;
 }
 

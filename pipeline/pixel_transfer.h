@@ -76,8 +76,9 @@ typedef struct fs_pixel_layout {
     bool swap_bytes, lsb_first;
 } fs_pixel_layout;
 
-/* False (and *l zeroed) when the pair is invalid (fs_pixel_check) or a size
- * is negative. */
+/* False (and *l zeroed) when the pair is invalid (fs_pixel_check), a size
+ * is negative, or the image would span more than 2^60 bytes (then nothing
+ * may be read or written). */
 bool fs_pixel_layout_init(fs_pixel_layout *l, const fs_pixel_store *ps, int dims, int64_t width, int64_t height,
                           int64_t depth, GLenum format, GLenum type);
 /* Bytes from the image pointer to one past the last byte of the image (skips

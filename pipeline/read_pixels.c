@@ -49,7 +49,8 @@ void fs_exec_ReadPixels(fs_context *c, GLint x, GLint y, GLsizei width, GLsizei 
     const fs_framebuffer *fb = &c->fb;
     fs_pixel_store ps = fs_pixel_store_pack(c);
     fs_pixel_layout l;
-    fs_pixel_layout_init(&l, &ps, 2, width, height, 1, format, type);
+    if (!fs_pixel_layout_init(&l, &ps, 2, width, height, 1, format, type))
+        return; /* an image too large to address: nothing written */
     if (c->cycle) {
         uint64_t n = (uint64_t)width * (uint64_t)height;
         fs_cycle_read_pixels(c->cycle, c, l.group_bytes ? n * (uint64_t)l.group_bytes : (n + 7) / 8);

@@ -612,6 +612,39 @@ TEST(display_list_keeps_unpack_skips)
     both_close(&b);
 }
 
+/* Skips and row lengths near 2^31 (a bad trace) make images no pointer can
+ * address: their byte count is 0 and nothing is read or written, instead
+ * of an int64 overflow and a write far outside the buffer. */
+TEST(huge_pixel_store_reads_and_writes_nothing)
+{
+    fs_context *c = fs_context_create(NULL, 8, 8);
+    REQUIRE(c);
+    uint8_t buf[64 * 16];
+    memset(buf, 0x5a, sizeof buf);
+    fsglPixelStorei(c, GL_PACK_ROW_LENGTH, 2147483647);
+    fsglPixelStorei(c, GL_PACK_SKIP_ROWS, 2147483647);
+    fsglPixelStorei(c, GL_UNPACK_ROW_LENGTH, 2147483647);
+    fsglPixelStorei(c, GL_UNPACK_SKIP_ROWS, 2147483647);
+    fsglPixelStorei(c, GL_UNPACK_SKIP_PIXELS, 2147483647);
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    CHECK_EQ_INT(fs_readpixels_bytes(c, 8, 8, GL_RGBA, GL_FLOAT), 0);
+    CHECK_EQ_INT(fs_teximage_bytes(c, 8, 8, GL_RGBA, GL_FLOAT), 0);
+    fsglReadPixels(c, 0, 0, 8, 8, GL_RGBA, GL_FLOAT, buf);
+    fsglTexImage2D(c, GL_TEXTURE_2D, 0, GL_RGBA, 8, 8, 0, GL_RGBA, GL_FLOAT, buf);
+    fsglGetTexImage(c, GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, buf);
+    for (size_t i = 0; i < sizeof buf; i++)
+        if (buf[i] != 0x5a) {
+            CHECK_EQ_INT(buf[i], 0x5a);
+            break;
+        }
+    /* Within 2^60 bytes the count is exact: 2^28 - 1 skipped rows of
+     * 2^28 RGBA pixels each. */
+    fs_pixel_store ps = {.alignment = 1, .row_length = 1 << 28, .skip_rows = (1 << 28) - 1};
+    CHECK_EQ_INT(fs_pixel_image_bytes(&ps, 2, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE),
+                 ((int64_t)1 << 28) * 4 * ((1 << 28) - 1) + 4);
+    fs_context_destroy(c);
+}
+
 TEST_LIST = {
     TEST_ENTRY(teximage_vs_osmesa),
     TEST_ENTRY(texsubimage_vs_osmesa),
@@ -622,6 +655,7 @@ TEST_LIST = {
     TEST_ENTRY(teximage_bytes_bound_osmesa_reads),
     TEST_ENTRY(stencil_bitmap_pack),
     TEST_ENTRY(display_list_keeps_unpack_skips),
+    TEST_ENTRY(huge_pixel_store_reads_and_writes_nothing),
     TEST_END,
 };
 

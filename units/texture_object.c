@@ -1044,7 +1044,8 @@ void fs_exec_GetTexImage(fs_context *c, GLenum target, GLint level, GLenum forma
         return; /* an undefined level writes nothing */
     fs_pixel_store ps = fs_pixel_store_pack(c);
     fs_pixel_layout l;
-    fs_pixel_layout_init(&l, &ps, 2, img->width, img->height, 1, format, type);
+    if (!fs_pixel_layout_init(&l, &ps, 2, img->width, img->height, 1, format, type))
+        return; /* an image too large to address: nothing written */
     /* Luminance is R (6.1.4); Mesa packs a texture whose base format is
      * not RGBA through float, and luminance as GL_UNSIGNED_INT
      * (pixel_transfer.h). */
