@@ -645,6 +645,25 @@ TEST(huge_pixel_store_reads_and_writes_nothing)
     fs_context_destroy(c);
 }
 
+/* llvmpipe stores 16-bit and 10-bit client data given with an unsized
+ * internal format at that precision; the model's 8-bit storage is exact
+ * for NEAREST/REPLACE (teximage_vs_osmesa) but is counted unsupported,
+ * since filtering and the environment see the extra bits on llvmpipe. */
+TEST(wide_texels_counted)
+{
+    fs_context *c = fs_context_create(NULL, 4, 4);
+    REQUIRE(c);
+    static uint16_t px[4 * 4 * 4];
+    fsglTexImage2D(c, GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_SHORT, px);
+    fsglTexImage2D(c, GL_TEXTURE_2D, 0, GL_RGB, 4, 4, 0, GL_RGB, GL_UNSIGNED_SHORT_5_6_5, px);
+    CHECK_EQ_INT(c->stats.unsupported_calls, 0);
+    fsglTexImage2D(c, GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_SHORT, px);
+    fsglTexImage2D(c, GL_TEXTURE_2D, 0, 4, 4, 4, 0, GL_BGRA, GL_UNSIGNED_INT_2_10_10_10_REV, px);
+    CHECK_EQ_INT(c->stats.unsupported_calls, 2);
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    fs_context_destroy(c);
+}
+
 TEST_LIST = {
     TEST_ENTRY(teximage_vs_osmesa),
     TEST_ENTRY(texsubimage_vs_osmesa),
@@ -656,6 +675,7 @@ TEST_LIST = {
     TEST_ENTRY(stencil_bitmap_pack),
     TEST_ENTRY(display_list_keeps_unpack_skips),
     TEST_ENTRY(huge_pixel_store_reads_and_writes_nothing),
+    TEST_ENTRY(wide_texels_counted),
     TEST_END,
 };
 

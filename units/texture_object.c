@@ -343,6 +343,24 @@ GLenum fs_tex_unpack_rgba8(fs_context *c, uint8_t *dst, int w, int h, GLenum bas
     return GL_NO_ERROR;
 }
 
+/* Whether llvmpipe would store this image at more than 8 bits: for an
+ * unsized internal format Mesa picks the storage that matches the client
+ * data when one exists (RGBA, LUMINANCE, LUMINANCE_ALPHA or ALPHA as
+ * UNSIGNED_SHORT, the 10-bit packed types; measured through OSMesa with
+ * LINEAR filtering and MODULATE).  The model keeps 8 bits: NEAREST with
+ * REPLACE is exact (tests/test_pixel_transfer.c), filtering and the
+ * texture environment can differ, so it is counted. */
+static bool keeps_wide_texels(GLint internalformat, GLenum format, GLenum type)
+{
+    bool unsized = (internalformat >= 1 && internalformat <= 4) || internalformat == GL_ALPHA ||
+                   internalformat == GL_LUMINANCE || internalformat == GL_LUMINANCE_ALPHA ||
+                   internalformat == GL_INTENSITY || internalformat == GL_RGB || internalformat == GL_RGBA;
+    bool wide = (type == GL_UNSIGNED_SHORT && (format == GL_RGBA || format == GL_LUMINANCE ||
+                                               format == GL_LUMINANCE_ALPHA || format == GL_ALPHA)) ||
+                type == GL_UNSIGNED_INT_10_10_10_2 || type == GL_UNSIGNED_INT_2_10_10_10_REV;
+    return unsized && wide;
+}
+
 static bool is_pow2_or_zero(GLsizei v) { return (v & (v - 1)) == 0; }
 
 /* Checks shared by glTexImage2D and glCopyTexImage2D (3.8.1): returns the
@@ -422,6 +440,8 @@ void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint interna
         return;
     }
     fs_tex_image *img = define_level(c, level, internalformat, width, height);
+    if (img && keeps_wide_texels(internalformat, format, type))
+        fs_unsupported(c, "16/10-bit texels, unsized internal format (stored at 8 bits)");
     if (img && img->texels && pixels)
         unpack_image(c, img, 0, 0, width, height, format, type, pixels);
 }
