@@ -415,6 +415,64 @@ void fs_pixel_unpack_rgba8(const fs_pixel_layout *l, const void *pixels, int64_t
     }
 }
 
+void fs_pixel_unpack_index(const fs_pixel_layout *l, const void *pixels, int64_t z, int64_t y, int64_t x0,
+                           int64_t n, uint32_t *index)
+{
+    if ((l->format != GL_STENCIL_INDEX && l->format != GL_COLOR_INDEX) || n <= 0)
+        return;
+    if (l->type == GL_BITMAP) {
+        const uint8_t *base = pixels;
+        int64_t bit = l->origin + (z * l->image_stride + y * l->row_stride) * 8 + x0;
+        for (int64_t i = 0; i < n; i++, bit++) {
+            int shift = l->lsb_first ? (int)(bit & 7) : 7 - (int)(bit & 7);
+            index[i] = (base[bit >> 3] >> shift) & 1u;
+        }
+        return;
+    }
+    const uint8_t *src = group_at(l, pixels, z, y, x0);
+    for (int64_t i = 0; i < n; i++, src += l->group_bytes) {
+        uint32_t raw = load(src, l->elem_bytes, l->swap_bytes);
+        switch (l->type) {
+        case GL_BYTE: index[i] = (uint32_t)(int32_t)(int8_t)raw; break;
+        case GL_SHORT: index[i] = (uint32_t)(int32_t)(int16_t)raw; break;
+        case GL_FLOAT: {
+            float f;
+            memcpy(&f, &raw, 4);
+            index[i] = f > 0.0f ? (f < 4294967040.0f ? (uint32_t)f : 0xffffffffu) : 0u;
+            break;
+        }
+        default: index[i] = raw; break;
+        }
+    }
+}
+
+void fs_pixel_unpack_depth(const fs_pixel_layout *l, const void *pixels, int64_t z, int64_t y, int64_t x0,
+                           int64_t n, float *depth)
+{
+    if (l->format != GL_DEPTH_COMPONENT || n <= 0)
+        return;
+    const uint8_t *src = group_at(l, pixels, z, y, x0);
+    for (int64_t i = 0; i < n; i++, src += l->group_bytes) {
+        uint32_t raw = load(src, l->elem_bytes, l->swap_bytes);
+        double d;
+        switch (l->type) {
+        case GL_UNSIGNED_BYTE: d = raw / 255.0; break;
+        case GL_UNSIGNED_SHORT: d = raw / 65535.0; break;
+        case GL_UNSIGNED_INT: d = raw / 4294967295.0; break;
+        case GL_BYTE: d = (2.0 * (int8_t)raw + 1.0) / 255.0; break;
+        case GL_SHORT: d = (2.0 * (int16_t)raw + 1.0) / 65535.0; break;
+        case GL_INT: d = (2.0 * (int32_t)raw + 1.0) / 4294967295.0; break;
+        default: {
+            float f;
+            memcpy(&f, &raw, 4);
+            d = f;
+            break;
+        }
+        }
+        depth[i] = d > 0.0 ? (d < 1.0 ? (float)d : 1.0f) : 0.0f; /* NaN to 0 */
+    }
+}
+
 /* ---- packing ---- */
 
 static uint8_t *group_out(const fs_pixel_layout *l, void *pixels, int64_t y, int64_t x)

@@ -99,6 +99,18 @@ int64_t fs_pixel_image_bytes(const fs_pixel_store *ps, int dims, int64_t width, 
 void fs_pixel_unpack_rgba8(const fs_pixel_layout *l, const void *pixels, int64_t z, int64_t y, int64_t x0,
                            int64_t n, uint8_t *rgba);
 
+/* Groups of a STENCIL_INDEX or COLOR_INDEX image as indices (3.6.4): the
+ * integer types as integers (signed ones sign-extended), FLOAT truncated
+ * toward zero and clamped to [0, 2^32 - 1], BITMAP one bit each (bit 7 of
+ * a byte first unless LSB first).  Groups of a DEPTH_COMPONENT image as
+ * floats in [0, 1] by table 2.9 (unsigned c / (2^b - 1), signed
+ * (2c + 1) / (2^b - 1), floats clamped).  For glDrawPixels; not yet
+ * compared with llvmpipe (no command of the model unpacks them yet). */
+void fs_pixel_unpack_index(const fs_pixel_layout *l, const void *pixels, int64_t z, int64_t y, int64_t x0,
+                           int64_t n, uint32_t *index);
+void fs_pixel_unpack_depth(const fs_pixel_layout *l, const void *pixels, int64_t z, int64_t y, int64_t x0,
+                           int64_t n, float *depth);
+
 /* ---- packing (4.3.2, 6.1.4) ----
  * RGBA8 values to groups x0 .. x0+n-1 of row y of a colour format.
  * FS_PACK_LUMINANCE_SUM: luminance is R + G + B clamped (glReadPixels,

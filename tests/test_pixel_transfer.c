@@ -664,6 +664,60 @@ TEST(wide_texels_counted)
     fs_context_destroy(c);
 }
 
+/* Unpacking indices and depth (for glDrawPixels): what the packers wrote
+ * reads back (stencil in every type, bits with and without LSB first), and
+ * table 2.9's depth conversions, under skips, row length and swapped
+ * bytes. */
+TEST(unpack_index_and_depth_closed_form)
+{
+    static const GLenum types[] = {GL_UNSIGNED_BYTE, GL_BYTE, GL_UNSIGNED_SHORT, GL_SHORT,
+                                   GL_UNSIGNED_INT, GL_INT, GL_FLOAT, GL_BITMAP};
+    uint8_t st[21];
+    for (int i = 0; i < 21; i++)
+        st[i] = (uint8_t)(i * 11 % 128);
+    for (int t = 0; t < 8; t++)
+        for (int swap = 0; swap < 2; swap++) {
+            fs_pixel_store ps = {.alignment = 2, .row_length = 9, .skip_pixels = 2, .skip_rows = 1,
+                                 .swap_bytes = swap != 0, .lsb_first = swap != 0};
+            fs_pixel_layout l;
+            REQUIRE(fs_pixel_layout_init(&l, &ps, 2, 7, 3, 1, GL_STENCIL_INDEX, types[t]));
+            uint8_t buf[512];
+            memset(buf, 0, sizeof buf);
+            CHECK(fs_pixel_layout_bytes(&l) <= (int64_t)sizeof buf);
+            for (int y = 0; y < 3; y++)
+                fs_pixel_pack_stencil(&l, buf, y, 0, 7, st + 7 * y);
+            for (int y = 0; y < 3; y++) {
+                uint32_t idx[7];
+                fs_pixel_unpack_index(&l, buf, 0, y, 0, 7, idx);
+                for (int x = 0; x < 7; x++) {
+                    uint32_t want = st[7 * y + x];
+                    if (types[t] == GL_BITMAP)
+                        want &= 1;
+                    CHECK_EQ_UINT(idx[x], want);
+                }
+            }
+        }
+    /* Depth: unsigned c / (2^b - 1), signed (2c + 1) / (2^b - 1), clamped. */
+    fs_pixel_store ps = {.alignment = 4, .swap_bytes = true};
+    fs_pixel_layout l;
+    REQUIRE(fs_pixel_layout_init(&l, &ps, 2, 3, 1, 1, GL_DEPTH_COMPONENT, GL_SHORT));
+    const uint8_t shorts[6] = {0x40, 0x00, 0x80, 0x00, 0xff, 0xff}; /* big-endian 16384, -32768, -1 */
+    float d[3];
+    fs_pixel_unpack_depth(&l, shorts, 0, 0, 0, 3, d);
+    CHECK(d[0] == (float)(32769.0 / 65535.0));
+    CHECK(d[1] == 0.0f);
+    CHECK(d[2] == 0.0f);
+    ps.swap_bytes = false;
+    REQUIRE(fs_pixel_layout_init(&l, &ps, 2, 3, 1, 1, GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE));
+    const uint8_t bytes[3] = {0, 51, 255};
+    fs_pixel_unpack_depth(&l, bytes, 0, 0, 0, 3, d);
+    CHECK(d[0] == 0.0f && d[1] == 0.2f && d[2] == 1.0f);
+    REQUIRE(fs_pixel_layout_init(&l, &ps, 2, 3, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT));
+    const float fl[3] = {-0.5f, 0.25f, NAN};
+    fs_pixel_unpack_depth(&l, fl, 0, 0, 0, 3, d);
+    CHECK(d[0] == 0.0f && d[1] == 0.25f && d[2] == 0.0f);
+}
+
 TEST_LIST = {
     TEST_ENTRY(teximage_vs_osmesa),
     TEST_ENTRY(texsubimage_vs_osmesa),
@@ -676,6 +730,7 @@ TEST_LIST = {
     TEST_ENTRY(display_list_keeps_unpack_skips),
     TEST_ENTRY(huge_pixel_store_reads_and_writes_nothing),
     TEST_ENTRY(wide_texels_counted),
+    TEST_ENTRY(unpack_index_and_depth_closed_form),
     TEST_END,
 };
 
