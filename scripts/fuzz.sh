@@ -44,7 +44,22 @@ if [ -z "$(ls -A "$seeds")" ]; then
 fi
 export ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1
 opts=(-max_total_time="$SECONDS_MAX" -timeout=20 -rss_limit_mb=4096 -artifact_prefix="$FB/" -print_final_stats=1)
-echo "fuzz_trace: $SECONDS_MAX s; seeds $(ls "$seeds" | wc -l), corpus $(ls "$FB/corpus" | wc -l) inputs"
-"$FB/fuzz_trace" "${opts[@]}" -max_len=262144 "$FB/corpus" "$seeds"
-echo "fuzz_gl: $SECONDS_MAX s; corpus $(ls "$FB/corpus_gl" | wc -l) inputs"
-"$FB/fuzz_gl" "${opts[@]}" -max_len=8192 "$FB/corpus_gl"
+run_trace() {
+    echo "fuzz_trace: $SECONDS_MAX s; seeds $(ls "$seeds" | wc -l), corpus $(ls "$FB/corpus" | wc -l) inputs"
+    "$FB/fuzz_trace" "${opts[@]}" -max_len=262144 "$FB/corpus" "$seeds"
+}
+run_gl() {
+    echo "fuzz_gl: $SECONDS_MAX s; corpus $(ls "$FB/corpus_gl" | wc -l) inputs"
+    "$FB/fuzz_gl" "${opts[@]}" -max_len=8192 "$FB/corpus_gl"
+}
+# FUZZ_PARALLEL=1 runs both harnesses at once (one core each), their output
+# in $FB/fuzz_trace.log and $FB/fuzz_gl.log; either failing fails the run.
+if [ "${FUZZ_PARALLEL:-0}" = 1 ]; then
+    run_trace > "$FB/fuzz_trace.log" 2>&1 & pt=$!
+    run_gl > "$FB/fuzz_gl.log" 2>&1 & pg=$!
+    rc=0; wait $pt || rc=1; wait $pg || rc=1
+    tail -n 12 "$FB/fuzz_trace.log" "$FB/fuzz_gl.log"
+    exit $rc
+fi
+run_trace
+run_gl
