@@ -1,43 +1,16 @@
 /*
- * Internals of the cycle-level model shared by its unit files: the event
- * recurrence over bounded FIFOs (cycle_model.c), memories (memory.c) and the
- * per-unit service times (front_end.c, triangle_setup.c, rasterizer_stage.c,
- * texture_stage.c, fragment_stage.c, occlusion_stage.c).
+ * Internals of the cycle-level model shared by its files: the FIFO engine
+ * (cycle_fifo.h, cycle_fifo.c; memories in memory.c), the observer of the
+ * functional pipeline's work (cycle_observer.c), the sampling estimator of
+ * sampled mode (cycle_sampling.c) and the per-unit service times
+ * (front_end.c, triangle_setup.c, rasterizer_stage.c, texture_stage.c,
+ * fragment_stage.c, occlusion_stage.c).
  */
 #ifndef FS_CYCLE_INTERNAL_H
 #define FS_CYCLE_INTERNAL_H
 #include "cycle_model.h"
 #include "texture_cache.h"
-
-/* The FIFO in front of a stage: the start times of the last `depth` items
- * the stage took from it (a ring), which is all the recurrence needs: item
- * i may enter once item i - depth has left. */
-typedef struct fs_cyc_fifo {
-    uint64_t *ring;
-    uint32_t depth;
-    uint64_t count;     /* items taken so far */
-    uint32_t widx;      /* count % depth, kept so that no step divides */
-    uint64_t sptr;      /* first item not known to have started (occupancy) */
-    uint32_t sidx;      /* sptr % depth */
-    uint64_t hwm;       /* most items ever waiting, since the last reset */
-} fs_cyc_fifo;
-
-/* A memory: bandwidth in bytes per cycle, read latency.  `t` is the time the
- * memory is busy until, in bytes (cycles * bandwidth), so fractional
- * bandwidth use carries over exactly. */
-typedef struct fs_cyc_mem {
-    uint64_t bw, t;
-    uint32_t latency;
-    int shift;   /* log2 bw when bw is a power of two (a shift, not a division), else -1 */
-} fs_cyc_mem;
-
-typedef struct fs_cyc_stage {
-    uint64_t free;          /* earliest start of the next item */
-    uint64_t busy, stalled;
-    uint32_t latency;
-    fs_cyc_fifo in;
-    fs_cyc_mem *mem;
-} fs_cyc_stage;
+#include "cycle_fifo.h"
 
 /* Unit indices follow FS_CUNIT order in cycle_stats.def. */
 enum {
@@ -192,23 +165,38 @@ struct fs_cycle {
     double carry[FS_CARRY_COUNT];
 };
 
-/* ---- the recurrence (cycle_model.c) ---- */
-/* Passes one item through stage st: it arrives at `arr`, takes `service`
- * cycles and `bytes` of st's memory bandwidth, and leaves when `next`'s
- * FIFO has room (next NULL: no FIFO after it).  Returns its arrival at the
- * next stage (departure + latency, + memory latency when it read memory). */
-uint64_t fs_cyc_step(fs_cyc_stage *st, uint64_t arr, uint64_t service, uint64_t bytes, bool reads,
-                     fs_cyc_stage *next);
-int fs_cyc_stage_init(fs_cyc_stage *st, uint32_t latency, uint32_t fifo_depth);
-void fs_cyc_stage_free(fs_cyc_stage *st);
 /* Latest completion time so far (the pipeline drained). */
 static inline uint64_t fs_cyc_time(const fs_cycle *cy) { return cy->done > cy->cmd ? cy->done : cy->cmd; }
+/* ... and with the estimated cycles of sampled mode. */
+static inline uint64_t fs_cyc_now_total(const fs_cycle *cy) { return fs_cyc_time(cy) + cy->est; }
 
-/* ---- memory.c ---- */
-void fs_cyc_mem_init(fs_cyc_mem *m, uint64_t bytes_per_cycle, uint32_t latency);
-/* Reserves `bytes` of bandwidth from cycle t on; returns the cycle the
- * transfer ends (latency not included). */
-uint64_t fs_cyc_mem_reserve(fs_cyc_mem *m, uint64_t t, uint64_t bytes);
+/* ---- the observer (cycle_observer.c) ---- */
+/* The current draw's record (fs_cycle_set_record_fn); an estimated draw's
+ * is its estimate alone. */
+void fs_cyc_emit_draw(fs_cycle *cy, bool estimated, uint64_t cycles);
+
+/* ---- the sampling estimator (cycle_sampling.c) ---- */
+/* The tile sample's per-screen tables, once it and the screen are known. */
+void fs_cyc_tile_tables_alloc(fs_cycle *cy);
+/* A draw begins: -1 when it is simulated, else it is estimated and the
+ * answer is fs_cycle_draw's (1: filled in the sampled tiles, 0: skipped). */
+int fs_cyc_sample_draw(fs_cycle *cy, const fs_context *c, GLenum mode, size_t n);
+/* Times the current tile-sampled triangle (tri_est) as its estimated quads. */
+void fs_cyc_spread_triangle(fs_cycle *cy);
+/* A sampled quad of a spread (or, fill, a filled draw's) triangle into the
+ * cost pools; n fragments, of which `reaching` reached the tests. */
+void fs_cyc_sample_quad(fs_cycle *cy, fs_context *c, const fs_quad *q, unsigned n, unsigned reaching,
+                        unsigned passed, unsigned written, bool fill);
+/* How many quads a lumped quad of tile sampling stands for (the ratio
+ * estimator), and its unscaled work w at its tile (the error estimate). */
+double fs_cyc_lump_factor(fs_cycle *cy);
+void fs_cyc_tile_work_add(fs_cycle *cy, const fs_quad *q, double w);
+/* The frame's estimated draws, charged at its end; then the frame's error
+ * and, with frame sampling, its cycles kept for fs_cycle_finish. */
+void fs_cyc_charge_estimated_draws(fs_cycle *cy);
+void fs_cyc_sample_frame_end(fs_cycle *cy, uint64_t frame_cycles);
+/* Whether frame f is simulated under frame sampling. */
+bool fs_cyc_frame_simulated(const fs_cycle *cy, uint64_t f);
 
 /* ---- per-unit service times ---- */
 uint64_t fs_cyc_front_end_per_triangle(const fs_config *cfg, GLenum mode, size_t n); /* 1/256 cycles */
