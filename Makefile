@@ -41,8 +41,13 @@ SHIM := $(BUILD)/libfragsimGL.so
 SHIM_LIBS = $(shell pkg-config --libs snappy zlib inih 2>/dev/null || echo -lsnappy -lz -linih)
 LIB := $(BUILD)/libfragsim.a
 FRAGSIM := $(BUILD)/fragsim
-# Link the archive whole so that every executor overrides its weak fallback.
-WHOLE_LIB = -Wl,--whole-archive $(LIB) -Wl,--no-whole-archive
+# One static library per layer (docs/architecture.md, "Layers";
+# tests/cli_layers.sh checks the includes), linked from the top layer down:
+# driver/, rtl_model/, then pipeline/ and units/.  libfragsim.a holds all
+# of them in one, for the scripts that link it by hand (fuzz.sh, sweep_study.sh).
+LAYER_LIBS := $(BUILD)/libfragsim_driver.a $(BUILD)/libfragsim_rtl.a $(BUILD)/libfragsim_core.a
+# Link the archives whole so that every executor overrides its weak fallback.
+WHOLE_LIB = -Wl,--whole-archive $(LAYER_LIBS) -Wl,--no-whole-archive
 
 .PHONY: all deps test run sanitize fuzz bench golden docs clean scenes tests shim study-filters
 .PHONY: studies study-occlusion study-query-cost study-texture-cache
@@ -63,9 +68,16 @@ $(BUILD)/pic/%.o: %.c
 	@mkdir -p $(dir $@)
 	$(CC) $(CFLAGS) -fPIC -fvisibility=hidden -MMD -MP -c $< -o $@
 
-$(LIB): $(LIB_OBJS)
+$(BUILD)/libfragsim_core.a: $(filter $(BUILD)/pipeline/% $(BUILD)/units/%,$(LIB_OBJS))
+$(BUILD)/libfragsim_rtl.a: $(filter $(BUILD)/rtl_model/%,$(LIB_OBJS))
+$(BUILD)/libfragsim_driver.a: $(filter $(BUILD)/driver/%,$(LIB_OBJS))
+$(LAYER_LIBS):
 	@mkdir -p $(dir $@)
 	rm -f $@ && ar rcs $@ $^
+
+$(LIB): $(LIB_OBJS) $(LAYER_LIBS)
+	@mkdir -p $(dir $@)
+	rm -f $@ && ar rcs $@ $(LIB_OBJS)
 
 $(FRAGSIM): $(CLI_OBJS) $(LIB)
 	$(CXX) $(LDFLAGS) -o $@ $(CLI_OBJS) $(WHOLE_LIB) $(PKG_LIBS) $(OIIO_LIBS) -lm
