@@ -81,11 +81,12 @@ static inline void occlusion_point(fs_context *c, const fs_quad *q, unsigned tes
     c->stats.fragments_passed_depth += fs_popcount4(passed);
 }
 
-void fs_fragment_quad_general(fs_context *c, fs_quad *q)
+fs_quad_work fs_fragment_quad_general(fs_context *c, fs_quad *q)
 {
     const fs_fragment_state *f = &c->frag;
     fs_framebuffer *fb = &c->fb;
     unsigned m = q->mask & 0xfu, n;
+    fs_quad_work w = {0, 0, 0};
 
     n = ownership_mask(c, q->x, q->y, m);
     c->stats.killed_ownership += fs_popcount4(m & ~n);
@@ -100,8 +101,9 @@ void fs_fragment_quad_general(fs_context *c, fs_quad *q)
         c->stats.killed_alpha += fs_popcount4(m & ~n);
         m = n;
     }
+    w.killed_early = fs_popcount4((q->mask & 0xfu) & ~m);
     if (!m)
-        return;
+        return w;
 
     size_t idx[4];
     for (int i = 0; i < 4; i++)
@@ -110,12 +112,14 @@ void fs_fragment_quad_general(fs_context *c, fs_quad *q)
     unsigned tested;
     unsigned passed = fs_stencil_depth_quad(c, q, m, idx, &tested);
     occlusion_point(c, q, tested, passed);
+    w.passed = fs_popcount4(passed);
     if (f->suppress_writes)
-        return;
+        return w;
+    w.written = w.passed;
     if (c->draw_buffer == GL_NONE) {
         /* glDrawBuffer(GL_NONE): no colour buffer is written (4.2.1). */
-        c->stats.fragments_written += fs_popcount4(passed);
-        return;
+        c->stats.fragments_written += w.written;
+        return w;
     }
 
     /* Dithering (4.1.9) is enabled by default but llvmpipe does not dither
@@ -141,12 +145,13 @@ void fs_fragment_quad_general(fs_context *c, fs_quad *q)
         else
             fs_masked_color_write(c, p, out);
     }
-    c->stats.fragments_written += fs_popcount4(passed);
+    c->stats.fragments_written += w.written;
+    return w;
 }
 
 /* Depth test LESS/LEQUAL with depth writes, everything else off: the state
  * of most opaque 3D drawing. */
-static void quad_depth_write(fs_context *c, const fs_quad *q, unsigned m, bool lequal)
+static fs_quad_work quad_depth_write(fs_context *c, const fs_quad *q, unsigned m, bool lequal)
 {
     fs_framebuffer *fb = &c->fb;
     size_t w = (size_t)fb->width;
@@ -168,10 +173,11 @@ static void quad_depth_write(fs_context *c, const fs_quad *q, unsigned m, bool l
     c->stats.killed_depth += fs_popcount4(m) - np;
     occlusion_point(c, q, m, passed);
     c->stats.fragments_written += np;
+    return (fs_quad_work){0, np, np};
 }
 
 /* No tests at all: plain overwrite (2D, clears drawn as quads). */
-static void quad_plain(fs_context *c, const fs_quad *q, unsigned m)
+static fs_quad_work quad_plain(fs_context *c, const fs_quad *q, unsigned m)
 {
     fs_framebuffer *fb = &c->fb;
     size_t w = (size_t)fb->width;
@@ -181,28 +187,26 @@ static void quad_plain(fs_context *c, const fs_quad *q, unsigned m)
             store_rgba8(fb->color + (base + (size_t)(i >> 1) * w + (size_t)(i & 1)) * 4, q->color[i]);
     }
     occlusion_point(c, q, m, m);
-    c->stats.fragments_written += fs_popcount4(m);
+    unsigned n = fs_popcount4(m);
+    c->stats.fragments_written += n;
+    return (fs_quad_work){0, n, n};
 }
 
-void fs_fragment_quad(fs_context *c, fs_quad *q)
+fs_quad_work fs_fragment_quad(fs_context *c, fs_quad *q)
 {
     const fs_fragment_state *f = &c->frag;
     unsigned m = q->mask & 0xfu;
     if (!m)
-        return;
+        return (fs_quad_work){0, 0, 0};
     bool simple = !f->suppress_writes && c->draw_buffer != GL_NONE && !f->scissor_enabled && !f->alpha_enabled && !f->stencil_enabled &&
                   !f->blend_enabled && !f->logic_op_enabled &&
                   f->color_mask[0] && f->color_mask[1] && f->color_mask[2] && f->color_mask[3];
     int qx = q->x, qy = q->y;
     if (simple && qx >= 0 && qy >= 0 && qx + 1 < c->fb.width && qy + 1 < c->fb.height) {
-        if (!f->depth_enabled) {
-            quad_plain(c, q, m);
-            return;
-        }
-        if (f->depth_write && (f->depth_func == GL_LESS || f->depth_func == GL_LEQUAL)) {
-            quad_depth_write(c, q, m, f->depth_func == GL_LEQUAL);
-            return;
-        }
+        if (!f->depth_enabled)
+            return quad_plain(c, q, m);
+        if (f->depth_write && (f->depth_func == GL_LESS || f->depth_func == GL_LEQUAL))
+            return quad_depth_write(c, q, m, f->depth_func == GL_LEQUAL);
     }
-    fs_fragment_quad_general(c, q);
+    return fs_fragment_quad_general(c, q);
 }

@@ -53,8 +53,18 @@ typedef struct fs_fragment_state {
 
 void fs_fragment_state_init(fs_fragment_state *f);
 
-/* Runs the per-fragment operations on a quad and writes the survivors. */
-void fs_fragment_quad(fs_context *c, fs_quad *q);
+/* What the per-fragment operations did to one quad, for the observers (the
+ * cycle model) to take instead of diffing the statistics: fragments
+ * discarded before the stencil and depth tests (pixel ownership, scissor,
+ * alpha test), fragments that passed every test (what GL_SAMPLES_PASSED
+ * counts), fragments written. */
+typedef struct fs_quad_work {
+    unsigned killed_early, passed, written;
+} fs_quad_work;
+
+/* Runs the per-fragment operations on a quad and writes the survivors;
+ * returns what they did. */
+fs_quad_work fs_fragment_quad(fs_context *c, fs_quad *q);
 
 /*
  * Occlusion Unit attachment point (issue 3): called right after the depth

@@ -31,7 +31,7 @@ static inline unsigned fs_popcount4(unsigned m)
 }
 
 /* fragment_ops.c: the stage-by-stage path every fast path must match. */
-void fs_fragment_quad_general(fs_context *c, fs_quad *q);
+fs_quad_work fs_fragment_quad_general(fs_context *c, fs_quad *q);
 
 /* scissor.c: the mask of quad pixels inside the scissor box. */
 unsigned fs_scissor_quad(const fs_context *c, int qx, int qy, unsigned mask);

@@ -223,18 +223,18 @@ void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
         emit_pixels_fma(s, q, m, c->fb.depth_bits, c->raster.tex_pair_lod);
         if (s->use_tex)
             fs_texture_quad(c, q); /* texturing (GL 1.5 spec 3.8) precedes 4.1 */
-        fs_fragment_quad(c, q);
+        fs_quad_work w = fs_fragment_quad(c, q);
         if (c->cycle)
-            fs_cycle_quad(c->cycle, c, q);
+            fs_cycle_quad(c->cycle, c, q, &w);
         return;
     }
 #endif
     emit_pixels(s, q, m, c->fb.depth_bits, c->raster.tex_pair_lod);
     if (s->use_tex)
         fs_texture_quad(c, q);
-    fs_fragment_quad(c, q);
+    fs_quad_work w = fs_fragment_quad(c, q);
     if (c->cycle)
-        fs_cycle_quad(c->cycle, c, q);
+        fs_cycle_quad(c->cycle, c, q, &w);
 }
 
 /* ---- generic plane regions (lines, points) ---- */

@@ -91,8 +91,6 @@ struct fs_cycle {
     uint64_t tri_arrival;
     bool tri_started, tri_open;
 
-    /* functional counters at the last quad (deltas give the quad's outcome) */
-    uint64_t last_written, last_passed, last_early;
     /* texture work of the quad being processed */
     bool tex_pending;
     uint64_t tex_service, tex_bytes, tex_misses;

@@ -129,8 +129,10 @@ static inline bool fs_cycle_quad_skipped(const fs_cycle *cy, int x, int y)
 /* Tile sampling: a triangle of `area` pixels whose bounding box is centred
  * at window (x, y) is about to be rasterized in the sampled tiles only. */
 void fs_cycle_triangle_area(fs_cycle *cy, double area, int x, int y);
-/* A quad after the per-fragment operations ran on it. */
-void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q);
+/* A quad after the per-fragment operations ran on it, with their record of
+ * what they did (pipeline/fragment_ops.h). */
+struct fs_quad_work;
+void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q, const struct fs_quad_work *w);
 /* The texture unit sampled quad q: levels (level1 < 0: one level), filter
  * (GL_NEAREST or GL_LINEAR) and the pixels' s, t (divided by q). */
 void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, int level0, int level1, GLenum filter,

@@ -169,12 +169,9 @@ void fs_cycle_destroy(fs_cycle *cy)
     free(cy);
 }
 
-static void resync_counters(fs_cycle *cy, const fs_context *c);
-
 void fs_cycle_attach(fs_cycle *cy, fs_context *c)
 {
     c->cycle = cy;
-    resync_counters(cy, c);
     cy->fb_width = c->fb.width;
     cy->fb_height = c->fb.height;
     fs_cyc_tile_tables_alloc(cy);
@@ -294,19 +291,9 @@ static void close_draw(fs_cycle *cy)
     cy->draw_index++;
 }
 
-static void resync_counters(fs_cycle *cy, const fs_context *c)
-{
-    cy->last_written = c->stats.fragments_written;
-    cy->last_passed = c->stats.fragments_passed_depth;
-    cy->last_early = c->stats.killed_ownership + c->stats.killed_scissor + c->stats.killed_alpha;
-}
-
 bool fs_cycle_draw(fs_cycle *cy, fs_context *c, GLenum mode, size_t n)
 {
     close_draw(cy);
-    /* The driver may reset the per-frame counters between draws: quads
-     * take their outcome as differences from here. */
-    resync_counters(cy, c);
     if (!cy->occu_hooked && c->occlusion)
         fs_cyc_occlusion_hook(cy, c);
     cy->draw_mode = mode;
@@ -360,19 +347,12 @@ void fs_cycle_triangle(fs_cycle *cy)
 
 /* ---- quads ---- */
 
-void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q)
+void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q, const fs_quad_work *w)
 {
     unsigned m = q->mask & 0xfu;
     unsigned n = (unsigned)((0x4332322132212110ull >> (4 * m)) & 0xfu);
-    const fs_stats *fst = &c->stats;
-    uint64_t early = fst->killed_ownership + fst->killed_scissor + fst->killed_alpha;
-    unsigned written = (unsigned)(fst->fragments_written - cy->last_written);
-    unsigned passed = (unsigned)(fst->fragments_passed_depth - cy->last_passed);
-    unsigned killed = (unsigned)(early - cy->last_early);
-    unsigned reaching = n > killed ? n - killed : 0;
-    cy->last_written = fst->fragments_written;
-    cy->last_passed = fst->fragments_passed_depth;
-    cy->last_early = early;
+    unsigned written = w->written, passed = w->passed;
+    unsigned reaching = n > w->killed_early ? n - w->killed_early : 0;
     if (cy->tiles.fill) {
         /* A filled estimated draw: its sampled quads keep the cost pools
          * (and the texture cache) current for the simulated draws after

@@ -1380,6 +1380,51 @@ TEST(fast_paths_equal_general)
     fs_context_destroy(b);
 }
 
+/* The record fs_fragment_quad returns for the observers (the cycle model)
+ * holds what the stages counted for that quad: the fragments the pixel
+ * ownership, scissor and alpha tests discarded, those that passed every
+ * test, those written; on the fast paths and the general one, also with
+ * writes suppressed (occlusion modes) and with glDrawBuffer(GL_NONE). */
+static bool work_matches(fs_context *c, fs_quad *q, bool general)
+{
+    fs_stats before = c->stats;
+    fs_quad_work w = general ? fs_fragment_quad_general(c, q) : fs_fragment_quad(c, q);
+    const fs_stats *a = &c->stats;
+    uint64_t early = (a->killed_ownership - before.killed_ownership) + (a->killed_scissor - before.killed_scissor) +
+                     (a->killed_alpha - before.killed_alpha);
+    return w.killed_early == early && w.passed == a->fragments_passed_depth - before.fragments_passed_depth &&
+           w.written == a->fragments_written - before.fragments_written;
+}
+
+TEST(quad_work_record_matches_counters)
+{
+    enum { FW = 20, FH = 14 };
+    fs_context *c = fs_context_create(NULL, FW, FH);
+    REQUIRE(c);
+    const GLenum draw_buffer = c->draw_buffer;
+    uint32_t seed = 777;
+    long bad = 0, quads = 0;
+    for (int round = 0; round < 120; round++) {
+        scene_state s;
+        random_state(&s, &seed, FW, FH);
+        if (round % 3 == 0) { /* the fast paths' states */
+            s.stencil = s.alpha = s.blend = s.logic = s.scissor = false;
+            s.cmask[0] = s.cmask[1] = s.cmask[2] = s.cmask[3] = 1;
+        }
+        apply_fragsim(c, &s);
+        c->frag.suppress_writes = round % 7 == 5;
+        c->draw_buffer = round % 11 == 4 ? GL_NONE : draw_buffer;
+        for (int i = 0; i < 100; i++, quads++) {
+            fs_quad q;
+            random_quad(&q, &seed, FW, FH);
+            bad += !work_matches(c, &q, i & 1);
+        }
+    }
+    CHECK_EQ_INT(bad, 0);
+    CHECK(c->stats.fragments_written > 1000 && c->stats.killed_ownership > 0 && quads == 12000);
+    fs_context_destroy(c);
+}
+
 TEST_LIST = {
     TEST_ENTRY(color_conversion_vs_osmesa),
     TEST_ENTRY(blend_all_factor_pairs_vs_osmesa),
@@ -1400,6 +1445,7 @@ TEST_LIST = {
     TEST_ENTRY(fragment_state_defaults),
     TEST_ENTRY(occlusion_hook),
     TEST_ENTRY(fast_paths_equal_general),
+    TEST_ENTRY(quad_work_record_matches_counters),
     TEST_END,
 };
 

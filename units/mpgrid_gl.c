@@ -413,13 +413,20 @@ bool fs_mpgrid_gl_complete(fs_tex_object *t)
     return ok;
 }
 
-const uint8_t *fs_mpgrid_gl_texel(const fs_tex_object *t, int level, int x, int y, uint8_t tmp[4])
+const uint8_t *fs_mpgrid_gl_texel(struct fs_mpgrid_tex *g, fs_mpgrid_work *w, int level, int x, int y,
+                                  uint8_t tmp[4])
 {
-    struct fs_mpgrid_tex *g = t->mpgrid;
     uint64_t r0 = g->ctr.reloads, th0 = g->ctr.thrashing, s0 = g->ctr.substitutions;
     fs_mpgrid_fetch(&g->grid, &g->ctr, level, x, y, tmp);
-    g->stats->mpgrid_ctr_reloads += g->ctr.reloads - r0;
-    g->stats->mpgrid_pointer_thrashing += g->ctr.thrashing - th0;
-    g->stats->mpgrid_substitutions += g->ctr.substitutions - s0;
+    w->reloads += g->ctr.reloads - r0;
+    w->thrashing += g->ctr.thrashing - th0;
+    w->substitutions += g->ctr.substitutions - s0;
     return tmp;
+}
+
+void fs_mpgrid_gl_work_done(struct fs_mpgrid_tex *g, const fs_mpgrid_work *w)
+{
+    g->stats->mpgrid_ctr_reloads += w->reloads;
+    g->stats->mpgrid_pointer_thrashing += w->thrashing;
+    g->stats->mpgrid_substitutions += w->substitutions;
 }

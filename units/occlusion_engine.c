@@ -18,15 +18,19 @@ void fs_occe_tile_reset(fs_occu_tile *t)
 }
 
 unsigned fs_occe_fragment(fs_occu_engine *e, fs_occu_tile *tiles, int ntiles, int stride,
-                          uint32_t cmax, int x, int y, uint32_t z, bool passed, int *hit_tiles)
+                          uint32_t cmax, int x, int y, uint32_t z, bool passed, int *hit_tiles,
+                          uint64_t *projection_hits)
 {
     unsigned nhits = 0;
+    uint64_t ph = 0;
     e->fragments++;
     for (int t = e->index; t < ntiles; t += stride) {
         e->tile_tests++;
-        if (fs_occe_tile_fragment(&tiles[t], cmax, x, y, z, passed, &e->projection_hits))
+        if (fs_occe_tile_fragment(&tiles[t], cmax, x, y, z, passed, &ph))
             hit_tiles[nhits++] = t;
     }
     e->hits += nhits;
+    e->projection_hits += ph;
+    *projection_hits = ph;
     return nhits;
 }

@@ -79,7 +79,9 @@ static inline bool fs_occe_tile_fragment(fs_occu_tile *t, uint32_t cmax, int x, 
  * tile it owns, tiles e, e + stride, e + 2*stride, ... of tiles[0..ntiles)
  * (round-robin assignment, 3.3), in that order.  The indices of the tiles
  * that recorded a hit are written to hit_tiles (room for every owned tile);
- * returns how many. */
+ * returns how many, and the fragment's PHC increments in *projection_hits
+ * (the engine's own totals count them too). */
 unsigned fs_occe_fragment(fs_occu_engine *e, fs_occu_tile *tiles, int ntiles, int stride,
-                          uint32_t cmax, int x, int y, uint32_t z, bool passed, int *hit_tiles);
+                          uint32_t cmax, int x, int y, uint32_t z, bool passed, int *hit_tiles,
+                          uint64_t *projection_hits);
 #endif

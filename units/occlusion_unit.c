@@ -131,8 +131,8 @@ void fs_occu_quad(fs_occu *u, const fs_quad *q, unsigned tested, unsigned passed
         bool pass = (passed >> i & 1u) != 0;
         for (int e = 0; e < ne; e++) {
             fs_occu_engine *eng = &u->engines[e];
-            uint64_t phc0 = eng->projection_hits;
-            unsigned nh = fs_occe_fragment(eng, u->tiles, n, ne, u->counter_max, x, y, z, pass, u->hit_scratch);
+            uint64_t ph;
+            unsigned nh = fs_occe_fragment(eng, u->tiles, n, ne, u->counter_max, x, y, z, pass, u->hit_scratch, &ph);
             if (u->hooks.engine_fragment)
                 u->hooks.engine_fragment(u->hooks.user, e, x, y, (unsigned)eng->ntiles, nh);
             if (u->verbose)
@@ -140,7 +140,7 @@ void fs_occu_quad(fs_occu *u, const fs_quad *q, unsigned tested, unsigned passed
                     control_write(u, e, u->hit_scratch[h], x, y, stats);
             if (stats) {
                 stats->occlusion_hits += nh;
-                stats->occlusion_projection_hits += eng->projection_hits - phc0;
+                stats->occlusion_projection_hits += ph;
             }
         }
         if (stats) {

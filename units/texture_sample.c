@@ -160,22 +160,31 @@ static inline int wrap_nearest(int x, int len, GLenum wrap)
     return x < 0 ? 0 : x > len - 1 ? len - 1 : x;
 }
 
-/* Address of texel (x, y) of a level.  GL_FRAGSIM_mp_grid: an MP-Grid
- * object has no texels of its own; they come through its CTR and pointer
- * table (units/mpgrid_gl.h) into tmp. */
-static inline const uint8_t *texel_at(const fs_tex_object *t, const fs_tex_image *img, int x, int y, uint8_t tmp[4])
+/* The texel reads of one quad: the object, read only, and for an MP-Grid
+ * object its CTR, the one state a texel read changes (GL_FRAGSIM_mp_grid:
+ * texels come through the CTR and pointer table, units/mpgrid_gl.h), with
+ * the record of what the reads did to it (mpgrid NULL otherwise). */
+typedef struct tex_fetch {
+    const fs_tex_object *t;
+    struct fs_mpgrid_tex *mpgrid;
+    fs_mpgrid_work work;
+} tex_fetch;
+
+/* Address of texel (x, y) of a level (an MP-Grid's comes into tmp). */
+static inline const uint8_t *texel_at(tex_fetch *f, const fs_tex_image *img, int x, int y, uint8_t tmp[4])
 {
-    if (t->mpgrid)
-        return fs_mpgrid_gl_texel(t, (int)(img - t->level), x, y, tmp);
+    if (f->mpgrid)
+        return fs_mpgrid_gl_texel(f->mpgrid, &f->work, (int)(img - f->t->level), x, y, tmp);
     return img->texels + ((size_t)y * (size_t)img->width + (size_t)x) * 4;
 }
 
-static void sample_nearest8(const fs_tex_object *t, const fs_tex_image *img, float s, float tt, uint8_t out[4])
+static void sample_nearest8(tex_fetch *f, const fs_tex_image *img, float s, float tt, uint8_t out[4])
 {
+    const fs_tex_object *t = f->t;
     int x = wrap_nearest(to_int_floor(s * (float)img->width), img->width, t->wrap_s);
     int y = wrap_nearest(to_int_floor(tt * (float)img->height), img->height, t->wrap_t);
     uint8_t tmp[4];
-    memcpy(out, texel_at(t, img, x, y, tmp), 4);
+    memcpy(out, texel_at(f, img, x, y, tmp), 4);
 }
 
 static void linear_coord8(float s, int len, GLenum wrap, int *i0, int *i1, int *frac)
@@ -194,14 +203,15 @@ static void linear_coord8(float s, int len, GLenum wrap, int *i0, int *i1, int *
     }
 }
 
-static void sample_linear8(const fs_tex_object *t, const fs_tex_image *img, float s, float tt, uint8_t out[4])
+static void sample_linear8(tex_fetch *f, const fs_tex_image *img, float s, float tt, uint8_t out[4])
 {
+    const fs_tex_object *t = f->t;
     int x0, x1, y0, y1, fx, fy;
     linear_coord8(s, img->width, t->wrap_s, &x0, &x1, &fx);
     linear_coord8(tt, img->height, t->wrap_t, &y0, &y1, &fy);
     uint8_t m00[4], m10[4], m01[4], m11[4];
-    const uint8_t *t00 = texel_at(t, img, x0, y0, m00), *t10 = texel_at(t, img, x1, y0, m10);
-    const uint8_t *t01 = texel_at(t, img, x0, y1, m01), *t11 = texel_at(t, img, x1, y1, m11);
+    const uint8_t *t00 = texel_at(f, img, x0, y0, m00), *t10 = texel_at(f, img, x1, y0, m10);
+    const uint8_t *t01 = texel_at(f, img, x0, y1, m01), *t11 = texel_at(f, img, x1, y1, m11);
     for (int k = 0; k < 4; k++) {
         int a = lerp8(fx, t00[k], t10[k]);
         int b = lerp8(fx, t01[k], t11[k]);
@@ -209,18 +219,20 @@ static void sample_linear8(const fs_tex_object *t, const fs_tex_image *img, floa
     }
 }
 
-static void sample_level8(const fs_tex_object *t, int level, GLenum filter, float s, float tt, uint8_t out[4])
+static void sample_level8(tex_fetch *f, int level, GLenum filter, float s, float tt, uint8_t out[4])
 {
+    const fs_tex_object *t = f->t;
     if (filter == GL_NEAREST)
-        sample_nearest8(t, &t->level[level], s, tt, out);
+        sample_nearest8(f, &t->level[level], s, tt, out);
     else
-        sample_linear8(t, &t->level[level], s, tt, out);
+        sample_linear8(f, &t->level[level], s, tt, out);
 }
 
 /* ---- float filtering with a border (llvmpipe's SoA path for GL_CLAMP) ---- */
 
-static void fetch_f(const fs_tex_object *t, const fs_tex_image *img, int x, int y, float out[4])
+static void fetch_f(tex_fetch *f, const fs_tex_image *img, int x, int y, float out[4])
 {
+    const fs_tex_object *t = f->t;
     if (x < 0 || y < 0 || x >= img->width || y >= img->height) {
         /* 3.8.7: the border colour is taken as a texel of the image's base
          * format, expanded like the stored texels (texture_priv.h), as
@@ -237,7 +249,7 @@ static void fetch_f(const fs_tex_object *t, const fs_tex_image *img, int x, int 
         return;
     }
     uint8_t tmp[4];
-    const uint8_t *p = texel_at(t, img, x, y, tmp);
+    const uint8_t *p = texel_at(f, img, x, y, tmp);
     for (int k = 0; k < 4; k++)
         out[k] = (float)p[k] * (1.0f / 255.0f);
 }
@@ -280,24 +292,25 @@ static void linear_coord_f(float s, int len, GLenum wrap, int *i0, int *i1, floa
 
 static inline float lerpf(float w, float a, float b) { return a + w * (b - a); }
 
-static void sample_level_f(const fs_tex_object *t, int level, GLenum filter, float s, float tt, float out[4])
+static void sample_level_f(tex_fetch *f, int level, GLenum filter, float s, float tt, float out[4])
 {
+    const fs_tex_object *t = f->t;
     const fs_tex_image *img = &t->level[level];
     if (filter == GL_NEAREST) {
         int x = to_int_floor(s * (float)img->width), y = to_int_floor(tt * (float)img->height);
         x = t->wrap_s == GL_REPEAT ? x & (img->width - 1) : x < 0 ? 0 : x >= img->width ? img->width - 1 : x;
         y = t->wrap_t == GL_REPEAT ? y & (img->height - 1) : y < 0 ? 0 : y >= img->height ? img->height - 1 : y;
-        fetch_f(t, img, x, y, out);
+        fetch_f(f, img, x, y, out);
         return;
     }
     int x0, x1, y0, y1;
     float fx, fy, a[4], b[4], cc[4], d[4];
     linear_coord_f(s, img->width, t->wrap_s, &x0, &x1, &fx);
     linear_coord_f(tt, img->height, t->wrap_t, &y0, &y1, &fy);
-    fetch_f(t, img, x0, y0, a);
-    fetch_f(t, img, x1, y0, b);
-    fetch_f(t, img, x0, y1, cc);
-    fetch_f(t, img, x1, y1, d);
+    fetch_f(f, img, x0, y0, a);
+    fetch_f(f, img, x1, y0, b);
+    fetch_f(f, img, x0, y1, cc);
+    fetch_f(f, img, x1, y1, d);
     for (int k = 0; k < 4; k++)
         out[k] = lerpf(fy, lerpf(fx, a[k], b[k]), lerpf(fx, cc[k], d[k]));
 }
@@ -307,23 +320,24 @@ static void sample_level_f(const fs_tex_object *t, int level, GLenum filter, flo
  * LINEAR texel pair with the weight rounded to 0 or 1 (a fraction of
  * exactly 0.5 keeps the first texel), so GL_CLAMP below 0 reaches the
  * border. */
-static void sample_nearest_via_linear_f(const fs_tex_object *t, int level, float s, float tt, float out[4])
+static void sample_nearest_via_linear_f(tex_fetch *f, int level, float s, float tt, float out[4])
 {
+    const fs_tex_object *t = f->t;
     const fs_tex_image *img = &t->level[level];
     int x0, x1, y0, y1;
     float fx, fy;
     linear_coord_f(s, img->width, t->wrap_s, &x0, &x1, &fx);
     linear_coord_f(tt, img->height, t->wrap_t, &y0, &y1, &fy);
-    fetch_f(t, img, fx > 0.5f ? x1 : x0, fy > 0.5f ? y1 : y0, out);
+    fetch_f(f, img, fx > 0.5f ? x1 : x0, fy > 0.5f ? y1 : y0, out);
 }
 
-static void sample_level_fv(const fs_tex_object *t, int level, GLenum filter, bool via_linear, float s, float tt,
+static void sample_level_fv(tex_fetch *f, int level, GLenum filter, bool via_linear, float s, float tt,
                             float out[4])
 {
     if (via_linear && filter == GL_NEAREST)
-        sample_nearest_via_linear_f(t, level, s, tt, out);
+        sample_nearest_via_linear_f(f, level, s, tt, out);
     else
-        sample_level_f(t, level, filter, s, tt, out);
+        sample_level_f(f, level, filter, s, tt, out);
 }
 
 /* ---- texture environment (3.8.13, tables 3.22 and 3.23) ---- */
@@ -516,7 +530,7 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
         via_linear = other.minified == min_linear;
     }
     GLenum base = t->level[0].base_format;
-    uint64_t reloads0 = c->stats.mpgrid_ctr_reloads; /* MP-Grid CTR reloads of this quad, for the cycle model */
+    tex_fetch f = {t, t->mpgrid, {0, 0, 0}};
     if (c->cycle)
         fs_cycle_texture(c->cycle, t, lr.level0, mip_linear && (float_path ? lr.weightf > 0.0f : lr.weight8 > 0) ? lr.level1 : -1, img_filter, q, s, tt);
     for (int i = 0; i < 4; i++) {
@@ -524,19 +538,19 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
             continue;
         float tex[4];
         if (float_path) {
-            sample_level_fv(t, lr.level0, img_filter, via_linear, s[i], tt[i], tex);
+            sample_level_fv(&f, lr.level0, img_filter, via_linear, s[i], tt[i], tex);
             if (mip_linear && lr.weightf > 0.0f) {
                 float t1[4];
-                sample_level_fv(t, lr.level1, img_filter, via_linear, s[i], tt[i], t1);
+                sample_level_fv(&f, lr.level1, img_filter, via_linear, s[i], tt[i], t1);
                 for (int k = 0; k < 4; k++)
                     tex[k] = lerpf(lr.weightf, tex[k], t1[k]);
             }
         } else {
             uint8_t v[4];
-            sample_level8(t, lr.level0, img_filter, s[i], tt[i], v);
+            sample_level8(&f, lr.level0, img_filter, s[i], tt[i], v);
             if (mip_linear && lr.weight8 > 0) {
                 uint8_t v1[4];
-                sample_level8(t, lr.level1, img_filter, s[i], tt[i], v1);
+                sample_level8(&f, lr.level1, img_filter, s[i], tt[i], v1);
                 for (int k = 0; k < 4; k++)
                     v[k] = (uint8_t)lerp8(lr.weight8, v[k], v1[k]);
             }
@@ -545,8 +559,10 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
         }
         apply_env(st, base, tex, q->color[i]);
     }
-    if (c->cycle && c->stats.mpgrid_ctr_reloads != reloads0)
-        fs_cycle_ctr_reloads(c->cycle, c->stats.mpgrid_ctr_reloads - reloads0);
+    if (f.mpgrid)
+        fs_mpgrid_gl_work_done(f.mpgrid, &f.work);
+    if (c->cycle && f.work.reloads)
+        fs_cycle_ctr_reloads(c->cycle, f.work.reloads);
 }
 
 /* llvmpipe's 2x2 quads are aligned in its y-down frame (rasterizer_priv.h):
