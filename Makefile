@@ -5,7 +5,7 @@ CC ?= cc
 CXX ?= c++
 BUILD ?= build
 OPT ?= -O2
-PKGS_CORE := osmesa snappy zlib inih
+PKGS_CORE := osmesa snappy zlib inih jansson
 # -ffp-contract=off: every float operation rounds separately, as llvmpipe's
 # do, also in the functions built for FMA (clang would otherwise fuse a*b+c
 # there, and gcc outside strict ISO modes).
@@ -14,7 +14,7 @@ CFLAGS_BASE := -std=c11 -D_POSIX_C_SOURCE=200809L -g $(OPT) -Wall -Wextra -Werro
 CFLAGS += $(CFLAGS_BASE) $(SAN)
 CXXFLAGS += -std=c++17 -g $(OPT) -Wall -Wextra -Werror -ffp-contract=off $(SAN)
 LDFLAGS += $(SAN)
-PKG_LIBS = $(shell pkg-config --libs $(PKGS_CORE) 2>/dev/null || echo -lOSMesa -lsnappy -lz -linih)
+PKG_LIBS = $(shell pkg-config --libs $(PKGS_CORE) 2>/dev/null || echo -lOSMesa -lsnappy -lz -linih -ljansson)
 OIIO_LIBS = $(shell pkg-config --libs OpenImageIO 2>/dev/null || echo -lOpenImageIO -lOpenImageIO_Util)
 
 # The library core: C only, no OSMesa and no OpenImageIO.
@@ -38,7 +38,7 @@ SCENEGEN := $(BUILD)/scenegen
 SHIM_SRCS := $(wildcard driver/shim_*.c)
 PIC_OBJS := $(LIB_SRCS:%.c=$(BUILD)/pic/%.o) $(SHIM_SRCS:%.c=$(BUILD)/pic/%.o)
 SHIM := $(BUILD)/libfragsimGL.so
-SHIM_LIBS = $(shell pkg-config --libs snappy zlib inih 2>/dev/null || echo -lsnappy -lz -linih)
+SHIM_LIBS = $(shell pkg-config --libs snappy zlib inih jansson 2>/dev/null || echo -lsnappy -lz -linih -ljansson)
 LIB := $(BUILD)/libfragsim.a
 FRAGSIM := $(BUILD)/fragsim
 # One static library per layer (docs/architecture.md, "Layers";
@@ -50,7 +50,7 @@ LAYER_LIBS := $(BUILD)/libfragsim_driver.a $(BUILD)/libfragsim_rtl.a $(BUILD)/li
 WHOLE_LIB = -Wl,--whole-archive $(LAYER_LIBS) -Wl,--no-whole-archive
 
 .PHONY: all deps test run sanitize fuzz bench golden docs clean scenes tests shim study-filters
-.PHONY: studies study-occlusion study-query-cost study-texture-cache
+.PHONY: studies study-occlusion study-query-cost study-texture-cache conformance conformance-run
 all: $(LIB) $(FRAGSIM) tests scenes shim
 
 deps:
@@ -131,6 +131,16 @@ study-query-cost: deps all
 	@scripts/sweep_study.sh query_cost $(BUILD)
 study-texture-cache: deps all
 	@scripts/sweep_study.sh texture_cache $(BUILD)
+
+# The conformance corpus (tests/conformance/): piglit and program traces
+# replayed on the model and compared with references from glretrace and an
+# independent OSMesa replayer (generated into $(BUILD)/conformance, cached,
+# checked against the committed MD5s); rewrites docs/conformance.md.  Run by
+# `make test` (tests/cli_conformance.sh).
+conformance: deps all
+	@$(MAKE) -s --no-print-directory conformance-run
+conformance-run:
+	@xvfb-run -a -s '-screen 0 1280x1024x24' /usr/bin/python3 tests/conformance/run.py --build $(BUILD)
 
 # Reference pages generated from the config and statistics tables.
 docs: all

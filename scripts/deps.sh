@@ -3,7 +3,8 @@
 # prints the exact apt-get line.  Quiet when everything is there.
 set -e
 PKGS="build-essential pkg-config libosmesa6-dev libopenimageio-dev openimageio-tools \
-libsnappy-dev zlib1g-dev libinih-dev libcmocka-dev apitrace xvfb xauth mesa-utils gnuplot-nox parallel clang"
+libsnappy-dev zlib1g-dev libinih-dev libjansson-dev libcmocka-dev apitrace xvfb xauth mesa-utils gnuplot-nox parallel clang \
+python3 python3-opengl"
 missing=""
 for p in $PKGS; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

@@ -15,7 +15,10 @@ passed=0 failed=0 skipped=0 broken=()
 run_one() {
     local name=$1; shift
     local log="$TMP/$(basename "$name").log"
-    timeout "${TEST_TIMEOUT:-600}" "$@" >"$log" 2>&1
+    # The conformance corpus makes its references on a first run: 30 minutes.
+    local limit=${TEST_TIMEOUT:-600}
+    case "$name" in cli_conformance.sh) limit=${CONFORMANCE_TIMEOUT:-1800};; esac
+    timeout "$limit" "$@" >"$log" 2>&1
     local rc=$?
     local line
     line=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$log" | tail -n 1)

@@ -251,7 +251,20 @@ def check(t, args):
     r['fragsim_rc'] = rc
     r['errors'] = stats.get('totals', {}).get('gl_errors', 0)
     r['error_list'] = stats.get('errors', [])[:5]
-    r['unsupported'] = stats.get('unsupported', {})
+    # What fragsim did not execute: modelled-feature gaps, and calls it skipped
+    # as unknown or unsafe (queries of GL >= 3 that change nothing are left out
+    # of the list: glGetStringi, glGetFramebufferAttachmentParameteriv).
+    uns = dict(stats.get('unsupported', {}))
+    for name, v in stats.get('skipped_trace_calls', {}).items():
+        if isinstance(v, dict) and v.get('reason') in ('unknown', 'unsafe') and \
+                name not in ('glGetStringi', 'glGetFramebufferAttachmentParameteriv'):
+            uns[name] = v.get('count', 1)
+    r['unsupported'] = uns
+    r['fragsim_error'] = ''
+    if rc != 0:
+        with open(os.path.join(t.dir, 'fragsim.log'), errors='replace') as f:
+            lines = [x.strip() for x in f if x.startswith('fragsim:')]
+        r['fragsim_error'] = (lines[0] if lines else '').replace(t.path, os.path.basename(t.path))
     r['snapshots'] = len(snaps)
     r['refs'] = len(refs)
     r['ref_sources'] = sorted({s for _, s in refs.values()})
@@ -300,7 +313,7 @@ def auto_reason(r):
         names = sorted(r['unsupported'], key=lambda k: -r['unsupported'][k])
         parts.append('unsupported: ' + ', '.join(names[:6]) + (' ...' if len(names) > 6 else ''))
     if r['fragsim_rc'] != 0:
-        parts.append('fragsim exits with %d' % r['fragsim_rc'])
+        parts.append('fragsim exits with %d (%s)' % (r['fragsim_rc'], r['fragsim_error'][:160]))
     parts.append('%d of %d snapshots differ (worst %d pixels, first at call %s)'
                  % (r['refs'] - r['exact'], r['refs'], r['worst'], r['first_bad']))
     return '; '.join(parts)
