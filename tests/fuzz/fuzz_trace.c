@@ -79,7 +79,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     char err[512];
     /* A fixed small window: a trace's glViewport may ask for any size, and
      * the fuzzer should spend its time on calls, not on clearing pixels. */
-    fs_replay_opts ro = {NULL, 32, 32, 0};
+    fs_replay_opts ro = {.width = 32, .height = 32}; /* the rest as by default */
     fs_replayer *r = fs_replay_open(path, &ro, err, sizeof err);
     if (!r)
         return 0;
