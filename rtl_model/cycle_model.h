@@ -133,10 +133,10 @@ void fs_cycle_triangle_area(fs_cycle *cy, double area, int x, int y);
  * what they did (pipeline/fragment_ops.h). */
 struct fs_quad_work;
 void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q, const struct fs_quad_work *w);
-/* The texture unit sampled quad q: levels (level1 < 0: one level), filter
- * (GL_NEAREST or GL_LINEAR) and the pixels' s, t (divided by q). */
-void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, int level0, int level1, GLenum filter,
-                      const fs_quad *q, const float s[4], const float tt[4]);
+/* The texture unit sampled quad q of texture t and read the texels r
+ * lists (units/texture_reads.h). */
+struct fs_tex_reads;
+void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, const fs_quad *q, const struct fs_tex_reads *r);
 /* The texture unit filtered quad q's covered pixels with the fast-footprint
  * filter; out[i] (4 entries) is pixel i's result (the texel rectangles it read and its
  * weighting-ROM lookups, units/texture_filter.h). */

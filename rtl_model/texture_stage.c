@@ -7,10 +7,12 @@
  * texture memory (its bandwidth and latency; O2 prefetches texels, which
  * hides the latency but not the bandwidth).
  *
- * The filtered values come from the functional texture unit; this file only
- * needs the texel addresses, taken from each pixel's s, t at the level the
- * unit chose.  Addresses are synthetic and deterministic: texture name,
- * level offset, row-major RGBA8 texels.
+ * The filtered values and the texels read come from the functional texture
+ * unit: its record of each pixel's texels after wrapping and clamping
+ * (units/texture_reads.h; a GL_CLAMP border texel is the border colour and
+ * no memory read).  This file only lays them out in memory: synthetic,
+ * deterministic addresses from texture name, level offset, row-major RGBA8
+ * texels.
  *
  * The fast-footprint filter (units/footprint_filter.c) reports the texel
  * rectangles it read (its a x b arrays, or the 2x2 blocks of its bilinear
@@ -26,6 +28,7 @@
 #include "cycle_internal.h"
 #include "../units/texture_priv.h"
 #include "../units/texture_filter.h"
+#include "../units/texture_reads.h"
 
 static bool pow2(long v) { return v > 0 && (v & (v - 1)) == 0; }
 
@@ -87,30 +90,6 @@ static uint64_t level_base(const fs_tex_object *t, int level)
     return base;
 }
 
-/* Appends the addresses of one pixel's footprint at one level. */
-static unsigned footprint(const fs_tex_object *t, int level, bool linear, float s, float tt, uint64_t *a)
-{
-    uint64_t base = level_base(t, level);
-    const fs_tex_image *img = &t->level[level];
-    int w = img->width, h = img->height;
-    if (w <= 0 || h <= 0)
-        return 0;
-    float fs = s * (float)w, ft = tt * (float)h;
-    if (!(fabsf(fs) < 1e9f) || !(fabsf(ft) < 1e9f))
-        fs = ft = 0.0f; /* NaN or huge coordinates: any texel, the cost is the same */
-    if (!linear) {
-        int x = wrap((int)floorf(fs), w, t->wrap_s), y = wrap((int)floorf(ft), h, t->wrap_t);
-        a[0] = base + ((uint64_t)y * (uint64_t)w + (uint64_t)x) * 4u;
-        return 1;
-    }
-    int x0 = (int)floorf(fs - 0.5f), y0 = (int)floorf(ft - 0.5f);
-    int xs[2] = {wrap(x0, w, t->wrap_s), wrap(x0 + 1, w, t->wrap_s)};
-    int ys[2] = {wrap(y0, h, t->wrap_t), wrap(y0 + 1, h, t->wrap_t)};
-    for (int k = 0; k < 4; k++)
-        a[k] = base + ((uint64_t)ys[k >> 1] * (uint64_t)w + (uint64_t)xs[k & 1]) * 4u;
-    return 4;
-}
-
 /* After one quad's texel groups went through the cache (or straight to
  * memory when there is none): the bytes read from memory and the misses
  * since `before`, added to the run's counters; returns the bank-conflict
@@ -133,13 +112,10 @@ static uint64_t cache_settle(fs_cycle *cy, fs_tex_cache *cache, const fs_tex_cac
     return after.bank_conflicts - before->bank_conflicts;
 }
 
-void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, int level0, int level1, GLenum filter,
-                      const fs_quad *q, const float s[4], const float tt[4])
+void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, const fs_quad *q, const fs_tex_reads *r)
 {
     if (!cy->cfg.texture_present)
         return;
-    bool linear = filter == GL_LINEAR;
-    unsigned mask = q->mask;
     /* The texture unit of the board owning the quad's image engine. */
     int board = fs_cyc_route(cy, q->x, q->y) / (int)cy->cfg.fragment_image_engines;
     cy->u[FS_U_texture].st[board].latency = (uint32_t)cy->cfg.texture_latency; /* no ROM stage */
@@ -149,13 +125,19 @@ void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, int level0, i
     fs_tex_cache_stats before = {0};
     if (cache)
         fs_tex_cache_get_stats(cache, &before);
+    uint64_t base[FS_TEX_MAX_LEVELS];
+    int bases = 0; /* levels whose base is known */
     for (int i = 0; i < 4; i++) {
-        if (!(mask >> i & 1u))
+        unsigned n = r->n[i];
+        if (!n)
             continue;
-        uint64_t a[8];
-        unsigned n = footprint(t, level0, linear, s[i], tt[i], a);
-        if (level1 >= 0)
-            n += footprint(t, level1, linear, s[i], tt[i], a + n);
+        uint64_t a[FS_TEX_READS_MAX];
+        for (unsigned k = 0; k < n; k++) {
+            const struct fs_tex_read *e = &r->texel[i][k];
+            for (; bases <= e->level; bases++)
+                base[bases] = level_base(t, bases);
+            a[k] = base[e->level] + ((uint64_t)e->y * (uint64_t)t->level[e->level].width + (uint64_t)e->x) * 4u;
+        }
         texels += n;
         service += (n + M - 1) / M;
         if (cache)

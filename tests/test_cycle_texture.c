@@ -169,6 +169,16 @@ TEST(footprint_texels_brute_force)
 #define WN 64
 static float ndc(int px) { return 2.0f * (float)px / (float)WN - 1.0f; }
 
+/* Min and mag filter, wrap in s and t, and GL_TEXTURE_2D enabled. */
+static void filter_wrap_enable(fs_context *c, GLenum filter, GLenum wrap)
+{
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)filter);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, (GLint)filter);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, (GLint)wrap);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, (GLint)wrap);
+    fsglEnable(c, GL_TEXTURE_2D);
+}
+
 static fs_context *cycle_context(const fs_config *cfg, fs_cycle **cy)
 {
     fs_context *c = fs_context_create(cfg, WN, WN);
@@ -289,11 +299,7 @@ TEST(ctr_reload_cycles_brute_force)
                 for (int l = 0, sz = 32; sz >= 1; l++, sz /= 2)
                     fsglMPGridImage(c, GL_TEXTURE_2D, i, j, l, sz, sz, GL_RGBA, GL_UNSIGNED_BYTE, img);
         free(img);
-        fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        fsglEnable(c, GL_TEXTURE_2D);
+        filter_wrap_enable(c, GL_NEAREST, GL_CLAMP_TO_EDGE);
         fsglBegin(c, GL_POINTS);
         for (int r = 0; r < NROWS; r++) {
             int y = scan_rows[r][0], step = scan_rows[r][2] > scan_rows[r][1] ? 1 : -1;
@@ -314,6 +320,53 @@ TEST(ctr_reload_cycles_brute_force)
         fs_context_destroy(c);
     }
     CHECK_EQ_UINT(busy[1] - busy[0], brute * (uint64_t)cost[1]);
+}
+
+/* ---- the texels the unit reads: GL_CLAMP's border ---- */
+
+/* Texels read for a window-filling quad of a 4 x 4 GL_CLAMP texture,
+ * GL_LINEAR, texture coordinates s = t from lo to hi (magnified). */
+static uint64_t clamp_texels(float lo, float hi)
+{
+    fs_config cfg;
+    fs_config_defaults(&cfg);
+    fs_cycle *cy;
+    fs_context *c = cycle_context(&cfg, &cy);
+    if (!c)
+        return 0;
+    fsglBindTexture(c, GL_TEXTURE_2D, 1);
+    upload_mipmaps(c, 4, 4, 5);
+    filter_wrap_enable(c, GL_LINEAR, GL_CLAMP);
+    fsglBegin(c, GL_QUADS);
+    fsglTexCoord2f(c, lo, lo);
+    fsglVertex2f(c, -1, -1);
+    fsglTexCoord2f(c, hi, lo);
+    fsglVertex2f(c, 1, -1);
+    fsglTexCoord2f(c, hi, hi);
+    fsglVertex2f(c, 1, 1);
+    fsglTexCoord2f(c, lo, hi);
+    fsglVertex2f(c, -1, 1);
+    fsglEnd(c);
+    fs_cycle_stats s;
+    fs_cycle_totals(cy, &s);
+    uint64_t frags = c->stats.fragments_generated;
+    fs_cycle_destroy(cy);
+    fs_context_destroy(c);
+    return frags == (uint64_t)WN * WN ? s.tex_texels : 0;
+}
+
+TEST(clamp_border_texels_not_read)
+{
+    /* GL 1.5 spec 3.8.7 and 3.8.8: GL_CLAMP clamps u = s * 4 to [0, 4]; the
+     * LINEAR pair is i0 = floor(u - 1/2), i1 = i0 + 1, and a texel outside
+     * [0, 4) is the border colour, not a texel of the image.  Below 0 (u
+     * clamped to 0) and above 1 (u = 4) each axis has one image texel:
+     * one texel read per fragment; inside (u in [1, 3]) four.  The cycle
+     * model counted four everywhere: it clamped the border texels to the
+     * edge and read them. */
+    CHECK_EQ_UINT(clamp_texels(-2.0f, -1.0f), (uint64_t)WN * WN);
+    CHECK_EQ_UINT(clamp_texels(2.0f, 3.0f), (uint64_t)WN * WN);
+    CHECK_EQ_UINT(clamp_texels(0.25f, 0.75f), 4u * WN * WN);
 }
 
 /* ---- cycle mode against functional mode ---- */
@@ -386,6 +439,7 @@ TEST_LIST = {
     TEST_ENTRY(footprint_texels_brute_force),
     TEST_ENTRY(rom_stage_latency_closed_form),
     TEST_ENTRY(ctr_reload_cycles_brute_force),
+    TEST_ENTRY(clamp_border_texels_not_read),
     TEST_ENTRY(cycle_mode_bit_identical_footprint),
     TEST_END,
 };

@@ -36,6 +36,7 @@
 #include "texture_priv.h"
 #include "footprint.h"
 #include "mpgrid_gl.h"
+#include "texture_reads.h"
 #include "../pipeline/context.h"
 #include "../glext/GL_FRAGSIM_footprint_filter.h"
 
@@ -163,16 +164,26 @@ static inline int wrap_nearest(int x, int len, GLenum wrap)
 /* The texel reads of one quad: the object, read only, and for an MP-Grid
  * object its CTR, the one state a texel read changes (GL_FRAGSIM_mp_grid:
  * texels come through the CTR and pointer table, units/mpgrid_gl.h), with
- * the record of what the reads did to it (mpgrid NULL otherwise). */
+ * the record of what the reads did to it (mpgrid NULL otherwise); with a
+ * cycle model, the record of the texels read by pixel `pixel` (reads, else
+ * NULL; units/texture_reads.h). */
 typedef struct tex_fetch {
     const fs_tex_object *t;
     struct fs_mpgrid_tex *mpgrid;
     fs_mpgrid_work work;
+    fs_tex_reads *reads;
+    int pixel;
 } tex_fetch;
 
 /* Address of texel (x, y) of a level (an MP-Grid's comes into tmp). */
 static inline const uint8_t *texel_at(tex_fetch *f, const fs_tex_image *img, int x, int y, uint8_t tmp[4])
 {
+    if (f->reads && f->reads->n[f->pixel] < FS_TEX_READS_MAX) {
+        struct fs_tex_read *r = &f->reads->texel[f->pixel][f->reads->n[f->pixel]++];
+        r->level = (int)(img - f->t->level);
+        r->x = x;
+        r->y = y;
+    }
     if (f->mpgrid)
         return fs_mpgrid_gl_texel(f->mpgrid, &f->work, (int)(img - f->t->level), x, y, tmp);
     return img->texels + ((size_t)y * (size_t)img->width + (size_t)x) * 4;
@@ -530,13 +541,15 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
         via_linear = other.minified == min_linear;
     }
     GLenum base = t->level[0].base_format;
-    tex_fetch f = {t, t->mpgrid, {0, 0, 0}};
+    fs_tex_reads reads;
+    tex_fetch f = {t, t->mpgrid, {0, 0, 0}, c->cycle ? &reads : NULL, 0};
     if (c->cycle)
-        fs_cycle_texture(c->cycle, t, lr.level0, mip_linear && (float_path ? lr.weightf > 0.0f : lr.weight8 > 0) ? lr.level1 : -1, img_filter, q, s, tt);
+        memset(reads.n, 0, sizeof reads.n);
     for (int i = 0; i < 4; i++) {
         if (!(q->mask & (1u << i)))
             continue;
         float tex[4];
+        f.pixel = i;
         if (float_path) {
             sample_level_fv(&f, lr.level0, img_filter, via_linear, s[i], tt[i], tex);
             if (mip_linear && lr.weightf > 0.0f) {
@@ -561,6 +574,8 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
     }
     if (f.mpgrid)
         fs_mpgrid_gl_work_done(f.mpgrid, &f.work);
+    if (c->cycle)
+        fs_cycle_texture(c->cycle, t, q, &reads);
     if (c->cycle && f.work.reloads)
         fs_cycle_ctr_reloads(c->cycle, f.work.reloads);
 }
