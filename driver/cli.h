@@ -28,8 +28,12 @@ fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_config *cfg, fs_context *c, 
 /* Sampled mode: true for a call the replay skips (see fs_cycle_skip_call). */
 bool fs_cli_cycle_skip(const fs_cli_cycle *h, const fs_context *c, int cmd);
 void fs_cli_cycle_frame(fs_cli_cycle *h, long frame);
-/* Writes the "cycle" member (with a trailing comma) into the statistics JSON. */
-void fs_cli_cycle_write_json(fs_cli_cycle *h, FILE *f);
+/* Sets the "cycle" member of the statistics file's JSON object (jansson);
+ * 0, or -1 when out of memory. */
+struct json_t;
+int fs_cli_cycle_json(fs_cli_cycle *h, struct json_t *into);
+/* Finishes the model's work; its totals in *t; returns the error estimate. */
+double fs_cli_cycle_totals(fs_cli_cycle *h, fs_cycle_stats *t);
 void fs_cli_cycle_summary(fs_cli_cycle *h, FILE *f, double seconds);
 void fs_cli_cycle_end(fs_cli_cycle *h);
 #endif

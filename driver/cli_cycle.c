@@ -7,6 +7,7 @@
  */
 #include <stdlib.h>
 #include <string.h>
+#include <jansson.h>
 #include "cli.h"
 #include "../pipeline/context.h"
 
@@ -14,8 +15,8 @@ struct fs_cli_cycle {
     fs_cycle *cy;
     fs_cycle_mode mode;
     FILE *csv;
-    FILE *draws_json;    /* draw and query records, JSON lines, copied at the end */
-    FILE *queries_json;
+    json_t *draws_json;  /* draw and query records for the statistics file */
+    json_t *queries_json;
     uint64_t ndraws, nqueries;
     struct { uint64_t frame; fs_cycle_stats s; } *frames;
     size_t nframes, cap;
@@ -43,20 +44,35 @@ static void csv_row(FILE *f, const char *kind, uint64_t index, uint64_t frame, u
     fputc('\n', f);
 }
 
+/* The cycle statistics added to the JSON object o, in the table's order;
+ * o itself, or NULL (o freed) when out of memory. */
+static json_t *with_stats(json_t *o, const fs_cycle_stats *s)
+{
+    for (int i = 0; o && i < fs_cycle_stat_count; i++) {
+        uint64_t v = *(const uint64_t *)((const char *)s + fs_cycle_stat_table[i].offset);
+        if (json_object_set_new(o, fs_cycle_stat_table[i].name, json_integer((json_int_t)v)) != 0) {
+            json_decref(o);
+            o = NULL;
+        }
+    }
+    return o;
+}
+
 static void on_record(void *user, const fs_cycle_record *r)
 {
     fs_cli_cycle *h = user;
     bool draw = r->kind == FS_CYCLE_DRAW;
-    FILE *j = draw ? h->draws_json : h->queries_json;
+    json_t *j = draw ? h->draws_json : h->queries_json;
     uint64_t *n = draw ? &h->ndraws : &h->nqueries;
     if (j) {
-        fprintf(j, "%s\n      {\"index\": %llu, \"frame\": %llu, \"%s\": %u, ", *n ? "," : "",
-                (unsigned long long)r->index, (unsigned long long)r->frame, draw ? "mode" : "query", r->id);
-        if (draw)
-            fprintf(j, "\"vertices\": %llu, \"estimated\": %s, ", (unsigned long long)r->vertices,
-                    r->estimated ? "true" : "false");
-        fs_cycle_stats_write_json(j, &r->s);
-        fputc('}', j);
+        json_t *o = json_pack("{s:I, s:I, s:I}", "index", (json_int_t)r->index, "frame", (json_int_t)r->frame,
+                              draw ? "mode" : "query", (json_int_t)r->id);
+        if (o && draw && (json_object_set_new(o, "vertices", json_integer((json_int_t)r->vertices)) |
+                          json_object_set_new(o, "estimated", json_boolean(r->estimated))) != 0) {
+            json_decref(o);
+            o = NULL;
+        }
+        json_array_append_new(j, with_stats(o, &r->s)); /* out of memory: the record is left out */
     }
     (*n)++;
     if (h->csv)
@@ -82,8 +98,8 @@ fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_config *cfg, fs_context *c, 
         free(h);
         return NULL;
     }
-    h->draws_json = tmpfile();
-    h->queries_json = tmpfile();
+    h->draws_json = json_array();
+    h->queries_json = json_array();
     if (csv_path) {
         h->csv = fopen(csv_path, "w");
         if (!h->csv) {
@@ -117,20 +133,10 @@ void fs_cli_cycle_frame(fs_cli_cycle *h, long frame)
     h->frames[h->nframes++].s = s;
 }
 
-static void copy_file(FILE *from, FILE *to)
-{
-    char buf[65536];
-    size_t n;
-    if (!from)
-        return;
-    rewind(from);
-    while ((n = fread(buf, 1, sizeof buf, from)) > 0)
-        fwrite(buf, 1, n, to);
-}
-
-void fs_cli_cycle_write_json(fs_cli_cycle *h, FILE *f)
+int fs_cli_cycle_json(fs_cli_cycle *h, json_t *into)
 {
     fs_cycle_finish(h->cy);
+    json_t *frames = json_array();
     /* Frames sampled mode skipped: their interpolated cycles. */
     for (size_t i = 0; i < h->nframes; i++) {
         bool skipped;
@@ -141,37 +147,39 @@ void fs_cli_cycle_write_json(fs_cli_cycle *h, FILE *f)
         }
         if (h->csv)
             csv_row(h->csv, "frame", h->frames[i].frame, h->frames[i].frame, 0, 0, skipped, &h->frames[i].s);
+        json_array_append_new(frames, with_stats(json_pack("{s:I}", "frame", (json_int_t)h->frames[i].frame),
+                                                 &h->frames[i].s));
     }
     fs_cycle_stats t;
-    fs_cycle_totals(h->cy, &t);
-    fprintf(f, "  \"cycle\": {\n    \"mode\": \"%s\",\n    \"error_estimate\": %.6f,\n    \"totals\": {",
-            h->mode == FS_CYCLE_SAMPLED ? "sampled" : "cycle", fs_cycle_error_estimate(h->cy));
-    fs_cycle_stats_write_json(f, &t);
-    fprintf(f, "},\n    \"frames\": [");
-    for (size_t i = 0; i < h->nframes; i++) {
-        fprintf(f, "%s\n      {\"frame\": %llu, ", i ? "," : "", (unsigned long long)h->frames[i].frame);
-        fs_cycle_stats_write_json(f, &h->frames[i].s);
-        fputc('}', f);
-    }
-    fprintf(f, "%s],\n    \"queries\": [", h->nframes ? "\n    " : "");
-    copy_file(h->queries_json, f);
-    fprintf(f, "%s],\n    \"draws\": [", h->nqueries ? "\n    " : "");
-    copy_file(h->draws_json, f);
-    fprintf(f, "%s]\n  },\n", h->ndraws ? "\n    " : "");
+    double error_estimate = fs_cli_cycle_totals(h, &t);
     if (h->csv) {
         csv_row(h->csv, "total", 0, 0, 0, 0, false, &t);
         fflush(h->csv);
     }
+    /* error_estimate: the value "%.6f" printed (see cli_main.c, fs_json_fixed) */
+    char e[32];
+    snprintf(e, sizeof e, "%.6f", error_estimate);
+    json_t *cycle = json_pack("{s:s, s:f, s:o, s:o, s:O, s:O}", "mode",
+                              h->mode == FS_CYCLE_SAMPLED ? "sampled" : "cycle", "error_estimate", strtod(e, NULL),
+                              "totals", with_stats(json_object(), &t), "frames", frames, "queries", h->queries_json,
+                              "draws", h->draws_json);
+    return json_object_set_new(into, "cycle", cycle);
+}
+
+double fs_cli_cycle_totals(fs_cli_cycle *h, fs_cycle_stats *t)
+{
+    fs_cycle_finish(h->cy);
+    fs_cycle_totals(h->cy, t);
+    return fs_cycle_error_estimate(h->cy);
 }
 
 void fs_cli_cycle_summary(fs_cli_cycle *h, FILE *f, double seconds)
 {
-    fs_cycle_finish(h->cy);
     fs_cycle_stats t;
-    fs_cycle_totals(h->cy, &t);
+    double error_estimate = fs_cli_cycle_totals(h, &t);
     fprintf(f, "fragsim: %s mode: %llu cycles (%llu estimated, error estimate %.2f%%), %.1f M cycles/s\n",
             h->mode == FS_CYCLE_SAMPLED ? "sampled" : "cycle", (unsigned long long)t.cycles,
-            (unsigned long long)t.estimated_cycles, 100.0 * fs_cycle_error_estimate(h->cy),
+            (unsigned long long)t.estimated_cycles, 100.0 * error_estimate,
             seconds > 0 ? (double)t.cycles / seconds / 1e6 : 0.0);
 }
 
@@ -181,10 +189,8 @@ void fs_cli_cycle_end(fs_cli_cycle *h)
         return;
     if (h->csv)
         fclose(h->csv);
-    if (h->draws_json)
-        fclose(h->draws_json);
-    if (h->queries_json)
-        fclose(h->queries_json);
+    json_decref(h->draws_json);
+    json_decref(h->queries_json);
     fs_cycle_destroy(h->cy);
     free(h->frames);
     free(h);

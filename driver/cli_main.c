@@ -18,6 +18,7 @@
 #include "replay.h"
 #include "callset.h"
 #include "error_log.h"
+#include "json_text.h"
 
 /* Exact by default: fragsim must render as llvmpipe does; pixels off by
  * exactly 1 are reported apart ("within 1") so that a rounding difference is
@@ -46,6 +47,7 @@ typedef struct cli_opts {
     bool snapshot;
     const char *snapshot_prefix;
     bool snapshot_alpha;
+    fs_trace_parser parser;   /* --reader */
 } cli_opts;
 
 static const char *prog = "fragsim";
@@ -82,6 +84,8 @@ static void usage_replay(FILE *f, bool check)
             "  --snapshot-prefix P  snapshot file names start with P (default DIR/; a prefix\n"
             "                     alone snapshots every frame, as glretrace does)\n"
             "  --snapshot-alpha   snapshots with alpha (RGBA, unassociated)\n"
+            "  --reader R         the trace reader's parser: fast (default) or general (the\n"
+            "                     reference the fast one is held equal to; slower)\n"
             "  --quiet            no progress line\n"
             "GL errors are printed as glretrace prints them (N: warning: glGetError(glName) = ERR;\n"
             "the first 10) and listed with call number, command and error in the statistics file.\n",
@@ -97,6 +101,20 @@ static void usage_replay(FILE *f, bool check)
                     "statistics file (per frame counters, unsupported calls by name).\n\n",
             check ? "check" : "stats",
             check ? "  --tolerance N      largest allowed colour difference per channel (default 0)\n" : "");
+}
+
+/* --reader fast|general; -1 (printed) for anything else. */
+static int parse_reader(const char *v, fs_trace_parser *parser)
+{
+    if (!strcmp(v, "fast"))
+        *parser = FS_TRACE_PARSER_FAST;
+    else if (!strcmp(v, "general"))
+        *parser = FS_TRACE_PARSER_GENERAL;
+    else {
+        fprintf(stderr, "%s: --reader '%s': expected fast or general\n", prog, v);
+        return -1;
+    }
+    return 0;
 }
 
 static int parse_frames(const char *s, long *a, long *b)
@@ -219,6 +237,10 @@ static int parse_opts(int argc, char **argv, cli_opts *o, bool check)
             o->snapshot_prefix = v;
         } else if (!strcmp(a, "--snapshot-alpha")) {
             o->snapshot_alpha = true;
+        } else if (!strcmp(a, "--reader")) {
+            NEEDV();
+            if (parse_reader(v, &o->parser) != 0)
+                return -1;
         } else if (a[0] == '-' && a[1]) {
             fprintf(stderr, "%s: unknown option %s (see --help)\n", prog, a);
             return -1;
@@ -288,100 +310,103 @@ typedef struct frame_record {
     int64_t samples_ref; /* OSMesa's GL_SAMPLES_PASSED for the frame, -1 if not measured */
 } frame_record;
 
-static void json_string(FILE *f, const char *s)
+/*
+ * The statistics file is written with jansson.  Its reals were printed
+ * with a fixed number of decimals ("%.3f", "%.6f"); they are still rounded
+ * so (fixed_real) and written with 15 significant digits, which gives back
+ * that decimal text less trailing zeros, and reads back as the same double
+ * as the old text did.
+ */
+#define JSON_FLAGS (JSON_INDENT(2) | JSON_REAL_PRECISION(15))
+
+static json_t *fixed_real(double v, int decimals)
 {
-    fputc('"', f);
-    for (; *s; s++) {
-        if (*s == '"' || *s == '\\')
-            fprintf(f, "\\%c", *s);
-        else if ((unsigned char)*s < 0x20)
-            fprintf(f, "\\u%04x", *s);
-        else
-            fputc(*s, f);
-    }
-    fputc('"', f);
+    char t[64];
+    snprintf(t, sizeof t, "%.*f", decimals, v);
+    return json_real(strtod(t, NULL));
 }
 
-static void write_unsupported_json(FILE *f, const fs_context *c)
+/* Calls and features not executed, by name: {"glName": count, ...}. */
+static json_t *unsupported_json(const fs_context *c)
 {
-    int first = 1;
-    fprintf(f, "{");
-    for (int i = 0; i < FS_CMD_COUNT; i++) {
-        if (!c->unsupported[i])
-            continue;
-        fprintf(f, "%s\n    ", first ? "" : ",");
-        json_string(f, fs_cmd_table[i].name);
-        fprintf(f, ": %llu", (unsigned long long)c->unsupported[i]);
-        first = 0;
+    json_t *o = json_object();
+    int rc = 0;
+    for (int i = 0; i < FS_CMD_COUNT; i++)
+        if (c->unsupported[i])
+            rc |= json_object_set_new(o, fs_cmd_table[i].name, json_integer((json_int_t)c->unsupported[i]));
+    for (int i = 0; i < c->unsupported_feature_count; i++)
+        rc |= json_object_set_new(o, c->unsupported_feature[i].name,
+                                  json_integer((json_int_t)c->unsupported_feature[i].count));
+    if (rc) {
+        json_decref(o);
+        return NULL;
     }
-    for (int i = 0; i < c->unsupported_feature_count; i++) {
-        fprintf(f, "%s\n    ", first ? "" : ",");
-        json_string(f, c->unsupported_feature[i].name);
-        fprintf(f, ": %llu", (unsigned long long)c->unsupported_feature[i].count);
-        first = 0;
+    return o;
+}
+
+/* One frame of the statistics file; check's comparison with OSMesa too. */
+static json_t *frame_json(const frame_record *fr, bool check)
+{
+    char image[64];
+    snprintf(image, sizeof image, "frame_%04ld.png", fr->frame);
+    json_t *o = json_pack("{s:I}", "frame", (json_int_t)fr->frame);
+    int rc = !o || (!check && json_object_set_new(o, "image", json_string(image)) != 0);
+    if (!rc && fr->has_diff) {
+        const fs_image_diff *d = &fr->diff;
+        json_t *psnr = isinf(d->psnr) ? json_string("999.000 (identical)") : fixed_real(d->psnr, 3);
+        rc = json_object_update_new(o, json_pack("{s:I, s:I, s:I, s:i, s:o, s:I, s:I, s:b}", "pixels_differ",
+                                                 (json_int_t)d->pixels_differ, "pixels_within_1",
+                                                 (json_int_t)d->pixels_within_1, "pixels_beyond_1",
+                                                 (json_int_t)d->pixels_beyond_1, "max_color_diff", d->max_diff,
+                                                 "psnr_db", psnr, "depth_differ", (json_int_t)d->depth_differ,
+                                                 "samples_passed_osmesa", (json_int_t)fr->samples_ref,
+                                                 "within_tolerance", fr->within)) != 0;
     }
-    fprintf(f, "%s}", first ? "" : "\n  ");
+    if (!rc)
+        rc = json_object_set_new(o, "stats", fs_stats_json(&fr->stats)) != 0;
+    if (rc) {
+        json_decref(o);
+        return NULL;
+    }
+    return o;
 }
 
 static int write_stats(const char *path, const cli_opts *o, const fs_replay_info *info,
                        const fs_context *c, const fs_replayer *r, const frame_record *frames,
                        size_t nframes, bool check, const char *status, const fs_error_log *errs)
 {
+    json_t *list = json_array();
+    fs_stats total;
+    memset(&total, 0, sizeof total);
+    int rc = !list;
+    for (size_t i = 0; i < nframes && !rc; i++) {
+        fs_stats_add(&total, &frames[i].stats);
+        rc = json_array_append_new(list, frame_json(&frames[i], check)) != 0;
+    }
+    json_t *doc = json_pack("{s:o, s:s, s:[i, i], s:o, s:I, s:o, s:o, s:o, s:o}", "trace", fs_json_text(o->trace),
+                            "status", status, "size", info->width, info->height, "frame_end",
+                            fs_json_text(info->frame_end), "trace_calls", (json_int_t)info->calls, "frames", list,
+                            "totals", fs_stats_json(&total), "unsupported", unsupported_json(c),
+                            "skipped_trace_calls", fs_replay_skipped_json(r));
+    /* Every GL error with the call that raised it (numbered as apitrace
+     * dump numbers calls; an error inside a display list is its glCallList's). */
+    rc |= !doc || fs_error_log_json(errs, doc) != 0 || (o->cycle && fs_cli_cycle_json(o->cycle, doc) != 0);
+    /* The effective configuration, so any run can be reproduced. */
+    rc |= !doc || json_object_set_new(doc, "config", fs_config_json(&c->cfg)) != 0;
+    if (rc) {
+        fprintf(stderr, "%s: out of memory writing %s\n", prog, path);
+        json_decref(doc);
+        return -1;
+    }
     FILE *f = fopen(path, "w");
     if (!f) {
         fprintf(stderr, "%s: cannot write %s: %s\n", prog, path, strerror(errno));
+        json_decref(doc);
         return -1;
     }
-    fprintf(f, "{\n  \"trace\": ");
-    json_string(f, o->trace);
-    fprintf(f, ",\n  \"status\": ");
-    json_string(f, status);
-    fprintf(f, ",\n  \"size\": [%d, %d],\n  \"frame_end\": ", info->width, info->height);
-    json_string(f, info->frame_end);
-    fprintf(f, ",\n  \"trace_calls\": %llu,\n  \"frames\": [", (unsigned long long)info->calls);
-    fs_stats total;
-    memset(&total, 0, sizeof total);
-    for (size_t i = 0; i < nframes; i++) {
-        fs_stats_add(&total, &frames[i].stats);
-        fprintf(f, "%s\n    {\n      \"frame\": %ld,\n", i ? "," : "", frames[i].frame);
-        if (!check)
-            fprintf(f, "      \"image\": \"frame_%04ld.png\",\n", frames[i].frame);
-        if (frames[i].has_diff) {
-            const fs_image_diff *d = &frames[i].diff;
-            fprintf(f,
-                    "      \"pixels_differ\": %llu,\n      \"pixels_within_1\": %llu,\n"
-                    "      \"pixels_beyond_1\": %llu,\n      \"max_color_diff\": %d,\n"
-                    "      \"psnr_db\": %s%.3f%s,\n      \"depth_differ\": %llu,\n"
-                    "      \"samples_passed_osmesa\": %lld,\n"
-                    "      \"within_tolerance\": %s,\n",
-                    (unsigned long long)d->pixels_differ, (unsigned long long)d->pixels_within_1,
-                    (unsigned long long)d->pixels_beyond_1, d->max_diff, isinf(d->psnr) ? "\"" : "",
-                    isinf(d->psnr) ? 999.0 : d->psnr, isinf(d->psnr) ? " (identical)\"" : "",
-                    (unsigned long long)d->depth_differ, (long long)frames[i].samples_ref,
-                    frames[i].within ? "true" : "false");
-        }
-        fprintf(f, "      \"stats\": {\n");
-        fs_stats_write_json(f, &frames[i].stats, "        ");
-        fprintf(f, "      }\n    }");
-    }
-    fprintf(f, "%s],\n  \"totals\": {\n", nframes ? "\n  " : "");
-    fs_stats_write_json(f, &total, "    ");
-    fprintf(f, "  },\n  \"unsupported\": ");
-    write_unsupported_json(f, c);
-    fprintf(f, ",\n  \"skipped_trace_calls\": ");
-    fs_replay_write_skipped_json(r, f, "  ");
-    fprintf(f, ",\n");
-    /* Every GL error with the call that raised it (numbered as apitrace
-     * dump numbers calls; an error inside a display list is its glCallList's). */
-    fs_error_log_write_json(errs, f, "  ");
-    fprintf(f, ",\n");
-    if (o->cycle)
-        fs_cli_cycle_write_json(o->cycle, f);
-    /* The effective configuration, so any run can be reproduced. */
-    fprintf(f, "  \"config\": {\n");
-    fs_config_write_json(f, &c->cfg, "    ");
-    fprintf(f, "  }\n}\n");
-    if (fclose(f) != 0) {
+    rc = json_dumpf(doc, f, JSON_FLAGS) != 0 || fputc('\n', f) == EOF;
+    json_decref(doc);
+    if (fclose(f) != 0 || rc) {
         fprintf(stderr, "%s: error writing %s\n", prog, path);
         return -1;
     }
@@ -438,6 +463,201 @@ static int save_mismatch(const char *dir, long frame, const uint8_t *model, cons
     return rc ? -1 : 0;
 }
 
+/*
+ * The one replay loop of replay, check and bench (bench's floor too): each
+ * call of the trace goes to the model, to OSMesa, to both or to neither,
+ * and frames end where the replayer says.  The commands differ only in
+ * these options and in what they do after a call and at a frame end.
+ */
+typedef struct replay_loop replay_loop;
+struct replay_loop {
+    fs_replayer *r;
+    fs_context *model;       /* executes the calls, or NULL */
+    fs_osmesa *ref;          /* executes them too (check) or alone (bench on OSMesa), or NULL */
+    fs_cli_cycle *cycle;     /* --mode: its frames end here, sampled mode skips calls; or NULL */
+    fs_error_log *errs;      /* told each call's number and name before it runs, or NULL */
+    const char *trace;       /* for messages */
+    long frame_first, frame_last; /* frames given to at_frame; the run stops after frame_last (-1: none) */
+    bool reset_stats;        /* the model's counters start from 0 at each frame */
+    bool progress;           /* a progress line on stderr */
+    /* After each call executed or skipped; non-zero stops the run (the
+     * callback printed why).  NULL: nothing. */
+    int (*after_call)(replay_loop *L, uint64_t call_no, unsigned flags);
+    /* At the end of each frame from frame_first on; non-zero stops the run. */
+    int (*at_frame)(replay_loop *L, long frame);
+    void *user;
+    uint64_t frames;         /* out: frames ended */
+};
+
+/* 0 at the end of the trace or of the frame range; 1 when the run stopped
+ * on an error (printed). */
+static int replay_loop_run(replay_loop *L)
+{
+    uint64_t trace_frames = fs_replay_info_get(L->r)->frames;
+    double t0 = now_seconds(), last_progress = t0;
+    long frame = 0;
+    fs_call call;
+    int rc = 0;
+    for (;;) {
+        if (L->frame_last >= 0 && frame > L->frame_last)
+            break;
+        fs_replay_event ev = fs_replay_next(L->r, &call);
+        if (ev == FS_REPLAY_ERROR) {
+            fprintf(stderr, "%s: %s\n", prog, fs_replay_error(L->r));
+            rc = 1;
+            break;
+        }
+        if (ev == FS_REPLAY_EOF)
+            break;
+        if (ev != FS_REPLAY_FRAME_END) {
+            /* sampled mode skips the calls of a frame that is interpolated */
+            bool skip = ev == FS_REPLAY_SKIPPED || (L->model && fs_cli_cycle_skip(L->cycle, L->model, call.cmd));
+            uint64_t no = fs_replay_call_no(L->r);
+            if (L->errs) {
+                L->errs->call = no;
+                L->errs->command = fs_replay_call_name(L->r);
+            }
+            if (!skip && L->model && fs_submit(L->model, &call) != 0) {
+                fprintf(stderr, "%s: %s: malformed arguments to %s\n", prog, L->trace,
+                        fs_cmd_table[call.cmd].name);
+                rc = 1;
+                break;
+            }
+            if (!skip && L->ref)
+                fs_osmesa_dispatch(L->ref, &call);
+            if (L->after_call && (rc = L->after_call(L, no, fs_replay_call_flags(L->r))) != 0)
+                break;
+            continue;
+        }
+        if (frame >= L->frame_first) {
+            if (L->cycle)
+                fs_cli_cycle_frame(L->cycle, frame);
+            if (L->at_frame && (rc = L->at_frame(L, frame)) != 0)
+                break;
+        }
+        if (L->reset_stats)
+            memset(&L->model->stats, 0, sizeof L->model->stats);
+        frame++;
+        L->frames++;
+        double t = now_seconds();
+        if (L->progress && t - last_progress > 0.5) {
+            fprintf(stderr, "\rframe %ld/%llu  %.1f s", frame, (unsigned long long)trace_frames, t - t0);
+            last_progress = t;
+        }
+    }
+    if (L->progress)
+        fprintf(stderr, "\r%60s\r", "");
+    return rc;
+}
+
+/* What replay and check keep of a run for the statistics file and the
+ * closing line (replay_loop.user). */
+typedef struct replay_run {
+    const cli_opts *o;
+    const fs_replay_info *info;
+    bool count_samples;      /* OSMesa counts each frame's samples passed (check) */
+    frame_record *frames;    /* the frames in the range */
+    size_t nframes, cap;
+    bool all_within;
+    size_t frames_exact, frames_within_1, frames_beyond_1;
+    uint64_t pixels_by_1;
+    uint64_t snapshots;
+} replay_run;
+
+static int snapshot_after_call(replay_loop *L, uint64_t call_no, unsigned flags)
+{
+    replay_run *run = L->user;
+    char err[1024];
+    if (!fs_callset_contains(&run->o->snaps, call_no, flags))
+        return 0;
+    if (take_snapshot(run->o, L->model, call_no, err, sizeof err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        return 1;
+    }
+    run->snapshots++;
+    return 0;
+}
+
+/* The frame's record, with the model's counters of the frame; NULL when out
+ * of memory (printed). */
+static frame_record *new_frame(replay_loop *L, long frame)
+{
+    replay_run *run = L->user;
+    if (run->nframes == run->cap) {
+        frame_record *nf = realloc(run->frames, 2 * run->cap * sizeof *run->frames);
+        if (!nf) {
+            fprintf(stderr, "%s: out of memory\n", prog);
+            return NULL;
+        }
+        run->frames = nf;
+        run->cap *= 2;
+    }
+    frame_record *fr = &run->frames[run->nframes++];
+    memset(fr, 0, sizeof *fr);
+    fr->frame = frame;
+    fr->stats = L->model->stats;
+    return fr;
+}
+
+/* replay: the frame's image as DIR/frame_NNNN.png */
+static int write_frame(replay_loop *L, long frame)
+{
+    replay_run *run = L->user;
+    char path[4200], err[1024];
+    if (!new_frame(L, frame))
+        return 1;
+    snprintf(path, sizeof path, "%s/frame_%04ld.png", run->o->out_dir, frame);
+    if (fs_image_write_png(path, L->model->fb.color, run->info->width, run->info->height, err, sizeof err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        return 1;
+    }
+    return 0;
+}
+
+/* check: the frame's colours, depths and samples passed against OSMesa's,
+ * one line on stdout; images of the frame when beyond tolerance. */
+static int check_frame(replay_loop *L, long frame)
+{
+    replay_run *run = L->user;
+    const cli_opts *o = run->o;
+    int w = run->info->width, h = run->info->height;
+    fs_context *c = L->model;
+    fs_osmesa *ref = L->ref;
+    char err[64];
+    frame_record *fr = new_frame(L, frame);
+    if (!fr)
+        return 1;
+    fs_image_compare(c->fb.color, fs_osmesa_color(ref), w, h, &fr->diff);
+    const uint32_t *d = fs_osmesa_depth(ref);
+    if (d)
+        fs_depth_compare(c->fb.depth, d, w, h, &fr->diff);
+    fr->has_diff = true;
+    fr->samples_ref = run->count_samples ? fs_osmesa_samples_end(ref) : -1;
+    if (run->count_samples)
+        fs_osmesa_samples_begin(ref);
+    bool samples_ok = !run->count_samples || fr->samples_ref == (int64_t)fr->stats.fragments_passed_depth;
+    fr->within = fr->diff.max_diff <= o->tolerance && samples_ok;
+    run->all_within &= fr->within;
+    run->frames_exact += fr->diff.max_diff == 0;
+    run->frames_within_1 += fr->diff.max_diff == 1;
+    run->frames_beyond_1 += fr->diff.max_diff > 1;
+    run->pixels_by_1 += fr->diff.pixels_within_1;
+    if (!fr->within && save_mismatch(o->out_dir, frame, c->fb.color, fs_osmesa_color(ref), w, h) != 0)
+        fprintf(stderr, "%s: could not write the mismatch images to %s\n", prog, o->out_dir);
+    char samples[96] = "";
+    if (run->count_samples)
+        snprintf(samples, sizeof samples, ", samples passed %llu%s%lld",
+                 (unsigned long long)fr->stats.fragments_passed_depth,
+                 samples_ok ? " = OSMesa " : " != OSMesa ", (long long)fr->samples_ref);
+    printf("frame %4ld: %8llu pixels differ (%llu by 1, %llu by more), max diff %3d, PSNR %s, "
+           "%llu depth values differ%s%s\n",
+           frame, (unsigned long long)fr->diff.pixels_differ, (unsigned long long)fr->diff.pixels_within_1,
+           (unsigned long long)fr->diff.pixels_beyond_1, fr->diff.max_diff,
+           isinf(fr->diff.psnr) ? "identical" : (snprintf(err, sizeof err, "%.2f dB", fr->diff.psnr), err),
+           (unsigned long long)fr->diff.depth_differ, samples, fr->within ? "" : "  <-- beyond tolerance");
+    return 0;
+}
+
 static int run_replay(int argc, char **argv, bool check)
 {
     cli_opts o;
@@ -464,6 +684,7 @@ static int run_replay(int argc, char **argv, bool check)
     fs_replay_opts ro = {o.frame_end, o.width ? o.width : (int)cfg.framebuffer_width,
                          o.height ? o.height : (int)cfg.framebuffer_height};
     ro.report_skipped = o.snapshot; /* glretrace snapshots at calls fragsim skips too */
+    ro.parser = o.parser;
     fs_replayer *r = fs_replay_open(o.trace, &ro, err, sizeof err);
     if (!r) {
         fprintf(stderr, "%s: %s\n", prog, err);
@@ -516,141 +737,39 @@ static int run_replay(int argc, char **argv, bool check)
     else
         snprintf(stats_path, sizeof stats_path, "%s/%s.json", o.out_dir, check ? "check" : "stats");
 
-    bool progress = !o.quiet && isatty(2);
-    size_t cap = 16, nframes = 0;
-    frame_record *frames = malloc(cap * sizeof *frames);
-    long frame = 0;
+    replay_run run = {&o, info, ref && !info->uses_queries};
+    run.cap = 16;
+    run.frames = malloc(run.cap * sizeof *run.frames);
+    run.all_within = true;
     int rc = 0;
     const char *status = "ok";
-    double t0 = now_seconds(), last_progress = t0;
-    fs_call call;
-    bool all_within = true;
-    size_t frames_exact = 0, frames_within_1 = 0, frames_beyond_1 = 0;
-    uint64_t pixels_by_1 = 0;
+    double t0 = now_seconds();
     /* Per frame, OSMesa counts GL_SAMPLES_PASSED with a query of its own, to
      * compare with the fragments that passed the model's depth and stencil
      * tests (what NOHC and occlusion queries count).  A trace that runs its
      * own queries is left alone: a second active query would be an error. */
-    bool count_samples = ref && !info->uses_queries;
-    if (count_samples)
+    if (run.count_samples)
         fs_osmesa_samples_begin(ref);
     fs_error_log errs = {0};
     errs.print = stderr;
     errs.print_max = 10;
     fs_error_log_attach(&errs, c);
-    uint64_t snapshots = 0;
-    for (;;) {
-        if (o.frame_last >= 0 && frame > o.frame_last)
-            break;
-        fs_replay_event ev = fs_replay_next(r, &call);
-        if (ev == FS_REPLAY_ERROR) {
-            fprintf(stderr, "%s: %s\n", prog, fs_replay_error(r));
-            status = "error";
-            rc = 1;
-            break;
-        }
-        if (ev == FS_REPLAY_EOF)
-            break;
-        if (ev == FS_REPLAY_SKIPPED || ev == FS_REPLAY_CALL) {
-            bool skip = ev == FS_REPLAY_SKIPPED || fs_cli_cycle_skip(o.cycle, c, call.cmd);
-            /* sampled mode skips the calls of a frame that is interpolated */
-            errs.call = fs_replay_call_no(r);
-            errs.command = fs_replay_call_name(r);
-            if (!skip && fs_submit(c, &call) != 0) {
-                fprintf(stderr, "%s: %s: malformed arguments to %s\n", prog, o.trace,
-                        fs_cmd_table[call.cmd].name);
-                status = "error";
-                rc = 1;
-                break;
-            }
-            if (ref && !skip)
-                fs_osmesa_dispatch(ref, &call);
-            if (o.snapshot && fs_callset_contains(&o.snaps, errs.call, fs_replay_call_flags(r))) {
-                if (take_snapshot(&o, c, errs.call, err, sizeof err) != 0) {
-                    fprintf(stderr, "%s: %s\n", prog, err);
-                    status = "error";
-                    rc = 1;
-                    break;
-                }
-                snapshots++;
-            }
-            continue;
-        }
-        /* End of a frame. */
-        if (frame >= o.frame_first) {
-            if (nframes == cap) {
-                cap *= 2;
-                frame_record *nf = realloc(frames, cap * sizeof *frames);
-                if (!nf) {
-                    fprintf(stderr, "%s: out of memory\n", prog);
-                    rc = 1;
-                    break;
-                }
-                frames = nf;
-            }
-            frame_record *fr = &frames[nframes++];
-            memset(fr, 0, sizeof *fr);
-            if (o.cycle)
-                fs_cli_cycle_frame(o.cycle, frame);
-            fr->frame = frame;
-            fr->stats = c->stats;
-            if (ref) {
-                fs_image_compare(c->fb.color, fs_osmesa_color(ref), info->width, info->height, &fr->diff);
-                const uint32_t *d = fs_osmesa_depth(ref);
-                if (d)
-                    fs_depth_compare(c->fb.depth, d, info->width, info->height, &fr->diff);
-                fr->has_diff = true;
-                fr->samples_ref = count_samples ? fs_osmesa_samples_end(ref) : -1;
-                if (count_samples)
-                    fs_osmesa_samples_begin(ref);
-                bool samples_ok = !count_samples || fr->samples_ref == (int64_t)fr->stats.fragments_passed_depth;
-                fr->within = fr->diff.max_diff <= o.tolerance && samples_ok;
-                all_within &= fr->within;
-                frames_exact += fr->diff.max_diff == 0;
-                frames_within_1 += fr->diff.max_diff == 1;
-                frames_beyond_1 += fr->diff.max_diff > 1;
-                pixels_by_1 += fr->diff.pixels_within_1;
-                if (!fr->within && save_mismatch(o.out_dir, frame, c->fb.color, fs_osmesa_color(ref),
-                                                 info->width, info->height) != 0)
-                    fprintf(stderr, "%s: could not write the mismatch images to %s\n", prog, o.out_dir);
-                char samples[96] = "";
-                if (count_samples)
-                    snprintf(samples, sizeof samples, ", samples passed %llu%s%lld",
-                             (unsigned long long)fr->stats.fragments_passed_depth,
-                             samples_ok ? " = OSMesa " : " != OSMesa ", (long long)fr->samples_ref);
-                printf("frame %4ld: %8llu pixels differ (%llu by 1, %llu by more), max diff %3d, PSNR %s, "
-                       "%llu depth values differ%s%s\n",
-                       frame, (unsigned long long)fr->diff.pixels_differ,
-                       (unsigned long long)fr->diff.pixels_within_1,
-                       (unsigned long long)fr->diff.pixels_beyond_1, fr->diff.max_diff,
-                       isinf(fr->diff.psnr) ? "identical" : (snprintf(err, sizeof err, "%.2f dB", fr->diff.psnr), err),
-                       (unsigned long long)fr->diff.depth_differ, samples, fr->within ? "" : "  <-- beyond tolerance");
-            } else {
-                char path[4200];
-                snprintf(path, sizeof path, "%s/frame_%04ld.png", o.out_dir, frame);
-                if (fs_image_write_png(path, c->fb.color, info->width, info->height, err, sizeof err) != 0) {
-                    fprintf(stderr, "%s: %s\n", prog, err);
-                    status = "error";
-                    rc = 1;
-                    break;
-                }
-            }
-        }
-        memset(&c->stats, 0, sizeof c->stats);
-        frame++;
-        double t = now_seconds();
-        if (progress && t - last_progress > 0.5) {
-            fprintf(stderr, "\rframe %ld/%llu  %.1f s", frame, (unsigned long long)info->frames, t - t0);
-            last_progress = t;
-        }
+    replay_loop loop = {r, c, ref, o.cycle, &errs, o.trace, o.frame_first, o.frame_last, true,
+                        !o.quiet && isatty(2), o.snapshot ? snapshot_after_call : NULL,
+                        check ? check_frame : write_frame, &run};
+    if (!run.frames || replay_loop_run(&loop) != 0) {
+        if (!run.frames)
+            fprintf(stderr, "%s: out of memory\n", prog);
+        status = "error";
+        rc = 1;
     }
-    if (progress)
-        fprintf(stderr, "\r%60s\r", "");
+    frame_record *frames = run.frames;
+    size_t nframes = run.nframes;
     if (check && ref && nframes)
         printf("colour: %zu frame%s exact, %zu within 1 (%llu pixels off by 1), %zu off by more; tolerance %d\n",
-               frames_exact, frames_exact == 1 ? "" : "s", frames_within_1,
-               (unsigned long long)pixels_by_1, frames_beyond_1, o.tolerance);
-    if (rc == 0 && check && !all_within) {
+               run.frames_exact, run.frames_exact == 1 ? "" : "s", run.frames_within_1,
+               (unsigned long long)run.pixels_by_1, run.frames_beyond_1, o.tolerance);
+    if (rc == 0 && check && !run.all_within) {
         status = "beyond tolerance";
         rc = 3;
     }
@@ -660,8 +779,8 @@ static int run_replay(int argc, char **argv, bool check)
     print_unsupported(stderr, c, r);
     fs_error_log_summary(&errs, stderr, prog);
     if (o.snapshot)
-        fprintf(stderr, "%s: %llu snapshot%s written\n", prog, (unsigned long long)snapshots,
-                snapshots == 1 ? "" : "s");
+        fprintf(stderr, "%s: %llu snapshot%s written\n", prog, (unsigned long long)run.snapshots,
+                run.snapshots == 1 ? "" : "s");
     fs_error_log_free(&errs);
     fs_callset_free(&o.snaps);
     if (rc == 0 || rc == 3)
@@ -735,18 +854,23 @@ static double time_floor(const char *trace, const fs_replay_opts *ro, long repea
         fs_replayer *r = fs_replay_open(trace, ro, err, sizeof err);
         if (!r)
             return -1;
-        fs_call call;
-        fs_replay_event ev;
+        replay_loop loop = {.r = r, .trace = trace, .frame_last = -1};
         double t0 = now_seconds();
-        while ((ev = fs_replay_next(r, &call)) != FS_REPLAY_EOF)
-            if (ev == FS_REPLAY_ERROR)
-                break;
+        int rc = replay_loop_run(&loop);
         seconds += now_seconds() - t0;
         fs_replay_close(r);
-        if (ev == FS_REPLAY_ERROR)
+        if (rc != 0)
             return -1;
     }
     return seconds;
+}
+
+/* bench on OSMesa: glFinish at each frame end, since llvmpipe renders lazily */
+static int finish_osmesa_frame(replay_loop *L, long frame)
+{
+    (void)frame;
+    (void)fs_osmesa_color(L->ref);
+    return 0;
 }
 
 static int run_bench(int argc, char **argv)
@@ -755,10 +879,12 @@ static int run_bench(int argc, char **argv)
     int cycle_mode = -1; /* --mode: as `fragsim replay --mode` */
     long repeat = 1;
     int width = 0, height = 0;
+    fs_trace_parser parser = FS_TRACE_PARSER_FAST;
     for (int i = 0; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             printf("usage: fragsim bench [--engine model|osmesa] [--repeat N] [--size WxH]\n"
-                   "                     [--mode functional|cycle|sampled] [--config FILE] TRACE\n\n"
+                   "                     [--mode functional|cycle|sampled] [--config FILE]\n"
+                   "                     [--reader fast|general] TRACE\n\n"
                    "Replays TRACE once untimed, then N times on one engine, and prints one JSON\nline: seconds of"
                    " rendering (from the decoded calls), load_seconds (opening the\ntrace: decoding and"
                    " validating it, the same for every engine), floor_seconds\n(going through the decoded"
@@ -776,6 +902,9 @@ static int run_bench(int argc, char **argv)
             }
         } else if (!strcmp(argv[i], "--config") && i + 1 < argc) {
             config_file = argv[++i];
+        } else if (!strcmp(argv[i], "--reader") && i + 1 < argc) {
+            if (parse_reader(argv[++i], &parser) != 0)
+                return 2;
         } else if (!strcmp(argv[i], "--size") && i + 1 < argc) {
             if (sscanf(argv[++i], "%dx%d", &width, &height) != 2 || width <= 0 || height <= 0) {
                 fprintf(stderr, "%s: --size: expected WxH\n", prog);
@@ -801,11 +930,12 @@ static int run_bench(int argc, char **argv)
         fprintf(stderr, "%s: %s\n", prog, err);
         return 2;
     }
-    fs_cycle *cy = NULL;
-    fs_cycle_stats cstats, cframe;
+    fs_cli_cycle *cy = NULL;
+    fs_cycle_stats cstats;
     memset(&cstats, 0, sizeof cstats);
     double cerror = 0;
     fs_replay_opts ro = {NULL, width, height, 0};
+    ro.parser = parser;
     double seconds = 0;
     uint64_t fragments = 0, frames = 0;
     const char *renderer = "fragsim";
@@ -828,15 +958,13 @@ static int run_bench(int argc, char **argv)
             fs_context_set_double_buffered(c, info->double_buffered);
         if (c && cycle_mode >= 0) {
             /* A fresh model per repetition: each reports the same cycles. */
-            fs_cycle_destroy(cy);
-            cy = fs_cycle_create(&cfg, (fs_cycle_mode)cycle_mode, err, sizeof err);
+            fs_cli_cycle_end(cy);
+            cy = fs_cli_cycle_begin(cycle_mode, &cfg, c, NULL, info->frames, false, err, sizeof err);
             if (!cy) {
                 fprintf(stderr, "%s: %s\n", prog, err);
                 fs_replay_close(r);
                 return 1;
             }
-            fs_cycle_attach(cy, c);
-            fs_cycle_set_frames(cy, info->frames);
         }
         if (!ref && !model) {
             ref = fs_osmesa_create(info->width, info->height, 24, 8, err, sizeof err);
@@ -848,34 +976,18 @@ static int run_bench(int argc, char **argv)
             fs_replay_close(r);
             return 1;
         }
-        fs_call call;
-        fs_replay_event ev;
+        /* The model's counters run over every frame (not reset per frame). */
+        replay_loop loop = {.r = r, .model = c, .ref = ref, .cycle = cy, .trace = trace, .frame_last = -1,
+                            .at_frame = model ? NULL : finish_osmesa_frame};
         double t0 = now_seconds();
-        while ((ev = fs_replay_next(r, &call)) != FS_REPLAY_EOF) {
-            if (ev == FS_REPLAY_ERROR) {
-                fprintf(stderr, "%s: %s\n", prog, fs_replay_error(r));
-                fs_replay_close(r);
-                return 1;
-            }
-            if (ev == FS_REPLAY_FRAME_END) {
-                if (!model)
-                    (void)fs_osmesa_color(ref); /* glFinish: llvmpipe renders lazily */
-                if (cy)
-                    fs_cycle_frame_end(cy, &cframe);
-                frames++;
-                continue;
-            }
-            if (model) {
-                if (!cy || !fs_cycle_skip_call(cy, c, call.cmd))
-                    fs_submit(c, &call);
-            } else
-                fs_osmesa_dispatch(ref, &call);
+        int rc = replay_loop_run(&loop);
+        if (rc != 0) {
+            fs_replay_close(r);
+            return 1;
         }
-        if (cy) {
-            fs_cycle_finish(cy);
-            fs_cycle_totals(cy, &cstats);
-            cerror = fs_cycle_error_estimate(cy);
-        }
+        frames += loop.frames;
+        if (cy)
+            cerror = fs_cli_cycle_totals(cy, &cstats);
         if (rep >= 0) {
             seconds += now_seconds() - t0;
         } else {
@@ -888,11 +1000,17 @@ static int run_bench(int argc, char **argv)
     if (model)
         fragments = c->stats.fragments_generated; /* counted over every frame: stats reset only by replay */
     double floor_s = time_floor(trace, &ro, repeat);
-    printf("{\"engine\": \"%s\", \"renderer\": \"%s\", \"seconds\": %.6f, \"load_seconds\": %.6f, \"floor_seconds\": %.6f, "
-           "\"frames\": %llu, \"fragments\": %llu, \"cycles\": %llu, \"estimated_cycles\": %llu, \"error_estimate\": %.6f}\n",
-           engine, renderer, seconds, load, floor_s, (unsigned long long)frames, (unsigned long long)fragments,
-           (unsigned long long)cstats.cycles, (unsigned long long)cstats.estimated_cycles, cerror);
-    fs_cycle_destroy(cy);
+    /* one line (scripts/bench.sh reads it with sed); reals as "%.6f" printed them */
+    json_t *line = json_pack("{s:s, s:s, s:o, s:o, s:o, s:I, s:I, s:I, s:I, s:o}", "engine", engine, "renderer",
+                             renderer, "seconds", fixed_real(seconds, 6), "load_seconds", fixed_real(load, 6),
+                             "floor_seconds", fixed_real(floor_s, 6), "frames", (json_int_t)frames, "fragments",
+                             (json_int_t)fragments, "cycles", (json_int_t)cstats.cycles, "estimated_cycles",
+                             (json_int_t)cstats.estimated_cycles, "error_estimate", fixed_real(cerror, 6));
+    if (!line || json_dumpf(line, stdout, JSON_REAL_PRECISION(15)) != 0)
+        fprintf(stderr, "%s: bench: out of memory\n", prog);
+    putchar('\n');
+    json_decref(line);
+    fs_cli_cycle_end(cy);
     fs_context_destroy(c);
     fs_osmesa_destroy(ref);
     return 0;

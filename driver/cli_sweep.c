@@ -27,6 +27,7 @@
 #include <errno.h>
 #include <stdarg.h>
 #include <ini.h>
+#include <jansson.h>
 #include <limits.h>
 #include <signal.h>
 #include <stdbool.h>
@@ -838,59 +839,24 @@ static int write_cluster_scripts(const spec *s, const char *out, const char *spe
 
 /* ---------- gathering ---------- */
 
-static const char *skip_ws(const char *p)
+/* A real as the shortest text that reads back as the same double (what
+ * the statistics file printed with a fixed format, less trailing zeros). */
+static void real_text(double d, char *out, size_t len)
 {
-    while (*p == ' ' || *p == '\n' || *p == '\t' || *p == '\r')
-        p++;
-    return p;
+    for (int prec = 1; prec <= 17; prec++) {
+        snprintf(out, len, "%.*g", prec, d);
+        if (strtod(out, NULL) == d)
+            return;
+    }
 }
 
-/* Skips one JSON value; NULL on malformed input. */
-static const char *skip_value(const char *p)
+/* The value at a dotted path ("totals.cycles") from the top-level object,
+ * as text for the CSV: an integer in decimal, a real as real_text, a
+ * string as it is, true/false; -1 when absent, an object, an array or null. */
+static int json_get(const json_t *root, const char *path, char *out, size_t len)
 {
-    p = skip_ws(p);
-    if (*p == '"') {
-        for (p++; *p && *p != '"'; p++)
-            if (*p == '\\' && p[1])
-                p++;
-        return *p ? p + 1 : NULL;
-    }
-    if (*p == '{' || *p == '[') {
-        char close = *p == '{' ? '}' : ']';
-        p = skip_ws(p + 1);
-        if (*p == close)
-            return p + 1;
-        for (;;) {
-            if (close == '}') {
-                p = skip_value(p); /* the member name */
-                if (!p || *(p = skip_ws(p)) != ':')
-                    return NULL;
-                p++;
-            }
-            p = skip_value(p);
-            if (!p)
-                return NULL;
-            p = skip_ws(p);
-            if (*p == ',')
-                p++;
-            else if (*p == close)
-                return p + 1;
-            else
-                return NULL;
-        }
-    }
-    const char *b = p;
-    while (*p && !strchr(",}] \n\t\r", *p))
-        p++;
-    return p > b ? p : NULL;
-}
-
-/* Finds the value at a dotted path ("totals.cycles") from the top-level
- * object and copies a number or string's text to out; -1 if absent. */
-static int json_get(const char *json, const char *path, char *out, size_t len)
-{
-    const char *p = skip_ws(json);
     char comp[NAME_LEN];
+    const json_t *v = root;
     while (*path) {
         const char *dot = strchr(path, '.');
         size_t l = dot ? (size_t)(dot - path) : strlen(path);
@@ -899,46 +865,47 @@ static int json_get(const char *json, const char *path, char *out, size_t len)
         memcpy(comp, path, l);
         comp[l] = '\0';
         path += l + (dot ? 1 : 0);
-        if (*p != '{')
-            return -1;
-        p = skip_ws(p + 1);
-        bool found = false;
-        while (*p == '"') {
-            const char *name = p + 1, *e = skip_value(p);
-            if (!e)
-                return -1;
-            bool match = (size_t)(e - 1 - name) == l && !strncmp(name, comp, l);
-            p = skip_ws(e);
-            if (*p != ':')
-                return -1;
-            p = skip_ws(p + 1);
-            if (match) {
-                found = true;
-                break;
-            }
-            p = skip_value(p);
-            if (!p)
-                return -1;
-            p = skip_ws(p);
-            if (*p == ',')
-                p = skip_ws(p + 1);
-        }
-        if (!found)
+        if (!(v = json_object_get(v, comp)))
             return -1;
     }
-    const char *e = skip_value(p);
-    if (!e || *p == '{' || *p == '[')
+    int n;
+    switch (json_typeof(v)) {
+    case JSON_INTEGER:
+        n = snprintf(out, len, "%" JSON_INTEGER_FORMAT, json_integer_value(v));
+        break;
+    case JSON_REAL:
+        real_text(json_real_value(v), out, len);
+        n = (int)strlen(out);
+        break;
+    case JSON_STRING:
+        n = snprintf(out, len, "%s", json_string_value(v));
+        break;
+    case JSON_TRUE:
+    case JSON_FALSE:
+        n = snprintf(out, len, "%s", json_is_true(v) ? "true" : "false");
+        break;
+    default:
         return -1;
-    if (*p == '"') {
-        p++;
-        e--;
     }
-    size_t n = (size_t)(e - p);
-    if (n >= len)
-        return -1;
-    memcpy(out, p, n);
-    out[n] = '\0';
-    return 0;
+    return n >= 0 && (size_t)n < len ? 0 : -1;
+}
+
+/* A job's statistics file, parsed; NULL with the reason in why (the file
+ * and, for malformed JSON, line and column) when it cannot be read. */
+static json_t *load_stats(const char *path, char *why, size_t len)
+{
+    json_error_t e;
+    json_t *root = json_load_file(path, 0, &e);
+    if (root && !json_is_object(root)) {
+        snprintf(why, len, "%s: not a JSON object", path);
+        json_decref(root);
+        return NULL;
+    }
+    if (!root && e.line > 0)
+        snprintf(why, len, "%s:%d:%d: malformed JSON: %s", path, e.line, e.column, e.text);
+    else if (!root)
+        snprintf(why, len, "%s", e.text);
+    return root;
 }
 
 /* CSV field: quoted when it holds a comma, quote or newline. */
@@ -1021,13 +988,16 @@ static long gather(const spec *s, const char *out, row *rows, char (*cols)[NAME_
                 rc = -1;
             fclose(rf);
         }
-        char *json = rc == 0 ? read_file(spath) : NULL;
+        char why[PATH_LEN + 300] = "";
+        json_t *json = rc == 0 ? load_stats(spath, why, sizeof why) : NULL;
         const char *status = rc == 0 && json ? "ok" : rf ? "failed" : "not run";
         if (strcmp(status, "ok") != 0) {
             failed++;
             fprintf(stderr, "%s: job %ld %s", prog, j, status);
             if (rc > 0)
                 fprintf(stderr, " (exit %d)", rc);
+            if (why[0])
+                fprintf(stderr, " (statistics: %s)", why);
             fprintf(stderr, ": trace=%s", s->traces[t].label);
             for (int i = 0; i < s->naxes; i++)
                 fprintf(stderr, " %s=%s", s->axes[i].name, s->axes[i].values[vals[i]]);
@@ -1054,7 +1024,7 @@ static long gather(const spec *s, const char *out, row *rows, char (*cols)[NAME_
             else
                 r->cells[c++][0] = '\0';
         }
-        free(json);
+        json_decref(json);
         for (int k = 0; k < c; k++)
             csv_field(f, r->cells[k], k == c - 1);
     }

@@ -1,6 +1,7 @@
 /* The per-call GL error log (error_log.h). */
 #include <stdlib.h>
 #include <string.h>
+#include "json_text.h"
 #include "error_log.h"
 #include "../pipeline/context.h"
 
@@ -55,32 +56,18 @@ void fs_error_log_attach(fs_error_log *log, fs_context *c)
     c->error_user = log;
 }
 
-static void json_str(FILE *f, const char *s)
+int fs_error_log_json(const fs_error_log *log, json_t *into)
 {
-    fputc('"', f);
-    for (; s && *s; s++) {
-        if (*s == '"' || *s == '\\')
-            fprintf(f, "\\%c", *s);
-        else if ((unsigned char)*s < 0x20)
-            fprintf(f, "\\u%04x", *s);
-        else
-            fputc(*s, f);
-    }
-    fputc('"', f);
-}
-
-void fs_error_log_write_json(const fs_error_log *log, FILE *f, const char *indent)
-{
-    fprintf(f, "%s\"errors_total\": %llu,\n%s\"errors\": [", indent, (unsigned long long)log->total,
-            indent);
-    for (size_t i = 0; i < log->n; i++) {
+    json_t *list = json_array();
+    int rc = json_object_set_new(into, "errors_total", json_integer((json_int_t)log->total)) |
+             json_object_set_new(into, "errors", list);
+    for (size_t i = 0; list && i < log->n; i++) {
         char b[16];
-        fprintf(f, "%s\n%s  {\"call\": %llu, \"command\": ", i ? "," : "", indent,
-                (unsigned long long)log->entries[i].call);
-        json_str(f, log->entries[i].command);
-        fprintf(f, ", \"error\": \"%s\"}", fs_error_name(log->entries[i].error, b));
+        rc |= json_array_append_new(list, json_pack("{s:I, s:o, s:s}", "call", (json_int_t)log->entries[i].call,
+                                                     "command", fs_json_text(log->entries[i].command), "error",
+                                                     fs_error_name(log->entries[i].error, b)));
     }
-    fprintf(f, "%s%s]", log->n ? "\n" : "", log->n ? indent : "");
+    return rc ? -1 : 0;
 }
 
 void fs_error_log_summary(const fs_error_log *log, FILE *f, const char *prog)

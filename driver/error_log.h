@@ -34,9 +34,11 @@ typedef struct fs_error_log {
 
 /* Clears log and makes it receive c's errors. */
 void fs_error_log_attach(fs_error_log *log, fs_context *c);
-/* Writes `"errors_total": N, "errors": [{"call": N, "command": "glName",
- * "error": "GL_..."}, ...]` (two members of an object, no trailing comma). */
-void fs_error_log_write_json(const fs_error_log *log, FILE *f, const char *indent);
+/* Sets two members of the JSON object into (jansson): "errors_total": N
+ * and "errors": [{"call": N, "command": "glName", "error": "GL_..."}, ...].
+ * 0, or -1 when out of memory. */
+struct json_t;
+int fs_error_log_json(const fs_error_log *log, struct json_t *into);
 /* After a run: "N GL errors" and how many were printed, if any. */
 void fs_error_log_summary(const fs_error_log *log, FILE *f, const char *prog);
 void fs_error_log_free(fs_error_log *log);

@@ -17,6 +17,7 @@
 #include "replay.h"
 #include "trace.h"
 #include "callset.h"
+#include "json_text.h"
 
 enum skip_kind { SKIP_UNKNOWN, SKIP_UNSAFE, SKIP_WINSYS };
 
@@ -69,6 +70,7 @@ struct fs_replayer {
     /* Pass 1's decoded calls, replayed by pass 2 instead of decoding the
      * file again (see "the decoded trace" below). */
     fs_trace_reader *rec_tr; /* pass 1's reader, kept for its name strings */
+    fs_trace_parser parser;  /* fs_replay_opts.parser, for every pass */
     struct rec_block *rec, *rec_last, *rec_at;
     size_t rec_pos, rec_bytes, rec_max;
     bool rec_on;   /* pass 1 is recording; info.from_record: pass 2 reads the record */
@@ -751,6 +753,7 @@ static fs_replayer *start_pass(fs_replayer *r, char *err, size_t errlen)
         fs_replay_close(r);
         return NULL;
     }
+    fs_trace_set_parser(r->tr, r->parser);
     return r;
 }
 
@@ -762,6 +765,7 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
         fs_replay_close(r);
         return NULL;
     }
+    r->parser = opts ? opts->parser : FS_TRACE_PARSER_FAST;
     if (!start_pass(r, err, errlen))
         return NULL;
     /* Pass 1: validate everything, count frame ends, find the window size,
@@ -876,13 +880,21 @@ static const char *kind_name(enum skip_kind k)
     return k == SKIP_WINSYS ? "window_system" : k == SKIP_UNSAFE ? "unsafe" : "unknown";
 }
 
-void fs_replay_write_skipped_json(const fs_replayer *r, FILE *f, const char *indent)
+json_t *fs_replay_skipped_json(const fs_replayer *r)
 {
-    fprintf(f, "{");
-    for (size_t i = 0; i < r->nskips; i++)
-        fprintf(f, "%s\n%s  \"%s\": {\"count\": %llu, \"reason\": \"%s\"}", i ? "," : "", indent,
-                r->skips[i].name, (unsigned long long)r->skips[i].count, kind_name(r->skips[i].kind));
-    fprintf(f, "%s}", r->nskips ? "\n" : "");
+    json_t *o = json_object();
+    for (size_t i = 0; o && i < r->nskips; i++) {
+        /* the name is the trace's: any bytes (json_text.h) */
+        json_t *name = fs_json_text(r->skips[i].name);
+        if (!name || json_object_set_new(o, json_string_value(name),
+                                         json_pack("{s:I, s:s}", "count", (json_int_t)r->skips[i].count, "reason",
+                                                   kind_name(r->skips[i].kind))) != 0) {
+            json_decref(o);
+            o = NULL;
+        }
+        json_decref(name);
+    }
+    return o;
 }
 
 uint64_t fs_replay_skipped_total(const fs_replayer *r)

@@ -14,6 +14,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include "gl_call.h"
+#include "trace.h"
 
 typedef struct fs_replay_opts {
     const char *frame_end; /* call name that ends a frame, or NULL for automatic */
@@ -25,6 +26,8 @@ typedef struct fs_replay_opts {
     /* Also return the calls the model does not execute (unknown, window
      * system, unsafe draws) as FS_REPLAY_SKIPPED, e.g. to snapshot at them. */
     bool report_skipped;
+    /* The trace reader's parser (trace.h); 0, the fast one, by default. */
+    fs_trace_parser parser;
 } fs_replay_opts;
 
 typedef struct fs_replay_info {
@@ -68,7 +71,10 @@ unsigned fs_replay_call_flags(const fs_replayer *r);
 /* Calls the replay could not execute, by name (unknown to fragsim, or
  * unsafe: e.g. a draw whose client arrays the trace did not record), and
  * window-system calls that were deliberately ignored. */
-void fs_replay_write_skipped_json(const fs_replayer *r, FILE *f, const char *indent);
+struct json_t;
+/* As a new JSON object (jansson): {"name": {"count": N, "reason": "..."}, ...};
+ * NULL when out of memory. */
+struct json_t *fs_replay_skipped_json(const fs_replayer *r);
 void fs_replay_print_skipped(const fs_replayer *r, FILE *f);
 uint64_t fs_replay_skipped_total(const fs_replayer *r);
 void fs_replay_close(fs_replayer *r);

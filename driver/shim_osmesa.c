@@ -41,6 +41,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <jansson.h>
 #include "../pipeline/context.h"
 #include "capture.h"
 #include "error_log.h"
@@ -141,18 +142,11 @@ static void write_stats(struct osmesa_context *o)
     const char *path = getenv("FRAGSIM_STATS");
     if (!o->fs || !path || !*path)
         return;
-    FILE *f = fopen(path, "w");
-    if (!f) {
+    /* the "totals" and "errors" of fragsim replay's statistics file */
+    json_t *doc = json_pack("{s:o}", "totals", fs_stats_json(&o->fs->stats));
+    if (!doc || fs_error_log_json(&o->errs, doc) != 0 || json_dump_file(doc, path, JSON_INDENT(2)) != 0)
         shim_message("FRAGSIM_STATS: cannot write", path);
-        return;
-    }
-    fprintf(f, "{\n  \"totals\": {\n");
-    fs_stats_write_json(f, &o->fs->stats, "    ");
-    fprintf(f, "  },\n");
-    fs_error_log_write_json(&o->errs, f, "  ");
-    fprintf(f, "\n}\n");
-    if (fclose(f) != 0)
-        shim_message("FRAGSIM_STATS: cannot write", path);
+    json_decref(doc);
 }
 
 /* A context still current when the program exits (OSMesa programs rarely

@@ -113,6 +113,15 @@ const char *fs_trace_error(const fs_trace_reader *r);
  * truncated chunk is always an error. */
 const char *fs_trace_warning(const fs_trace_reader *r);
 void fs_trace_set_strict_end(fs_trace_reader *r, int strict);
+/* Which parser reads the events.  FAST (the default): fast paths for the
+ * events that make up nearly all of a trace (a known signature, scalar
+ * values, everything inside the current chunk), which give anything else
+ * to the general parser.  GENERAL: the general parser alone, the reference
+ * the fast paths must equal call for call (tests/test_trace_parsers.c
+ * holds them equal on every test trace).  It may change between calls:
+ * the fast paths keep no state of their own. */
+typedef enum fs_trace_parser { FS_TRACE_PARSER_FAST, FS_TRACE_PARSER_GENERAL } fs_trace_parser;
+void fs_trace_set_parser(fs_trace_reader *r, fs_trace_parser parser);
 /* The trace's format version (header version_no). */
 unsigned fs_trace_version(const fs_trace_reader *r);
 void fs_trace_close(fs_trace_reader *r);

@@ -220,6 +220,7 @@ struct fs_trace_reader {
     int failed;
     int cut_in_event;      /* the data ended cleanly at a chunk boundary inside an event */
     int strict_end;        /* treat that as an error too (fs_trace_set_strict_end) */
+    int general_only;      /* FS_TRACE_PARSER_GENERAL: no fast paths (fs_trace_set_parser) */
     char warning[400];     /* set when the trace ended inside an event */
     char err[512];
     unsigned version, semantic;
@@ -1431,6 +1432,11 @@ static int fast_leave(fs_trace_reader *r)
 
 void fs_trace_set_strict_end(fs_trace_reader *r, int strict) { r->strict_end = strict; }
 
+void fs_trace_set_parser(fs_trace_reader *r, fs_trace_parser parser)
+{
+    r->general_only = parser == FS_TRACE_PARSER_GENERAL;
+}
+
 const char *fs_trace_warning(const fs_trace_reader *r) { return r->warning[0] ? r->warning : NULL; }
 
 int fs_trace_next(fs_trace_reader *r, fs_tcall *call)
@@ -1469,7 +1475,9 @@ int fs_trace_next(fs_trace_reader *r, fs_tcall *call)
             continue;
         }
         unsigned ev = r->buf[r->pos];
-        if (ev == EV_ENTER) {
+        if (r->general_only) {
+            /* the reference: every event through the general parser */
+        } else if (ev == EV_ENTER) {
             int fast = fast_enter(r, call);
             if (fast == 2)
                 return 1;

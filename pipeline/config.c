@@ -7,6 +7,7 @@
 #include <errno.h>
 #include <stddef.h>
 #include <ini.h>
+#include <jansson.h>
 #include <stdlib.h>
 #include <string.h>
 #include "config.h"
@@ -212,9 +213,16 @@ void fs_config_write_defaults_ini(FILE *f)
     }
 }
 
-void fs_config_write_json(FILE *f, const fs_config *cfg, const char *indent)
+json_t *fs_config_json(const fs_config *cfg)
 {
-    for (size_t i = 0; i < NKEYS; i++)
-        fprintf(f, "%s\"%s.%s\": %ld%s\n", indent, keys[i].section, keys[i].key,
-                *(const long *)((const char *)cfg + keys[i].offset), i + 1 < NKEYS ? "," : "");
+    json_t *o = json_object();
+    for (size_t i = 0; o && i < NKEYS; i++) {
+        char name[160];
+        snprintf(name, sizeof name, "%s.%s", keys[i].section, keys[i].key);
+        if (json_object_set_new(o, name, json_integer(*(const long *)((const char *)cfg + keys[i].offset))) != 0) {
+            json_decref(o);
+            o = NULL;
+        }
+    }
+    return o;
 }

@@ -22,6 +22,8 @@ void fs_config_list(FILE *f);
 /* Writes every key with its default and meaning as an INI file
  * (configs/default.ini). */
 void fs_config_write_defaults_ini(FILE *f);
-/* Writes the keys as JSON members ("section.key": value, ...), one per line. */
-void fs_config_write_json(FILE *f, const fs_config *cfg, const char *indent);
+/* The keys as a new JSON object (jansson) of "section.key": value, in the
+ * table's order; NULL when out of memory. */
+struct json_t;
+struct json_t *fs_config_json(const fs_config *cfg);
 #endif

@@ -1,5 +1,6 @@
 #include "stats.h"
 #include <stddef.h>
+#include <jansson.h>
 
 const fs_stat_info fs_stat_table[] = {
 #define FS_STAT(name, unit, meaning) {#name, unit, meaning, offsetof(fs_stats, name)},
@@ -14,11 +15,15 @@ void fs_stats_add(fs_stats *into, const fs_stats *from)
         *(uint64_t *)((char *)into + fs_stat_table[i].offset) += fs_stat_get(from, i);
 }
 
-void fs_stats_write_json(FILE *f, const fs_stats *s, const char *indent)
+json_t *fs_stats_json(const fs_stats *s)
 {
-    for (int i = 0; i < fs_stat_count; i++)
-        fprintf(f, "%s\"%s\": %llu%s\n", indent, fs_stat_table[i].name,
-                (unsigned long long)fs_stat_get(s, i), i + 1 < fs_stat_count ? "," : "");
+    json_t *o = json_object();
+    for (int i = 0; o && i < fs_stat_count; i++)
+        if (json_object_set_new(o, fs_stat_table[i].name, json_integer((json_int_t)fs_stat_get(s, i))) != 0) {
+            json_decref(o);
+            o = NULL;
+        }
+    return o;
 }
 
 void fs_stats_list(FILE *f)

@@ -23,7 +23,9 @@ static inline uint64_t fs_stat_get(const fs_stats *s, int i)
     return *(const uint64_t *)((const char *)s + fs_stat_table[i].offset);
 }
 void fs_stats_add(fs_stats *into, const fs_stats *from);
-/* Writes the counters as a JSON object body ("name": value, ...). */
-void fs_stats_write_json(FILE *f, const fs_stats *s, const char *indent);
+/* The counters as a new JSON object (jansson), in the table's order;
+ * NULL when out of memory. */
+struct json_t;
+struct json_t *fs_stats_json(const fs_stats *s);
 void fs_stats_list(FILE *f);
 #endif

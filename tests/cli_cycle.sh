@@ -121,15 +121,15 @@ test_sampled_error() {
         local a b ta tb
         a=$(echo "$full" | sed -nE 's/.*"cycles": ([0-9]+).*/\1/p')
         b=$(echo "$samp" | sed -nE 's/.*"cycles": ([0-9]+).*/\1/p')
-        ta=$(echo "$full" | sed -nE 's/.*"seconds": ([0-9.]+).*/\1/p')
-        tb=$(echo "$samp" | sed -nE 's/.*"seconds": ([0-9.]+).*/\1/p')
+        ta=$(echo "$full" | sed -nE 's/.*"seconds": ([0-9.eE+-]+).*/\1/p')
+        tb=$(echo "$samp" | sed -nE 's/.*"seconds": ([0-9.eE+-]+).*/\1/p')
         [ -n "$a" ] && [ -n "$b" ] || fail "$s: no cycles"
         # Going through the decoded calls alone (bench's ceiling column) is
         # a part of a cycle-mode replay, so it must take less time than the
         # whole; loading the trace is timed apart and takes some time.
         local td tl
-        td=$(echo "$full" | sed -nE 's/.*"floor_seconds": ([0-9.]+).*/\1/p')
-        tl=$(echo "$full" | sed -nE 's/.*"load_seconds": ([0-9.]+).*/\1/p')
+        td=$(echo "$full" | sed -nE 's/.*"floor_seconds": ([0-9.eE+-]+).*/\1/p')
+        tl=$(echo "$full" | sed -nE 's/.*"load_seconds": ([0-9.eE+-]+).*/\1/p')
         awk -v td="$td" -v ta="$ta" -v tl="$tl" 'BEGIN { exit !(td > 0 && td < ta && tl > 0) }' ||
             fail "$s: floor_seconds $td not within (0, $ta), the cycle-mode replay's seconds, or load_seconds $tl not > 0"
         awk -v s="$s" -v a="$a" -v b="$b" -v ta="$ta" -v tb="$tb" 'BEGIN {

@@ -191,6 +191,15 @@ EOF2
 
 # An old apitrace trace (the zlib container, made by `apitrace repack --zlib`)
 # replays to the same images and statistics as the Snappy trace it came from.
+same_images() { # DIR_A DIR_B: the same PNGs byte for byte, two at least
+    local n=0 f
+    for f in "$1"/*.png; do
+        cmp -s "$f" "$2/${f##*/}" || fail "${f##*/} differs"
+        n=$((n + 1))
+    done
+    [ $n -ge 2 ] || fail "only $n images"
+}
+
 test_zlib_trace_replays_the_same() {
     command -v apitrace >/dev/null || skip "apitrace is not installed"
     local t; t=$(scene_trace textured) || fail "scenegen failed"
@@ -199,12 +208,7 @@ test_zlib_trace_replays_the_same() {
     "$FRAGSIM" replay --out "$WORK/zs" "$t" >/dev/null 2>&1 || fail "snappy replay failed"
     "$FRAGSIM" replay --out "$WORK/zz" "$WORK/textured_zlib.trace" >/dev/null 2>"$WORK/e" ||
         fail "zlib replay failed: $(cat "$WORK/e")"
-    local n=0 f
-    for f in "$WORK"/zs/*.png; do
-        cmp -s "$f" "$WORK/zz/${f##*/}" || fail "${f##*/} differs"
-        n=$((n + 1))
-    done
-    [ $n -ge 2 ] || fail "only $n images"
+    same_images "$WORK/zs" "$WORK/zz"
     diff <(grep -v '"trace":' "$WORK/zs/stats.json") <(grep -v '"trace":' "$WORK/zz/stats.json") ||
         fail "statistics differ"
     head -c 3000 "$WORK/textured_zlib.trace" >"$WORK/zcut.trace"
@@ -214,10 +218,33 @@ test_zlib_trace_replays_the_same() {
     grep -q "gzip" "$WORK/e" || fail "message: $(cat "$WORK/e")"
 }
 
+# --reader general|fast: the trace reader's general parser alone and its
+# fast paths give the same images and statistics (replay), the same per-frame
+# comparison (check) and the same frame and fragment counts (bench);
+# tests/test_trace_parsers.c compares the decoded calls themselves.
+test_reader_option() {
+    local t; t=$(scene_trace city) || fail "scenegen failed"
+    local r
+    for r in general fast; do
+        "$FRAGSIM" replay --quiet --reader $r --mode cycle --out "$WORK/rd_$r" "$t" 2>/dev/null || fail "replay --reader $r"
+        "$FRAGSIM" check --quiet --reader $r --out "$WORK/rdc_$r" "$t" >"$WORK/rdc_$r.txt" 2>/dev/null ||
+            fail "check --reader $r"
+        "$FRAGSIM" bench --reader $r "$t" | sed -E 's/"(seconds|load_seconds|floor_seconds)": [0-9.eE+-]+//g' \
+            >"$WORK/rdb_$r.txt" || fail "bench --reader $r"
+    done
+    same_images "$WORK/rd_fast" "$WORK/rd_general"
+    cmp -s "$WORK/rd_fast/stats.json" "$WORK/rd_general/stats.json" || fail "statistics differ"
+    cmp -s "$WORK/rdc_fast/check.json" "$WORK/rdc_general/check.json" || fail "check.json differs"
+    diff "$WORK/rdc_fast.txt" "$WORK/rdc_general.txt" || fail "check's report differs"
+    diff "$WORK/rdb_fast.txt" "$WORK/rdb_general.txt" || fail "bench's counts differ"
+    "$FRAGSIM" replay --reader slow "$t" 2>"$WORK/e"; [ $? -eq 2 ] || fail "--reader slow must exit 2"
+    grep -q "expected fast or general" "$WORK/e" || fail "message: $(cat "$WORK/e")"
+}
+
 for t in test_help test_missing_trace test_truncated_trace test_garbage_trace test_config_errors \
          test_replay_writes_images_and_stats test_replay_is_deterministic test_frames_option test_diff \
          test_check_every_scene test_check_default_tolerance_is_0 test_apitrace_dump_reads_our_traces test_glxgears_capture \
-         test_new_commands_bad_arguments test_zlib_trace_replays_the_same; do
+         test_new_commands_bad_arguments test_zlib_trace_replays_the_same test_reader_option; do
     run_test "$t"
 done
 finish

@@ -143,6 +143,29 @@ test_plot_and_no_run() {
     [ "$(head -c 4 "$out/frags.png" | od -An -c | tr -d ' ')" = '211PNG' ] || fail "not a PNG"
 }
 
+# A job's statistics file that is not JSON (cut short, say by a full disk
+# on a cluster node): that job fails with the file, line and column named,
+# the others are gathered.
+test_bad_statistics_file_named() {
+    local out="$WORK/bj" spec
+    spec=$(grid_spec "$out")
+    "$FRAGSIM" sweep --no-run "$spec" >/dev/null 2>&1 || fail "--no-run"
+    for j in 0 1 2 3; do "$FRAGSIM" sweep --run-job "$out/jobs.tsv" $j 2>/dev/null || fail "run-job $j"; done
+    head -c 300 "$out/jobs/2/stats.json" >"$WORK/cut.json" && mv "$WORK/cut.json" "$out/jobs/2/stats.json"
+    printf '[1, 2]\n' >"$out/jobs/3/stats.json"
+    "$FRAGSIM" sweep --gather "$spec" >/dev/null 2>"$WORK/e"
+    [ $? -eq 1 ] || fail "expected exit 1: $(cat "$WORK/e")"
+    grep -qE "job 2 failed \(statistics: $out/jobs/2/stats.json:[0-9]+:[0-9]+: malformed JSON: .+\)" "$WORK/e" ||
+        fail "job 2: $(cat "$WORK/e")"
+    grep -qF "job 3 failed (statistics: $out/jobs/3/stats.json: not a JSON object)" "$WORK/e" || fail "job 3: $(cat "$WORK/e")"
+    [ "$(tail -n +2 "$out/results.csv" | cut -d, -f5 | tr '\n' ' ')" = "ok ok failed failed " ] ||
+        fail "status column: $(cat "$out/results.csv")"
+    # the gathered columns of the good jobs are the statistics file's numbers
+    local t0
+    t0=$(grep -A 40 '"totals"' "$out/jobs/0/stats.json" | grep -m1 '"triangles_rasterized"' | tr -dc 0-9)
+    [ "$(sed -n 2p "$out/results.csv" | cut -d, -f9)" = "$t0" ] || fail "triangles column != stats.json ($t0)"
+}
+
 test_config_axis_and_mode() {
     printf '[occlusion]\nengines = 3\n' >"$WORK/a.ini"
     printf '[occlusion]\nengines = 5\nmax_tiles = 7\n' >"$WORK/b.ini"
@@ -175,4 +198,5 @@ run_test test_deterministic_across_runs_and_runners
 run_test test_bad_axis_key
 run_test test_failing_job_reported_others_gathered
 run_test test_plot_and_no_run
+run_test test_bad_statistics_file_named
 finish
