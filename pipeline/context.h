@@ -16,6 +16,7 @@
 #include "rasterizer.h"
 #include "fragment_ops.h"
 #include "vertex_stage.h"
+#include "state.h"
 #include "../driver/gl_call.h"
 #include "../rtl_model/cycle_model.h"
 
@@ -61,6 +62,14 @@ struct fs_context {
      * are the enums glDrawBuffer and glReadBuffer set (pipeline/buffer_select.c). */
     bool double_buffered;
     GLenum draw_buffer, read_buffer;
+    /* Hints (GL 1.5 spec 5.6, table 6.27), stored only: llvmpipe ignores them. */
+    GLenum hints[5];
+    /* The attribute stacks (6.1.14; pipeline/state.c) and the groups whose
+     * state changed since the last validation, as glPushAttrib's bits with
+     * the client groups in bits 20-21 (pipeline/state.h). */
+    GLint attrib_depth, client_attrib_depth;
+    struct fs_attrib_stack *attrib_stack;
+    uint32_t dirty;
 
     struct fs_dlist_state *lists;
     struct fs_capture *capture;   /* non-NULL while recording a trace */

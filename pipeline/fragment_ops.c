@@ -27,8 +27,10 @@ void fs_fragment_state_init(fs_fragment_state *f)
     f->stencil_enabled = false;
     f->stencil_func = GL_ALWAYS;
     f->stencil_ref = 0;
-    f->stencil_value_mask = ~0u;
-    f->stencil_write_mask = ~0u;
+    /* 0xff as on OSMesa (pipeline/state.def); the same tests and writes
+     * as all ones on the 8-bit stencil buffer. */
+    f->stencil_value_mask = 0xffu;
+    f->stencil_write_mask = 0xffu;
     f->stencil_fail = f->stencil_zfail = f->stencil_zpass = GL_KEEP;
     f->depth_enabled = false;
     f->depth_func = GL_LESS;

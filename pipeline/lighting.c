@@ -226,6 +226,91 @@ void fs_exec_Materiali(fs_context *c, GLenum face, GLenum pname, GLint param)
     fs_exec_Materialf(c, face, pname, (float)param);
 }
 
+/* ---- glGetLight and glGetMaterial (GL 1.5 spec 6.1.3) ---- */
+
+/* The stored values of a light parameter (positions and directions in eye
+ * coordinates, 2.14.2) and their number, or NULL after the error. */
+static const float *light_param(fs_context *c, GLenum light, GLenum pname, int *n)
+{
+    *n = fs_light_param_count(pname);
+    if (light < GL_LIGHT0 || light >= GL_LIGHT0 + FS_MAX_LIGHTS || *n == 0) {
+        fs_error(c, GL_INVALID_ENUM);
+        return NULL;
+    }
+    const fs_light *l = &c->lighting.light[light - GL_LIGHT0];
+    switch (pname) {
+    case GL_AMBIENT: return l->ambient;
+    case GL_DIFFUSE: return l->diffuse;
+    case GL_SPECULAR: return l->specular;
+    case GL_POSITION: return l->position;
+    case GL_SPOT_DIRECTION: return l->spot_direction;
+    case GL_SPOT_EXPONENT: return &l->spot_exponent;
+    case GL_SPOT_CUTOFF: return &l->spot_cutoff;
+    default: return &l->attenuation[pname - GL_CONSTANT_ATTENUATION];
+    }
+}
+
+/* The same for a material of one face (GL_FRONT or GL_BACK only). */
+static const float *material_param(fs_context *c, GLenum face, GLenum pname, int *n)
+{
+    static const float no_indexes[3];
+    *n = pname == GL_AMBIENT_AND_DIFFUSE ? 0 : fs_material_param_count(pname);
+    if ((face != GL_FRONT && face != GL_BACK) || *n == 0) {
+        fs_error(c, GL_INVALID_ENUM);
+        return NULL;
+    }
+    const fs_material *m = &c->lighting.material[face == GL_BACK];
+    switch (pname) {
+    case GL_AMBIENT: return m->ambient;
+    case GL_DIFFUSE: return m->diffuse;
+    case GL_SPECULAR: return m->specular;
+    case GL_EMISSION: return m->emission;
+    case GL_SHININESS: return &m->shininess;
+    default: return no_indexes; /* colour-index mode only */
+    }
+}
+
+/* Writes the n values v of a query (none after an error, v NULL) as
+ * floats, or as integers: colours as glGetIntegerv converts them (6.1.2),
+ * other values as OSMesa answers (measured): light parameters toward zero,
+ * the shininess to the nearest integer. */
+static void put_params(GLenum pname, const float *v, int n, GLfloat *fv, GLint *iv)
+{
+    for (int i = 0; v && i < n; i++) {
+        if (fv)
+            fv[i] = v[i];
+        else if (is_color_pname(pname))
+            iv[i] = fs_norm_to_int(v[i]);
+        else
+            iv[i] = pname == GL_SHININESS ? (GLint)lroundf(v[i]) : (GLint)v[i];
+    }
+}
+
+static void get_light(fs_context *c, GLenum light, GLenum pname, GLfloat *fv, GLint *iv)
+{
+    int n;
+    const float *v = light_param(c, light, pname, &n);
+    put_params(pname, v, n, fv, iv);
+}
+
+static void get_material(fs_context *c, GLenum face, GLenum pname, GLfloat *fv, GLint *iv)
+{
+    int n;
+    const float *v = material_param(c, face, pname, &n);
+    put_params(pname, v, n, fv, iv);
+}
+
+void fs_exec_GetLightfv(fs_context *c, GLenum l, GLenum pname, GLfloat *params) { get_light(c, l, pname, params, NULL); }
+void fs_exec_GetLightiv(fs_context *c, GLenum l, GLenum pname, GLint *params) { get_light(c, l, pname, NULL, params); }
+void fs_exec_GetMaterialfv(fs_context *c, GLenum face, GLenum pname, GLfloat *params)
+{
+    get_material(c, face, pname, params, NULL);
+}
+void fs_exec_GetMaterialiv(fs_context *c, GLenum face, GLenum pname, GLint *params)
+{
+    get_material(c, face, pname, NULL, params);
+}
+
 void fs_exec_ColorMaterial(fs_context *c, GLenum face, GLenum mode)
 {
     if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) {

@@ -23,8 +23,10 @@ void fs_exec_StencilFunc(fs_context *c, GLenum func, GLint ref, GLuint mask)
         return;
     }
     c->frag.stencil_func = func;
-    /* Kept as given (glGet returns it so); clamped where it is used. */
-    c->frag.stencil_ref = ref;
+    /* Clamped to [0, 2^s - 1] (4.1.5) when given: glGet returns it so on
+     * OSMesa (measured: 369 gives 255, -5 gives 0 with 8 bits). */
+    GLint max = (1 << c->fb.stencil_bits) - 1;
+    c->frag.stencil_ref = ref < 0 ? 0 : ref > max ? max : ref;
     c->frag.stencil_value_mask = mask;
 }
 

@@ -40,6 +40,8 @@ void fs_texture_free(fs_context *c);
 bool *fs_texture_enable_flag(fs_context *c, GLenum cap);
 /* Re-derives c->raster.interpolate_tex from the enables. */
 void fs_texture_enables_changed(fs_context *c);
+/* The name of the bound 2D texture (glGet, glPushAttrib; pipeline/state.c). */
+GLuint fs_texture_binding_2d(const fs_context *c);
 
 /* Applies texturing to a quad whose tex[][] holds the interpolated
  * (s, t, r, q) of all four pixels. */
