@@ -182,10 +182,18 @@ static uint32_t count_u32(int64_t n)
 #define FS_CK_ARR(k, name, cnt, esize) \
     if ((int64_t)(cnt) > 0 && (name == NULL || (int64_t)call->a[k].count < (int64_t)(cnt))) \
         return bad_argument(c, call, k);
-/* Outputs from a replayed trace have no buffer: give them scratch space. */
+/* Outputs from a replayed trace have no buffer: give them scratch space.
+ * More than FS_SCRATCH_MAX bytes (glGenQueries(1.6e9, ...) from a bad trace
+ * asked for 6.5 GB before the command's own bound was reached) is
+ * GL_OUT_OF_MEMORY and the command is not executed (GL 1.5 spec 2.5). */
+#define FS_SCRATCH_MAX ((int64_t)1 << 30)
 #define FS_CK_OUT(k, name, cnt, esize) \
     if (name == NULL) {                                                        \
         int64_t need_ = (int64_t)(cnt) > 16 ? (int64_t)(cnt) : 16;             \
+        if (need_ > FS_SCRATCH_MAX / (int64_t)(esize)) {                       \
+            fs_error(c, GL_OUT_OF_MEMORY);                                     \
+            return 0;                                                          \
+        }                                                                      \
         name = fs_scratch(c, (size_t)need_ * (esize));                         \
         if (name == NULL) return bad_argument(c, call, k);                     \
     }

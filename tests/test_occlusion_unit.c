@@ -747,6 +747,24 @@ TEST(occlusion_buffers_from_trace_data_are_not_written)
     fs_context_destroy(c);
 }
 
+/* A replayed glGenQueries(1.6e9, ...) has no output buffer: the dispatcher
+ * must not allocate its 6.4 GB of scratch output first (found by
+ * tests/fuzz/fuzz_gl.c as an out-of-memory) but raise GL_OUT_OF_MEMORY. */
+TEST(gen_queries_from_trace_huge_count_allocates_nothing)
+{
+    fs_context *c = new_ctx(1, 32);
+    REQUIRE(c);
+    fs_call call = {0};
+    call.cmd = FS_CMD_GenQueriesARB;
+    call.nargs = 2;
+    call.a[0].i = 1600000000;
+    call.a[1].out = NULL;
+    CHECK_EQ_INT(fs_submit(c, &call), 0);
+    CHECK_EQ_INT(fsglGetError(c), GL_OUT_OF_MEMORY);
+    CHECK(c->scratch_size < ((size_t)1 << 30));
+    fs_context_destroy(c);
+}
+
 /* The dispatcher gives a pointer argument's trace data a meaning for the
  * client-array pointer calls (copied into the context) and drops it for
  * glOcclusionBuffers (above).  A new command with a pointer argument must
@@ -771,6 +789,7 @@ TEST(every_pointer_argument_has_a_rule_for_trace_data)
 TEST_LIST = {
     TEST_ENTRY(errors_and_state),
     TEST_ENTRY(occlusion_buffers_from_trace_data_are_not_written),
+    TEST_ENTRY(gen_queries_from_trace_huge_count_allocates_nothing),
     TEST_ENTRY(every_pointer_argument_has_a_rule_for_trace_data),
     TEST_ENTRY(query_errors_vs_osmesa),
     TEST_ENTRY(random_boxes_counters_vs_recount_and_osmesa),
