@@ -158,7 +158,11 @@ test_glxgears_capture() {
     xvfb-run -a -s "-screen 0 300x300x24" timeout -s TERM 2 \
         apitrace trace -o "$WORK/gears.trace" glxgears >/dev/null 2>&1
     [ -s "$WORK/gears.trace" ] || fail "no capture"
-    "$FRAGSIM" check --quiet --frames 0-9 --out "$WORK/gears" "$WORK/gears.trace" >"$WORK/g.log" 2>&1 \
+    # --tolerance 1: a live capture's gear angles depend on timing, and at some
+    # angles a lit pixel is off by 1 from llvmpipe (docs/check.md's known
+    # difference); the fixed glxgears capture in tests/conformance/ is held
+    # to tolerance 0 by make conformance.
+    "$FRAGSIM" check --quiet --tolerance 1 --frames 0-9 --out "$WORK/gears" "$WORK/gears.trace" >"$WORK/g.log" 2>&1 \
         || { cat "$WORK/g.log"; fail "check of the glxgears capture failed"; }
     cat "$WORK/g.log"
     [ "$(grep -c '^frame' "$WORK/g.log")" -eq 10 ] || fail "expected 10 frames"
