@@ -663,13 +663,7 @@ static bool box_meets_sample(const fs_context *c, const fs_cycle_tiles *t, const
 {
     const int H = c->fb.height;
     const int gy0 = fs_raster_row_to_gl(H, e->y1), gy1 = fs_raster_row_to_gl(H, e->y0);
-    const int qx0 = e->x0 & ~1, qy0 = gy0 & ~1;
-    const int sh = t->shift;
-    for (int ty = qy0 >> sh; ty <= gy1 >> sh; ty++)
-        for (int tx = qx0 >> sh; tx <= e->x1 >> sh; tx++)
-            if (fs_cycle_tile_sampled(t, (uint32_t)tx, (uint32_t)ty))
-                return true;
-    return false;
+    return fs_cycle_tiles_meet_box(t, e->x0 & ~1, gy0 & ~1, e->x1, gy1);
 }
 
 /* t: the tile sample, NULL outside tile sampling; then only its tiles of

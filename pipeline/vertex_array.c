@@ -366,11 +366,7 @@ bool fs_vs_box_sampled(const fs_cycle_tiles *t, float x0, float y0, float x1, fl
         return true; /* NaN: let the rasterizer decide */
     int ix0 = box_pixel(x0 - 1.0f), iy0 = box_pixel(y0 - 1.0f);
     int ix1 = box_pixel(x1 + 1.0f), iy1 = box_pixel(y1 + 1.0f);
-    for (int ty = iy0 >> t->shift; ty <= iy1 >> t->shift; ty++)
-        for (int tx = ix0 >> t->shift; tx <= ix1 >> t->shift; tx++)
-            if (fs_cycle_tile_sampled(t, (uint32_t)tx, (uint32_t)ty))
-                return true;
-    return false;
+    return fs_cycle_tiles_meet_box(t, ix0, iy0, ix1, iy1);
 }
 
 static uint32_t index_at(const void *indices, GLenum type, size_t i);

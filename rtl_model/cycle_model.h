@@ -113,6 +113,18 @@ static inline bool fs_cycle_tile_sampled(const fs_cycle_tiles *t, uint32_t tx, u
         return t->map[(size_t)ty * t->map_w + tx];
     return fs_cycle_tile_hashed(t, tx, ty);
 }
+/* Whether a sampled tile meets the window-space pixel box [x0, x1] x
+ * [y0, y1] (inclusive): the one walk of the tile map over a box, for the
+ * vertex stage's batch and triangle boxes and the rasterizer's triangles. */
+static inline bool fs_cycle_tiles_meet_box(const fs_cycle_tiles *t, int x0, int y0, int x1, int y1)
+{
+    const int sh = t->shift;
+    for (int ty = y0 >> sh; ty <= y1 >> sh; ty++)
+        for (int tx = x0 >> sh; tx <= x1 >> sh; tx++)
+            if (fs_cycle_tile_sampled(t, (uint32_t)tx, (uint32_t)ty))
+                return true;
+    return false;
+}
 /* The tile sample when tile sampling is on, else NULL (cy may be NULL). */
 static inline const fs_cycle_tiles *fs_cycle_tiles_active(const fs_cycle *cy)
 {
