@@ -421,8 +421,26 @@ void fs_exec_DeleteLists(fs_context *c, GLuint list, GLsizei range)
     fs_dlist_state *s = state(c);
     if (!s)
         return;
-    for (GLsizei i = 0; i < range; i++)
-        delete_list(s, list + (GLuint)i);
+    /* Names run from list to list + range - 1, and none is above 2^32 - 1. */
+    uint64_t end = (uint64_t)list + (uint64_t)range;
+    if (end > 0x100000000ull)
+        end = 0x100000000ull;
+    if ((uint64_t)range > s->nslots) {
+        /* A range wider than the table (glDeleteLists(1, 2147483647) from a
+         * bad trace probed 2^31 names for minutes; found by fuzz_gl): visit
+         * the lists held instead of the names asked for. */
+        for (size_t i = 0; i < s->nslots; i++) {
+            dl_list *l = s->slots[i];
+            if (l && l != TOMBSTONE(s) && l->name >= list && l->name < end) {
+                list_free(l);
+                s->slots[i] = TOMBSTONE(s);
+                s->names--;
+            }
+        }
+        return;
+    }
+    for (uint64_t n = list; n < end; n++)
+        delete_list(s, (GLuint)n);
 }
 
 void fs_exec_ListBase(fs_context *c, GLuint base)

@@ -522,6 +522,29 @@ TEST(gen_lists_huge_range_is_out_of_memory)
     fs_context_destroy(c);
 }
 
+/* glDeleteLists of a huge range deletes the lists in it without probing
+ * every name (2^31 probes took minutes; found by fuzz_gl), and names do not
+ * wrap past 2^32 - 1. */
+TEST(delete_lists_huge_range_is_quick)
+{
+    fs_context *c = ctx(8, 8);
+    REQUIRE(c);
+    CHECK_EQ_UINT(fsglGenLists(c, 3), 1);
+    fsglNewList(c, 1000, GL_COMPILE);
+    fsglEndList(c);
+    fsglNewList(c, 0xffffffffu, GL_COMPILE);
+    fsglEndList(c);
+    fsglDeleteLists(c, 2, 2147483647); /* 2, 3 and 1000; not 1, not 2^32 - 1 */
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    CHECK(fsglIsList(c, 1));
+    CHECK(!fsglIsList(c, 2) && !fsglIsList(c, 3) && !fsglIsList(c, 1000));
+    CHECK(fsglIsList(c, 0xffffffffu));
+    fsglDeleteLists(c, 0xfffffff0u, 100); /* up to 2^32 - 1, no wrap to 1 */
+    CHECK(!fsglIsList(c, 0xffffffffu));
+    CHECK(fsglIsList(c, 1));
+    fs_context_destroy(c);
+}
+
 TEST(color_conversions_table_2_9)
 {
     fs_context *c = ctx(16, 16);
@@ -965,6 +988,7 @@ TEST_LIST = {
     TEST_ENTRY(begin_end_and_array_errors),
     TEST_ENTRY(array_element_reads_enabled_arrays_only),
     TEST_ENTRY(gen_lists_huge_range_is_out_of_memory),
+    TEST_ENTRY(delete_lists_huge_range_is_quick),
     TEST_ENTRY(color_conversions_table_2_9),
     TEST_ENTRY(lit_sphere_vs_osmesa),
     TEST_ENTRY(gears_vs_osmesa),
