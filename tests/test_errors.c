@@ -12,6 +12,7 @@
 #include <unistd.h>
 #include <jansson.h>
 #include "check.h"
+#include "trace_build.h"
 #include "../driver/callset.h"
 #include "../driver/error_log.h"
 #include "../driver/image.h"
@@ -85,21 +86,11 @@ typedef struct tb {
     const char *names[256];
 } tb;
 
-static fs_tval ival(int64_t v) { fs_tval x; memset(&x, 0, sizeof x); x.type = FS_TV_SINT; x.i = v; return x; }
-static fs_tval fval(double v) { fs_tval x; memset(&x, 0, sizeof x); x.type = FS_TV_FLOAT; x.d = v; return x; }
-static fs_tval eval(int64_t v, const char *name) { fs_tval x = ival(v); x.type = FS_TV_ENUM; x.enum_name = name; return x; }
 
 /* Writes a call; returns its ordinal in the trace. */
 static int call(tb *t, const char *name, int n, const fs_tval *args)
 {
-    static const char *const argnames[10] = {"a", "b", "c", "d", "e", "f", "g", "h", "i", "j"};
-    fs_tcall c;
-    memset(&c, 0, sizeof c);
-    c.name = name;
-    c.nargs = (unsigned)n;
-    c.arg_names = argnames;
-    c.args = args;
-    fs_trace_write(t->w, &c);
+    tb_write_call(t->w, name, n, args, 0);
     if (t->n < 256)
         t->names[t->n] = name;
     return t->n++;
@@ -107,11 +98,11 @@ static int call(tb *t, const char *name, int n, const fs_tval *args)
 
 static void triangle(tb *t)
 {
-    fs_tval m = eval(GL_TRIANGLES, "GL_TRIANGLES");
+    fs_tval m = tb_eval(GL_TRIANGLES, "GL_TRIANGLES");
     call(t, "glBegin", 1, &m);
     static const float v[3][2] = {{-1, -1}, {1, -1}, {0, 1}};
     for (int i = 0; i < 3; i++) {
-        fs_tval a[2] = {fval(v[i][0]), fval(v[i][1])};
+        fs_tval a[2] = {tb_fval(v[i][0]), tb_fval(v[i][1])};
         call(t, "glVertex2f", 2, a);
     }
     call(t, "glEnd", 0, NULL);
@@ -130,39 +121,39 @@ static int write_trace(tb *t, const char *name, expected *exp, int *nexp)
         return -1;
     t->n = 0;
     *nexp = 0;
-    fs_tval vp[4] = {ival(0), ival(0), ival(16), ival(12)};
+    fs_tval vp[4] = {tb_ival(0), tb_ival(0), tb_ival(16), tb_ival(12)};
     call(t, "glViewport", 4, vp);
-    fs_tval list[2] = {ival(1), eval(GL_COMPILE, "GL_COMPILE")};
+    fs_tval list[2] = {tb_ival(1), tb_eval(GL_COMPILE, "GL_COMPILE")};
     call(t, "glNewList", 2, list);
-    fs_tval neg = fval(-1);
+    fs_tval neg = tb_fval(-1);
     call(t, "glLineWidth", 1, &neg);
     call(t, "glEndList", 0, NULL);
     for (int f = 0; f < 3; f++) {
-        fs_tval cc[4] = {fval(0.25 * f), fval(0.5), fval(0.75), fval(0.5)};
+        fs_tval cc[4] = {tb_fval(0.25 * f), tb_fval(0.5), tb_fval(0.75), tb_fval(0.5)};
         call(t, "glClearColor", 4, cc);
-        fs_tval bits = ival(GL_COLOR_BUFFER_BIT);
+        fs_tval bits = tb_ival(GL_COLOR_BUFFER_BIT);
         call(t, "glClear", 1, &bits);
         if (f == 0) {
-            fs_tval bad = ival(0x1234); /* not a capability: GL_INVALID_ENUM (2.5) */
+            fs_tval bad = tb_ival(0x1234); /* not a capability: GL_INVALID_ENUM (2.5) */
             exp[(*nexp)++] = (expected){call(t, "glEnable", 1, &bad), GL_INVALID_ENUM};
         }
-        fs_tval col[3] = {fval(1), fval(0.5), fval(0)};
+        fs_tval col[3] = {tb_fval(1), tb_fval(0.5), tb_fval(0)};
         call(t, "glColor3f", 3, col);
         triangle(t);
         if (f == 1) {
             call(t, "glFragsimNoSuchCall", 0, NULL); /* numbered, not executed */
             /* the list's glLineWidth(-1): GL_INVALID_VALUE (3.4), the glCallList's */
-            fs_tval one = ival(1);
+            fs_tval one = tb_ival(1);
             exp[(*nexp)++] = (expected){call(t, "glCallList", 1, &one), GL_INVALID_VALUE};
             exp[(*nexp)++] = (expected){call(t, "glPopMatrix", 0, NULL), GL_STACK_UNDERFLOW};
-            fs_tval m = eval(GL_TRIANGLES, "GL_TRIANGLES");
+            fs_tval m = tb_eval(GL_TRIANGLES, "GL_TRIANGLES");
             call(t, "glBegin", 1, &m);
-            fs_tval dt = eval(GL_DEPTH_TEST, "GL_DEPTH_TEST");
+            fs_tval dt = tb_eval(GL_DEPTH_TEST, "GL_DEPTH_TEST");
             /* glEnable between glBegin and glEnd: GL_INVALID_OPERATION (2.6.3) */
             exp[(*nexp)++] = (expected){call(t, "glEnable", 1, &dt), GL_INVALID_OPERATION};
             call(t, "glEnd", 0, NULL);
         }
-        fs_tval r[4] = {fval(-0.5), fval(-0.5), fval(0.25), fval(0.5)};
+        fs_tval r[4] = {tb_fval(-0.5), tb_fval(-0.5), tb_fval(0.25), tb_fval(0.5)};
         call(t, "glRectf", 4, r);
         call(t, "glXSwapBuffers", 0, NULL);
     }

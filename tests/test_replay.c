@@ -9,11 +9,11 @@
 #include <unistd.h>
 #include <jansson.h>
 #include "check.h"
+#include "trace_build.h"
 #include "../driver/replay.h"
 #include "../driver/trace.h"
 #include "../pipeline/context.h"
 
-#define MAXV 10
 
 typedef struct tb {
     fs_trace_writer *w;
@@ -28,36 +28,25 @@ static int tb_open(tb *t, const char *name)
     return t->w ? 0 : -1;
 }
 
-static fs_tval ival(int64_t v) { fs_tval x; memset(&x, 0, sizeof x); x.type = FS_TV_SINT; x.i = v; return x; }
-static fs_tval fval(double v) { fs_tval x; memset(&x, 0, sizeof x); x.type = FS_TV_FLOAT; x.d = v; return x; }
-static fs_tval eval(int64_t v, const char *name) { fs_tval x = ival(v); x.type = FS_TV_ENUM; x.enum_name = name; return x; }
 
 static void call(tb *t, const char *name, int n, const fs_tval *args, uint32_t flags)
 {
-    static const char *const argnames[MAXV] = {"a", "b", "c", "d", "e", "f", "g", "h", "i", "j"};
-    fs_tcall c;
-    memset(&c, 0, sizeof c);
-    c.name = name;
-    c.nargs = (unsigned)n;
-    c.arg_names = argnames;
-    c.args = args;
-    c.flags = flags;
-    fs_trace_write(t->w, &c);
+    tb_write_call(t->w, name, n, args, flags);
 }
 
 static void viewport(tb *t, int w, int h)
 {
-    fs_tval a[4] = {ival(0), ival(0), ival(w), ival(h)};
+    fs_tval a[4] = {tb_ival(0), tb_ival(0), tb_ival(w), tb_ival(h)};
     call(t, "glViewport", 4, a, 0);
 }
 
 static void triangle(tb *t)
 {
-    fs_tval m = eval(GL_TRIANGLES, "GL_TRIANGLES");
+    fs_tval m = tb_eval(GL_TRIANGLES, "GL_TRIANGLES");
     call(t, "glBegin", 1, &m, 0);
     static const float v[3][2] = {{-1, -1}, {1, -1}, {0, 1}};
     for (int i = 0; i < 3; i++) {
-        fs_tval a[2] = {fval(v[i][0]), fval(v[i][1])};
+        fs_tval a[2] = {tb_fval(v[i][0]), tb_fval(v[i][1])};
         call(t, "glVertex2f", 2, a, 0);
     }
     call(t, "glEnd", 0, NULL, 0);
@@ -173,7 +162,7 @@ TEST(frames_from_swaps_and_size_from_viewport)
     viewport(&t, 64, 48);
     for (int f = 0; f < 3; f++) {
         triangle(&t);
-        fs_tval a[2] = {ival(0), ival(0)};
+        fs_tval a[2] = {tb_ival(0), tb_ival(0)};
         call(&t, "glXSwapBuffers", 2, a, 0);
         call(&t, "glFinish", 0, NULL, 0); /* swaps win over glFinish */
     }
@@ -230,7 +219,7 @@ TEST(unknown_calls_are_counted_by_name)
     tb t;
     REQUIRE(tb_open(&t, "unknown") == 0);
     viewport(&t, 16, 16);
-    fs_tval a[2] = {eval(GL_FOG_DENSITY, "GL_FOG_DENSITY"), fval(0.5)};
+    fs_tval a[2] = {tb_eval(GL_FOG_DENSITY, "GL_FOG_DENSITY"), tb_fval(0.5)};
     call(&t, "glFogf", 2, a, 0);
     call(&t, "glFogf", 2, a, 0);
     call(&t, "glNoSuchCall", 0, NULL, 0);
@@ -251,17 +240,17 @@ TEST(draw_without_recorded_arrays_is_refused)
     tb t;
     REQUIRE(tb_open(&t, "arrays") == 0);
     viewport(&t, 16, 16);
-    fs_tval p[4] = {ival(3), eval(GL_FLOAT, "GL_FLOAT"), ival(0), ival(0)};
+    fs_tval p[4] = {tb_ival(3), tb_eval(GL_FLOAT, "GL_FLOAT"), tb_ival(0), tb_ival(0)};
     p[3].type = FS_TV_OPAQUE;
     p[3].u = 0x1234; /* an address in the traced program: must never be read */
     call(&t, "glVertexPointer", 4, p, 0);
-    fs_tval e = eval(GL_VERTEX_ARRAY, "GL_VERTEX_ARRAY");
+    fs_tval e = tb_eval(GL_VERTEX_ARRAY, "GL_VERTEX_ARRAY");
     call(&t, "glEnableClientState", 1, &e, 0);
-    fs_tval d[3] = {eval(GL_TRIANGLES, "GL_TRIANGLES"), ival(0), ival(3)};
+    fs_tval d[3] = {tb_eval(GL_TRIANGLES, "GL_TRIANGLES"), tb_ival(0), tb_ival(3)};
     call(&t, "glDrawArrays", 3, d, 0);
     /* Recorded data too short for the draw: refused as well. */
     static const float short_data[3] = {0, 0, 0};
-    fs_tval q[4] = {ival(3), eval(GL_FLOAT, "GL_FLOAT"), ival(0), ival(0)};
+    fs_tval q[4] = {tb_ival(3), tb_eval(GL_FLOAT, "GL_FLOAT"), tb_ival(0), tb_ival(0)};
     q[3].type = FS_TV_BLOB;
     q[3].str.ptr = (const char *)short_data;
     q[3].str.len = sizeof short_data;
@@ -305,21 +294,21 @@ TEST(rejected_pointer_call_keeps_the_arrays_data)
     viewport(&t, 16, 16);
     static const float tri[6] = {-1, -1, 3, -1, -1, 3}; /* covers the window */
     static const float zeros[600];
-    fs_tval good[4] = {ival(2), eval(GL_FLOAT, "GL_FLOAT"), ival(0), blob(tri, sizeof tri)};
+    fs_tval good[4] = {tb_ival(2), tb_eval(GL_FLOAT, "GL_FLOAT"), tb_ival(0), blob(tri, sizeof tri)};
     call(&t, "glVertexPointer", 4, good, 0);
-    fs_tval e = eval(GL_VERTEX_ARRAY, "GL_VERTEX_ARRAY");
+    fs_tval e = tb_eval(GL_VERTEX_ARRAY, "GL_VERTEX_ARRAY");
     call(&t, "glEnableClientState", 1, &e, 0);
-    fs_tval bad_size[4] = {ival(1), eval(GL_FLOAT, "GL_FLOAT"), ival(0), blob(zeros, sizeof zeros)};
+    fs_tval bad_size[4] = {tb_ival(1), tb_eval(GL_FLOAT, "GL_FLOAT"), tb_ival(0), blob(zeros, sizeof zeros)};
     call(&t, "glVertexPointer", 4, bad_size, 0);
-    fs_tval long_draw[3] = {eval(GL_TRIANGLES, "GL_TRIANGLES"), ival(0), ival(297)};
+    fs_tval long_draw[3] = {tb_eval(GL_TRIANGLES, "GL_TRIANGLES"), tb_ival(0), tb_ival(297)};
     call(&t, "glDrawArrays", 3, long_draw, 0);
-    fs_tval m = eval(GL_POINTS, "GL_POINTS");
+    fs_tval m = tb_eval(GL_POINTS, "GL_POINTS");
     call(&t, "glBegin", 1, &m, 0);
-    fs_tval in_begin[4] = {ival(2), eval(GL_FLOAT, "GL_FLOAT"), ival(0), blob(zeros, sizeof zeros)};
+    fs_tval in_begin[4] = {tb_ival(2), tb_eval(GL_FLOAT, "GL_FLOAT"), tb_ival(0), blob(zeros, sizeof zeros)};
     call(&t, "glVertexPointer", 4, in_begin, 0);
     call(&t, "glEnd", 0, NULL, 0);
     call(&t, "glDrawArrays", 3, long_draw, 0);
-    fs_tval draw[3] = {eval(GL_TRIANGLES, "GL_TRIANGLES"), ival(0), ival(3)};
+    fs_tval draw[3] = {tb_eval(GL_TRIANGLES, "GL_TRIANGLES"), tb_ival(0), tb_ival(3)};
     call(&t, "glDrawArrays", 3, draw, 0);
     REQUIRE(fs_trace_finish(t.w) == 0);
     for (size_t max_record = 0; max_record < 2; max_record++) { /* record, then file */
@@ -354,7 +343,7 @@ TEST(short_array_argument_is_malformed)
     tb t;
     REQUIRE(tb_open(&t, "short") == 0);
     viewport(&t, 16, 16);
-    fs_tval elems[3] = {fval(1), fval(2), fval(3)};
+    fs_tval elems[3] = {tb_fval(1), tb_fval(2), tb_fval(3)};
     fs_tval m;
     memset(&m, 0, sizeof m);
     m.type = FS_TV_ARRAY;
@@ -394,7 +383,7 @@ TEST(record_replays_what_the_file_holds)
     viewport(&t, 32, 32);
     fs_tval elems[16];
     for (int i = 0; i < 16; i++)
-        elems[i] = fval(i == 0 || i == 5 || i == 10 || i == 15 ? 1 : 0.25 * i);
+        elems[i] = tb_fval(i == 0 || i == 5 || i == 10 || i == 15 ? 1 : 0.25 * i);
     fs_tval m;
     memset(&m, 0, sizeof m);
     m.type = FS_TV_ARRAY;
@@ -404,17 +393,17 @@ TEST(record_replays_what_the_file_holds)
     static const float verts[9] = {-1, -1, 0, 1, -1, 0, 0, 1, 0};
     static const unsigned char texels[4 * 4 * 4] = {1, 2, 3, 4, 5, 6, 7, 8, 9};
     for (int f = 0; f < 2; f++) {
-        fs_tval vp[4] = {ival(3), eval(GL_FLOAT, "GL_FLOAT"), ival(0), ival(0)};
+        fs_tval vp[4] = {tb_ival(3), tb_eval(GL_FLOAT, "GL_FLOAT"), tb_ival(0), tb_ival(0)};
         vp[3].type = FS_TV_BLOB;
         vp[3].str.ptr = (const char *)verts;
         vp[3].str.len = f ? sizeof verts : 0; /* an empty blob: the draw is then refused */
         call(&t, "glVertexPointer", 4, vp, 1);
-        fs_tval e = eval(GL_VERTEX_ARRAY, "GL_VERTEX_ARRAY");
+        fs_tval e = tb_eval(GL_VERTEX_ARRAY, "GL_VERTEX_ARRAY");
         call(&t, "glEnableClientState", 1, &e, 0);
-        fs_tval d[3] = {eval(GL_TRIANGLES, "GL_TRIANGLES"), ival(0), ival(3)};
+        fs_tval d[3] = {tb_eval(GL_TRIANGLES, "GL_TRIANGLES"), tb_ival(0), tb_ival(3)};
         call(&t, "glDrawArrays", 3, d, 0);
-        fs_tval ti[9] = {eval(GL_TEXTURE_2D, "GL_TEXTURE_2D"), ival(0), ival(GL_RGBA), ival(4), ival(4), ival(0),
-                         eval(GL_RGBA, "GL_RGBA"), eval(GL_UNSIGNED_BYTE, "GL_UNSIGNED_BYTE"), ival(0)};
+        fs_tval ti[9] = {tb_eval(GL_TEXTURE_2D, "GL_TEXTURE_2D"), tb_ival(0), tb_ival(GL_RGBA), tb_ival(4), tb_ival(4), tb_ival(0),
+                         tb_eval(GL_RGBA, "GL_RGBA"), tb_eval(GL_UNSIGNED_BYTE, "GL_UNSIGNED_BYTE"), tb_ival(0)};
         ti[8].type = FS_TV_BLOB;
         ti[8].str.ptr = (const char *)texels;
         ti[8].str.len = sizeof texels;
@@ -426,7 +415,7 @@ TEST(record_replays_what_the_file_holds)
         s.str.len = 5;
         call(&t, "glStringMarkerGREMEDY", 1, &s, 0);
         triangle(&t);
-        fs_tval a[2] = {ival(0), ival(0)};
+        fs_tval a[2] = {tb_ival(0), tb_ival(0)};
         call(&t, "glXSwapBuffers", 2, a, 0);
     }
     run_result r;

@@ -1,0 +1,34 @@
+/*
+ * Helpers for tests that write small apitrace traces with fragsim's trace
+ * writer (driver/trace.h): argument values and one call.  Shared by
+ * test_replay.c and test_errors.c.
+ */
+#ifndef FS_TEST_TRACE_BUILD_H
+#define FS_TEST_TRACE_BUILD_H
+#include <string.h>
+#include "../driver/trace.h"
+
+static inline fs_tval tb_ival(int64_t v) { fs_tval x; memset(&x, 0, sizeof x); x.type = FS_TV_SINT; x.i = v; return x; }
+static inline fs_tval tb_fval(double v) { fs_tval x; memset(&x, 0, sizeof x); x.type = FS_TV_FLOAT; x.d = v; return x; }
+static inline fs_tval tb_eval(int64_t v, const char *name)
+{
+    fs_tval x = tb_ival(v);
+    x.type = FS_TV_ENUM;
+    x.enum_name = name;
+    return x;
+}
+
+/* Writes the call NAME(args[0..n-1]); arguments are named a, b, c, ... */
+static inline void tb_write_call(fs_trace_writer *w, const char *name, int n, const fs_tval *args, uint32_t flags)
+{
+    static const char *const argnames[10] = {"a", "b", "c", "d", "e", "f", "g", "h", "i", "j"};
+    fs_tcall c;
+    memset(&c, 0, sizeof c);
+    c.name = name;
+    c.nargs = (unsigned)n;
+    c.arg_names = argnames;
+    c.args = args;
+    c.flags = flags;
+    fs_trace_write(w, &c);
+}
+#endif
