@@ -19,6 +19,7 @@ int fs_cli_rom(int argc, char **argv);
 /* driver/cli_cycle.c: the cycle-level model behind `fragsim replay --mode`. */
 #include <stdio.h>
 #include "../pipeline/context.h"
+#include "../rtl_model/cycle_model.h"
 typedef struct fs_cli_cycle fs_cli_cycle;
 /* "functional" -> -1, "cycle", "sampled" -> an fs_cycle_mode; returns -1 for
  * an unknown name. */

@@ -58,8 +58,7 @@ void fs_exec_Clear(fs_context *c, GLbitfield mask)
     fs_framebuffer *fb = &c->fb;
     const fs_fragment_state *f = &c->frag;
     size_t w = (size_t)fb->width;
-    if (c->cycle)
-        fs_cycle_clear(c->cycle, c, mask, x1 - x0, y1 - y0);
+    FS_OBSERVE(c, clear, c, mask, x1 - x0, y1 - y0);
 
     bool color = (mask & GL_COLOR_BUFFER_BIT) && c->draw_buffer != GL_NONE && /* 4.2.1 */
                  (f->color_mask[0] || f->color_mask[1] || f->color_mask[2] || f->color_mask[3]);
@@ -74,16 +73,16 @@ void fs_exec_Clear(fs_context *c, GLbitfield mask)
     /* Only the low s bits of the clear value are used (4.2.3). */
     unsigned sv = (unsigned)f->clear_stencil & smax;
     bool stencil = (mask & GL_STENCIL_BUFFER_BIT) && wm;
-    /* Sampled mode's tile sample: nothing outside the sampled tiles is
-     * rendered, so only they are cleared (a one-frame trace's clear of a
-     * 1024 x 1024 window took a twentieth of its sampled run). */
-    const fs_cycle_tiles *ts = fs_cycle_tiles_active(c->cycle);
+    /* The observer's tile mask (observer.h): nothing outside the masked
+     * tiles is rendered, so only they are cleared (a 1024 x 1024 window's
+     * clear cost a twentieth of such a one-frame run). */
+    const fs_tile_mask *ts = fs_tile_mask_active(c);
     const int sh = ts ? ts->shift : 0;
     for (int y = y0; y < y1; y++) {
         for (int tx = ts ? x0 >> sh : 0; tx <= (ts ? (x1 - 1) >> sh : 0); tx++) {
             int a = x0, b = x1;
             if (ts) {
-                if (!fs_cycle_tile_sampled(ts, (uint32_t)tx, (uint32_t)y >> sh))
+                if (!fs_tile_mask_has(ts, (uint32_t)tx, (uint32_t)y >> sh))
                     continue;
                 a = tx << sh > x0 ? tx << sh : x0;
                 b = (tx + 1) << sh < x1 ? (tx + 1) << sh : x1;

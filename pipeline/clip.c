@@ -131,7 +131,8 @@ static void emit_cverts(fs_context *c, const fs_vs_setup *s, const cvert *a, con
 }
 
 /* An unclipped triangle goes straight from its fs_pverts, without cvert
- * copies: in sampled mode most triangles are only snapped and charged. */
+ * copies: under a tile mask most triangles are only snapped and their
+ * areas reported. */
 void fs_emit_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
                       const fs_pvert *v1, const fs_pvert *v2, int provoking)
 {

@@ -18,7 +18,7 @@
 #include "vertex_stage.h"
 #include "state.h"
 #include "../driver/gl_call.h"
-#include "../rtl_model/cycle_model.h"
+#include "observer.h"
 
 struct fs_dlist_state;      /* driver/display_list.c */
 struct fs_capture;          /* driver/capture.c */
@@ -81,9 +81,9 @@ struct fs_context {
     struct fs_occlusion *occlusion;
     /* The texture unit's state (units/texture_unit.h). */
     struct fs_texture_state *texture;
-    /* The cycle-level model observing the work (rtl_model/cycle_model.h);
-     * NULL in functional mode, where each hook costs one branch. */
-    struct fs_cycle *cycle;
+    /* Whoever watches the work (observer.h); NULL in functional mode,
+     * where each report point costs one branch. */
+    fs_observer *observer;
 
     fs_stats stats;               /* counters of the current frame */
     uint64_t unsupported[FS_CMD_COUNT]; /* by command: executor missing or mode unsupported */
@@ -130,4 +130,21 @@ void fs_context_set_double_buffered(fs_context *c, bool double_buffered);
  * section), GL_OUT_OF_MEMORY beyond FS_MAX_NAMES (which GL allows for any
  * command). */
 bool fs_gen_names_ok(fs_context *c, GLsizei n, size_t held);
+
+/* The observer's tile mask while it is on, else NULL (observer.h). */
+static inline const fs_tile_mask *fs_tile_mask_active(const fs_context *c)
+{
+    return c->observer && c->observer->mask.on ? &c->observer->mask : NULL;
+}
+/* Reports to the observer, if any: FS_OBSERVE(c, clear, c, mask, w, h). */
+#define FS_OBSERVE(c, hook, ...)                                                    \
+    do {                                                                            \
+        if ((c)->observer)                                                          \
+            (c)->observer->ops->hook((c)->observer->user, __VA_ARGS__);            \
+    } while (0)
+/* Whether the observer skips a draw of n vertices in mode (observer.h). */
+static inline bool fs_draw_skipped(fs_context *c, GLenum mode, size_t n)
+{
+    return c->observer && !c->observer->ops->draw(c->observer->user, c, mode, n);
+}
 #endif

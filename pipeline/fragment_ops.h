@@ -53,8 +53,8 @@ typedef struct fs_fragment_state {
 
 void fs_fragment_state_init(fs_fragment_state *f);
 
-/* What the per-fragment operations did to one quad, for the observers (the
- * cycle model) to take instead of diffing the statistics: fragments
+/* What the per-fragment operations did to one quad, for the observer
+ * (observer.h) to take instead of diffing the statistics: fragments
  * discarded before the stencil and depth tests (pixel ownership, scissor,
  * alpha test), fragments that passed every test (what GL_SAMPLES_PASSED
  * counts), fragments written. */

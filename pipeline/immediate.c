@@ -185,8 +185,8 @@ void fs_exec_End(fs_context *c)
         return;
     size_t n = v->iv_n;
     v->iv_n = 0;
-    if (c->cycle && !fs_cycle_draw(c->cycle, c, c->prim.mode, n))
-        return; /* sampled mode: this draw is estimated, not executed */
+    if (fs_draw_skipped(c, c->prim.mode, n))
+        return;
     c->stats.vertices += n;
     if (!fs_vs_reserve_pv(c, n)) {
         fs_error(c, GL_OUT_OF_MEMORY);
@@ -205,7 +205,7 @@ void fs_exec_End(fs_context *c)
         }
         v->mat_seg_n = 0;
     } else {
-        lazy = fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_sample(c, c->prim.mode));
+        lazy = fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_mask(c, c->prim.mode));
     }
     fs_prim_draw(c, &v->setup, c->prim.mode, v->pv, lazy ? v->iv : NULL, NULL, n, c->prim.list_depth > 0);
 }

@@ -58,10 +58,8 @@ void fs_raster_state_init(fs_raster_state *r, int subpixel_bits)
     r->use_y_raster = false;
 #if FS_RASTER_HAVE_FMA
     r->has_fma = __builtin_cpu_supports("fma");
-    r->has_avx2 = r->has_fma && __builtin_cpu_supports("avx2");
 #else
     r->has_fma = false;
-    r->has_avx2 = false;
 #endif
 }
 
@@ -210,9 +208,9 @@ __attribute__((target("fma"))) static void emit_pixels_fma(const fs_prim_setup *
 
 void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
 {
-    /* Sampled mode's tile sample (docs/cycle_model.md): one branch in
-     * functional mode. */
-    if (c->cycle && fs_cycle_quad_skipped(c->cycle, q->x, q->y))
+    /* The observer's tile mask (observer.h): one branch in functional mode. */
+    const fs_tile_mask *tm = fs_tile_mask_active(c);
+    if (tm && !fs_tile_mask_has(tm, (uint32_t)q->x >> tm->shift, (uint32_t)q->y >> tm->shift))
         return;
     unsigned m = q->mask;
     q->front_facing = s->front;
@@ -224,8 +222,7 @@ void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
         if (s->use_tex)
             fs_texture_quad(c, q); /* texturing (GL 1.5 spec 3.8) precedes 4.1 */
         fs_quad_work w = fs_fragment_quad(c, q);
-        if (c->cycle)
-            fs_cycle_quad(c->cycle, c, q, &w);
+        FS_OBSERVE(c, quad, c, q, &w);
         return;
     }
 #endif
@@ -233,8 +230,7 @@ void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
     if (s->use_tex)
         fs_texture_quad(c, q);
     fs_quad_work w = fs_fragment_quad(c, q);
-    if (c->cycle)
-        fs_cycle_quad(c->cycle, c, q, &w);
+    FS_OBSERVE(c, quad, c, q, &w);
 }
 
 /* ---- generic plane regions (lines, points) ---- */
@@ -321,9 +317,9 @@ static void calc_coef(fs_plane *p, const coef_args *g, float a0, float a1, float
     p->constant = dadx == 0.0f && dady == 0.0f && p->a0 == a0;
 }
 
-static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e, const fs_cycle_tiles *t);
-static void charge_area(fs_context *c, const tri_edges *e, int64_t area2);
-static bool box_meets_sample(const fs_context *c, const fs_cycle_tiles *t, const tri_edges *e);
+static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e, const fs_tile_mask *t);
+static void report_area(fs_context *c, const tri_edges *e, int64_t area2);
+static bool box_meets_mask(const fs_context *c, const fs_tile_mask *t, const tri_edges *e);
 static void raster_tri_reference(fs_context *c, const fs_prim_setup *s, const tri_edges *e);
 
 /* What every triangle needs before its edges: snapped positions in
@@ -413,12 +409,12 @@ static bool tri_snap_box(fs_context *c, const float px[3], const float py[3], tr
     return true;
 }
 
-void fs_raster_triangle_charge(fs_context *c, const float x[3], const float y_raster[3])
+void fs_raster_triangle_dropped(fs_context *c, const float x[3], const float y_raster[3])
 {
     tri_snap t;
     if (!tri_snap_box(c, x, y_raster, &t))
         return;
-    charge_area(c, &t.e, t.area);
+    report_area(c, &t.e, t.area);
     c->stats.triangles_rasterized++;
 }
 
@@ -461,12 +457,12 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
         e.dcdy[i] = dcdy * (1 << order);
     }
 
-    /* Sampled mode's tile sample: a triangle none of whose box's tiles is
-     * sampled is charged its area and needs no attribute planes. */
-    const fs_cycle_tiles *ts = r->reference_path ? NULL : fs_cycle_tiles_active(c->cycle);
+    /* The observer's tile mask: a triangle none of whose box's tiles is
+     * masked only reports its area and needs no attribute planes. */
+    const fs_tile_mask *ts = r->reference_path ? NULL : fs_tile_mask_active(c);
     if (ts) {
-        charge_area(c, &e, t.area);
-        if (!box_meets_sample(c, ts, &e)) {
+        report_area(c, &e, t.area);
+        if (!box_meets_mask(c, ts, &e)) {
             c->stats.triangles_rasterized++;
             return;
         }
@@ -642,11 +638,11 @@ static inline void raster_tri_box(fs_context *c, const fs_prim_setup *s, const t
     }
 }
 
-/* Sampled mode's tile sample (docs/cycle_model.md): the triangle's area in
- * pixels (area2 is twice it, in units of 2^(2 * subpixel bits)), at most
- * its box, goes to the model, which times every triangle by its area and
- * prices it with the sampled quads. */
-static void charge_area(fs_context *c, const tri_edges *e, int64_t area2)
+/* While the tile mask is on: the triangle's area in pixels (area2 is twice
+ * it, in units of 2^(2 * subpixel bits)), at most its box, and the box's
+ * centre go to the observer (observer.h), which sees the triangle's quads
+ * in the masked tiles only. */
+static void report_area(fs_context *c, const tri_edges *e, int64_t area2)
 {
     const int H = c->fb.height;
     const int gy0 = fs_raster_row_to_gl(H, e->y1), gy1 = fs_raster_row_to_gl(H, e->y0);
@@ -654,21 +650,21 @@ static void charge_area(fs_context *c, const tri_edges *e, int64_t area2)
      * then by 2^(2 * subpixel bits), without a libm call per triangle. */
     double area = fabs((double)area2) * (0.5 / (double)((int64_t)1 << (2 * c->raster.subpixel_bits)));
     double box = (double)(e->x1 - e->x0 + 1) * (double)(e->y1 - e->y0 + 1);
-    fs_cycle_triangle_area(c->cycle, area < box ? area : box, (e->x0 + e->x1) / 2, (gy0 + gy1) / 2);
+    FS_OBSERVE(c, triangle_area, area < box ? area : box, (e->x0 + e->x1) / 2, (gy0 + gy1) / 2);
 }
 
-/* Whether a sampled tile meets the box (tiles are at least 2 pixels wide
+/* Whether a masked tile meets the box (tiles are at least 2 pixels wide
  * and aligned to even coordinates, so they hold whole quads). */
-static bool box_meets_sample(const fs_context *c, const fs_cycle_tiles *t, const tri_edges *e)
+static bool box_meets_mask(const fs_context *c, const fs_tile_mask *t, const tri_edges *e)
 {
     const int H = c->fb.height;
     const int gy0 = fs_raster_row_to_gl(H, e->y1), gy1 = fs_raster_row_to_gl(H, e->y0);
-    return fs_cycle_tiles_meet_box(t, e->x0 & ~1, gy0 & ~1, e->x1, gy1);
+    return fs_tile_mask_meets_box(t, e->x0 & ~1, gy0 & ~1, e->x1, gy1);
 }
 
-/* t: the tile sample, NULL outside tile sampling; then only its tiles of
- * the box are walked. */
-static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e, const fs_cycle_tiles *t)
+/* t: the observer's tile mask, else NULL; then only its tiles of the box
+ * are walked. */
+static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e, const fs_tile_mask *t)
 {
     const int H = s->height;
     const int gy0 = fs_raster_row_to_gl(H, e->y1), gy1 = fs_raster_row_to_gl(H, e->y0);
@@ -680,7 +676,7 @@ static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edg
     const int sh = t->shift;
     for (int ty = qy0 >> sh; ty <= gy1 >> sh; ty++)
         for (int tx = qx0 >> sh; tx <= e->x1 >> sh; tx++) {
-            if (!fs_cycle_tile_sampled(t, (uint32_t)tx, (uint32_t)ty))
+            if (!fs_tile_mask_has(t, (uint32_t)tx, (uint32_t)ty))
                 continue;
             int bx0 = tx << sh, by0 = ty << sh;
             int bx1 = bx0 + (1 << sh) - 1, by1 = by0 + (1 << sh) - 1;

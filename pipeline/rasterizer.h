@@ -89,9 +89,6 @@ typedef struct fs_raster_state {
      * does), otherwise an exact-in-practice double emulation.  Set by
      * fs_raster_state_init; tests clear it to compare the two. */
     bool has_fma;
-    /* ... and AVX2 as well: the vertex stage transforms positions 8 at a
-     * time (same bits as one at a time; tests clear it to compare). */
-    bool has_avx2;
 } fs_raster_state;
 
 /* Whether a polygon of this facing is culled (GL 1.5 spec 3.5.1: culling
@@ -113,11 +110,11 @@ void fs_raster_state_init(fs_raster_state *r, int subpixel_bits);
 /* Decides facing, culls, applies polygon offset and rasterizes.  Vertices are
  * in the order the primitive gave them (their winding decides facing). */
 void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2);
-/* Sampled mode's tile sample: a triangle known to make no fragment in a
- * sampled tile is only snapped, culled and charged its area, as
- * fs_raster_triangle would, from its window x and y in llvmpipe's frame
- * (fs_rvertex.y_raster). */
-void fs_raster_triangle_charge(fs_context *c, const float x[3], const float y_raster[3]);
+/* While the observer's tile mask is on (observer.h): a triangle known to
+ * make no fragment in a masked tile is only snapped, culled and its area
+ * reported, as fs_raster_triangle would, from its window x and y in
+ * llvmpipe's frame (fs_rvertex.y_raster). */
+void fs_raster_triangle_dropped(fs_context *c, const float x[3], const float y_raster[3]);
 void fs_raster_line(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1);
 void fs_raster_point(fs_context *c, const fs_rvertex *v);
 #endif

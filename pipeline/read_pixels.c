@@ -51,9 +51,9 @@ void fs_exec_ReadPixels(fs_context *c, GLint x, GLint y, GLsizei width, GLsizei 
     fs_pixel_layout l;
     if (!fs_pixel_layout_init(&l, &ps, 2, width, height, 1, format, type))
         return; /* an image too large to address: nothing written */
-    if (c->cycle) {
+    if (c->observer) {
         uint64_t n = (uint64_t)width * (uint64_t)height;
-        fs_cycle_read_pixels(c->cycle, c, l.group_bytes ? n * (uint64_t)l.group_bytes : (n + 7) / 8);
+        FS_OBSERVE(c, read_pixels, c, l.group_bytes ? n * (uint64_t)l.group_bytes : (n + 7) / 8);
     }
     /* Pixels outside the window are undefined in GL; they are left as they
      * were in the caller's buffer. */

@@ -167,7 +167,8 @@ static void fetch(const fs_client_array *a, size_t i, float out[4], bool norm)
     if (a->type == GL_UNSIGNED_BYTE && norm) {
         /* Byte colours (terrain, forest, bench): the expression below for
          * each byte, evaluated by the compiler (a division per component
-         * was a tenth of sampled mode's vertex fetch). */
+         * was a tenth of the vertex fetch of a draw restricted to a tile
+         * mask). */
 #define U1(i) ((float)(i) / 255.0f)
 #define U4(i) U1(i), U1((i) + 1), U1((i) + 2), U1((i) + 3)
 #define U16(i) U4(i), U4((i) + 4), U4((i) + 8), U4((i) + 12)
@@ -207,8 +208,8 @@ static inline void fetch_position(const fs_context *c, size_t i, fs_ivert *o)
 }
 
 /* Positions of n consecutive elements from `first`: float arrays, the
- * usual case, without fetch's per-element type dispatch (in sampled mode a
- * one-frame trace fetches nothing else for most vertices). */
+ * usual case, without fetch's per-element type dispatch (under a tile mask
+ * most vertices fetch nothing else). */
 static void fetch_positions(const fs_context *c, size_t first, size_t n, fs_ivert *o)
 {
     const fs_client_array *a = &c->arrays.vertex;
@@ -277,7 +278,6 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     s->tex_identity = memcmp(s->tex, id, sizeof id) == 0;
     fs_viewport_xform(c, s->vp_scale, s->vp_trans);
     s->has_fma = c->raster.has_fma;
-    s->has_avx2 = c->raster.has_avx2;
     /* llvmpipe draws OSMesa's buffer y-down: Mesa's state tracker negates the
      * y scale and takes the translation from the framebuffer height. */
     s->yr_scale = -s->vp_scale[1];
@@ -358,15 +358,15 @@ static inline int box_pixel(float v)
     return v > 0.0f ? (v < 65536.0f ? (int)v : 65536) : 0;
 }
 
-/* Whether a window-space box touches a tile of sampled mode's tile sample
- * (one pixel of margin: fragments lie within the vertices' box). */
-bool fs_vs_box_sampled(const fs_cycle_tiles *t, float x0, float y0, float x1, float y1)
+/* Whether a window-space box touches a tile of the tile mask (one pixel of
+ * margin: fragments lie within the vertices' box). */
+bool fs_vs_box_masked(const fs_tile_mask *t, float x0, float y0, float x1, float y1)
 {
     if (!(x0 <= x1 && y0 <= y1))
         return true; /* NaN: let the rasterizer decide */
     int ix0 = box_pixel(x0 - 1.0f), iy0 = box_pixel(y0 - 1.0f);
     int ix1 = box_pixel(x1 + 1.0f), iy1 = box_pixel(y1 + 1.0f);
-    return fs_cycle_tiles_meet_box(t, ix0, iy0, ix1, iy1);
+    return fs_tile_mask_meets_box(t, ix0, iy0, ix1, iy1);
 }
 
 static uint32_t index_at(const void *indices, GLenum type, size_t i);
@@ -380,7 +380,7 @@ void fs_vs_attributes(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pver
     pv[k].lazy = false;
 }
 
-/* What the tile sample needs of a batch's positions: the window box and
+/* What the tile mask needs of a batch's positions: the window box and
  * the clip masks or-ed (any vertex outside a plane) and and-ed (all
  * outside one). */
 typedef struct vs_bounds {
@@ -405,175 +405,8 @@ static inline void bounds_add(vs_bounds *b, const fs_pvert *o)
     box_add(b, o->win[0], o->win[1]);
 }
 
-#if FS_VS_HAVE_FMA
-/* fs_mat_xform4 and fs_clip_mask lane by lane (products and sums rounded
- * one by one in vs_position's order; ordered compares are false on NaN, as
- * C's). */
-__attribute__((target("avx2,fma"))) static inline __m256i xform_mask8(const __m256 m[16], const __m256 v[4], __m256 c[4])
-{
-    const __m256 zero = _mm256_setzero_ps();
-    for (int r = 0; r < 4; r++) { /* fs_mat_xform4 */
-        __m256 a = _mm256_mul_ps(m[r], v[0]);
-        a = _mm256_add_ps(a, _mm256_mul_ps(m[4 + r], v[1]));
-        a = _mm256_add_ps(a, _mm256_mul_ps(m[8 + r], v[2]));
-        c[r] = _mm256_add_ps(a, _mm256_mul_ps(m[12 + r], v[3]));
-    }
-#define BIT(cmp, bit) _mm256_and_si256(_mm256_castps_si256(cmp), _mm256_set1_epi32(bit))
-    __m256i mk = _mm256_or_si256(
-        _mm256_or_si256(BIT(_mm256_cmp_ps(c[0], c[3], _CMP_GT_OQ), 1),
-                        BIT(_mm256_cmp_ps(zero, _mm256_add_ps(c[0], c[3]), _CMP_GT_OQ), 2)),
-        _mm256_or_si256(_mm256_or_si256(BIT(_mm256_cmp_ps(c[1], c[3], _CMP_GT_OQ), 4),
-                                        BIT(_mm256_cmp_ps(zero, _mm256_add_ps(c[1], c[3]), _CMP_GT_OQ), 8)),
-                        _mm256_or_si256(BIT(_mm256_cmp_ps(zero, _mm256_add_ps(c[2], c[3]), _CMP_GT_OQ), 16),
-                                        BIT(_mm256_cmp_ps(c[2], c[3], _CMP_GT_OQ), 32))));
-    __m256i bad = _mm256_and_si256(_mm256_cmpeq_epi32(mk, _mm256_setzero_si256()),
-                                   _mm256_castps_si256(_mm256_cmp_ps(c[3], zero, _CMP_NGT_UQ)));
-#undef BIT
-    return _mm256_or_si256(mk, _mm256_and_si256(bad, _mm256_set1_epi32(0x3f)));
-}
-
-/* vs_position and bounds_add for the first multiple of 8 vertices, 8 at a
- * time; returns how many it did.  Each lane does the operations of
- * vs_position in the same order (products and sums rounded one by one,
- * a true division, fused viewport multiply-adds) and the compares of
- * fs_clip_mask and bounds_add with the same NaN outcome (ordered compares
- * are false on NaN, as C's), so every bit is the same as one at a time.
- * Sampled mode transforms every vertex of a one-frame trace only to find
- * which triangles reach its sampled tiles: this was a third of its time. */
-__attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out,
-                                                                 size_t n, vs_bounds *b)
-{
-    enum { STRIDE = sizeof(fs_ivert) / sizeof(float) };
-    _Static_assert(sizeof(fs_ivert) % sizeof(float) == 0, "fs_ivert is floats");
-    _Static_assert(offsetof(fs_pvert, win) == offsetof(fs_pvert, clip) + 4 * sizeof(float),
-                   "clip and win[0..3] are one 8-float store");
-    const __m256i gather = _mm256_mullo_epi32(_mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7), _mm256_set1_epi32(STRIDE));
-    __m256 m[16];
-    for (int i = 0; i < 16; i++)
-        m[i] = _mm256_set1_ps(s->mvp[i]);
-    const __m256 one = _mm256_set1_ps(1.0f);
-    const __m256 sx = _mm256_set1_ps(s->vp_scale[0]), tx = _mm256_set1_ps(s->vp_trans[0]);
-    const __m256 sy = _mm256_set1_ps(s->vp_scale[1]), ty = _mm256_set1_ps(s->vp_trans[1]);
-    const __m256 sz = _mm256_set1_ps(s->vp_scale[2]), tz = _mm256_set1_ps(s->vp_trans[2]);
-    const __m256 sr = _mm256_set1_ps(s->yr_scale), tr = _mm256_set1_ps(s->yr_trans);
-    __m256 x0 = _mm256_set1_ps(b->x0), x1 = _mm256_set1_ps(b->x1);
-    __m256 y0 = _mm256_set1_ps(b->y0), y1 = _mm256_set1_ps(b->y1);
-    __m256i any = _mm256_setzero_si256(), all = _mm256_set1_epi32(-1);
-    size_t k = 0;
-    for (; k + 8 <= n; k += 8) {
-        const float *p = in[k].obj;
-        const __m256 v[4] = {_mm256_i32gather_ps(p, gather, 4), _mm256_i32gather_ps(p + 1, gather, 4),
-                             _mm256_i32gather_ps(p + 2, gather, 4), _mm256_i32gather_ps(p + 3, gather, 4)};
-        __m256 c[4];
-        const __m256i mk = xform_mask8(m, v, c);
-        const __m256 iw = _mm256_div_ps(one, c[3]);
-        const __m256 wx = _mm256_fmadd_ps(_mm256_mul_ps(c[0], iw), sx, tx);
-        const __m256 wy = _mm256_fmadd_ps(_mm256_mul_ps(c[1], iw), sy, ty);
-        const __m256 wz = _mm256_fmadd_ps(_mm256_mul_ps(c[2], iw), sz, tz);
-        const __m256 wr = _mm256_fmadd_ps(_mm256_mul_ps(c[1], iw), sr, tr);
-        /* bounds_add, lane by lane */
-        any = _mm256_or_si256(any, mk);
-        all = _mm256_and_si256(all, mk);
-        x0 = _mm256_blendv_ps(x0, wx, _mm256_cmp_ps(wx, x0, _CMP_LT_OQ));
-        x1 = _mm256_blendv_ps(x1, wx, _mm256_cmp_ps(wx, x1, _CMP_GT_OQ));
-        y0 = _mm256_blendv_ps(y0, wy, _mm256_cmp_ps(wy, y0, _CMP_LT_OQ));
-        y1 = _mm256_blendv_ps(y1, wy, _mm256_cmp_ps(wy, y1, _CMP_GT_OQ));
-        /* Rows clip[0..3], win[0..3] to one 8-float store per vertex. */
-        const __m256 t0 = _mm256_unpacklo_ps(c[0], c[1]), t1 = _mm256_unpackhi_ps(c[0], c[1]);
-        const __m256 t2 = _mm256_unpacklo_ps(c[2], c[3]), t3 = _mm256_unpackhi_ps(c[2], c[3]);
-        const __m256 t4 = _mm256_unpacklo_ps(wx, wy), t5 = _mm256_unpackhi_ps(wx, wy);
-        const __m256 t6 = _mm256_unpacklo_ps(wz, iw), t7 = _mm256_unpackhi_ps(wz, iw);
-        const __m256 u[8] = {_mm256_shuffle_ps(t0, t2, 0x44), _mm256_shuffle_ps(t0, t2, 0xEE),
-                             _mm256_shuffle_ps(t1, t3, 0x44), _mm256_shuffle_ps(t1, t3, 0xEE),
-                             _mm256_shuffle_ps(t4, t6, 0x44), _mm256_shuffle_ps(t4, t6, 0xEE),
-                             _mm256_shuffle_ps(t5, t7, 0x44), _mm256_shuffle_ps(t5, t7, 0xEE)};
-        for (int j = 0; j < 4; j++) {
-            _mm256_storeu_ps(out[k + (size_t)j].clip, _mm256_permute2f128_ps(u[j], u[4 + j], 0x20));
-            _mm256_storeu_ps(out[k + 4 + (size_t)j].clip, _mm256_permute2f128_ps(u[j], u[4 + j], 0x31));
-        }
-        float r[8];
-        uint32_t mm[8];
-        _mm256_storeu_ps(r, wr);
-        _mm256_storeu_si256((__m256i *)(void *)mm, mk);
-        for (int j = 0; j < 8; j++) {
-            out[k + (size_t)j].win[4] = r[j];
-            out[k + (size_t)j].mask = mm[j];
-        }
-    }
-    float bx0[8], bx1[8], by0[8], by1[8];
-    uint32_t ba[8], bl[8];
-    _mm256_storeu_ps(bx0, x0);
-    _mm256_storeu_ps(bx1, x1);
-    _mm256_storeu_ps(by0, y0);
-    _mm256_storeu_ps(by1, y1);
-    _mm256_storeu_si256((__m256i *)(void *)ba, any);
-    _mm256_storeu_si256((__m256i *)(void *)bl, all);
-    for (int j = 0; j < 8; j++) {
-        b->any |= ba[j];
-        b->all &= bl[j];
-        /* Lane by lane the same compares as box_add (the order of the
-         * vertices changes signed zeros at most, which box_pixel does not
-         * tell apart). */
-        b->x0 = bx0[j] < b->x0 ? bx0[j] : b->x0;
-        b->x1 = bx1[j] > b->x1 ? bx1[j] : b->x1;
-        b->y0 = by0[j] < b->y0 ? by0[j] : b->y0;
-        b->y1 = by1[j] > b->y1 ? by1[j] : b->y1;
-    }
-    return k;
-}
-
-__attribute__((target("avx2,fma"))) void fs_vs_corners8(const fs_context *c, const fs_vs_setup *s, size_t first,
-                                                      __m256 x[3], __m256 y[3], __m256 yr[3], __m256i mask[3])
-{
-    const fs_client_array *a = &c->arrays.vertex;
-    const int stride = a->stride ? a->stride : 4 * a->size;
-    const float *p = (const float *)(const void *)((const unsigned char *)a->pointer + first * (size_t)stride);
-    __m256 m[16];
-    for (int i = 0; i < 16; i++)
-        m[i] = _mm256_set1_ps(s->mvp[i]);
-    const __m256 one = _mm256_set1_ps(1.0f);
-    for (int k = 0; k < 3; k++) {
-        /* vertex 3j + k in lane j, as fetch_position fills it */
-        const __m256i at = _mm256_mullo_epi32(_mm256_add_epi32(_mm256_setr_epi32(0, 3, 6, 9, 12, 15, 18, 21),
-                                                               _mm256_set1_epi32(k)),
-                                              _mm256_set1_epi32(stride));
-        __m256 v[4] = {_mm256_i32gather_ps(p, at, 1), _mm256_i32gather_ps(p + 1, at, 1), _mm256_setzero_ps(), one};
-        if (a->size > 2)
-            v[2] = _mm256_i32gather_ps(p + 2, at, 1);
-        if (a->size > 3)
-            v[3] = _mm256_i32gather_ps(p + 3, at, 1);
-        __m256 cl[4];
-        mask[k] = xform_mask8(m, v, cl);
-        const __m256 iw = _mm256_div_ps(one, cl[3]);
-        x[k] = _mm256_fmadd_ps(_mm256_mul_ps(cl[0], iw), _mm256_set1_ps(s->vp_scale[0]), _mm256_set1_ps(s->vp_trans[0]));
-        y[k] = _mm256_fmadd_ps(_mm256_mul_ps(cl[1], iw), _mm256_set1_ps(s->vp_scale[1]), _mm256_set1_ps(s->vp_trans[1]));
-        yr[k] = _mm256_fmadd_ps(_mm256_mul_ps(cl[1], iw), _mm256_set1_ps(s->yr_scale), _mm256_set1_ps(s->yr_trans));
-    }
-}
-#endif
-
-bool fs_vs_corners_ok(const fs_context *c)
-{
-#if FS_VS_HAVE_FMA
-    const fs_client_array *a = &c->arrays.vertex;
-    size_t stride = a->stride ? (size_t)a->stride : 4 * (size_t)a->size;
-    /* 24 vertices' byte offsets as 32-bit gather indices */
-    return c->raster.has_avx2 && a->type == GL_FLOAT && a->size >= 2 && a->size <= 4 && stride <= 65536;
-#else
-    (void)c;
-    return false;
-#endif
-}
-
-void fs_vs_lazy_vertex(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pvert *pv, size_t k)
-{
-    fetch_position(c, fs_vs(c)->src_first + k, &iv[k]);
-    vs_position(s, &iv[k], &pv[k]);
-    pv[k].lazy = true;
-}
-
 static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n,
-                                                             const fs_cycle_tiles *tiles)
+                                                             const fs_tile_mask *tiles)
 {
     if (!tiles) {
         for (size_t i = 0; i < n; i++) {
@@ -583,29 +416,24 @@ static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *
         }
         return false;
     }
-    /* Sampled mode's tile sample: a filled batch wholly inside the view
-     * volume whose window box misses every sampled tile makes no fragment,
+    /* The tile mask: a filled batch wholly inside the view volume whose
+     * window box misses every masked tile makes no fragment there,
      * nor does one wholly outside one clip plane, so its lighting, the
      * larger part of the vertex stage, is not needed (colours and texture
      * coordinates are then zero). */
     vs_bounds b = {INFINITY, INFINITY, -INFINITY, -INFINITY, 0, ~0u};
-    size_t i = 0;
-#if FS_VS_HAVE_FMA
-    if (s->has_avx2)
-        i = vs_positions8(s, in, out, n, &b);
-#endif
-    for (; i < n; i++) {
+    for (size_t i = 0; i < n; i++) {
         vs_position(s, &in[i], &out[i]);
         bounds_add(&b, &out[i]);
     }
-    bool need = b.all == 0 && (b.any != 0 || fs_vs_box_sampled(tiles, b.x0, b.y0, b.x1, b.y1));
-    /* A batch that may reach a sampled tile is lit per triangle by
+    bool need = b.all == 0 && (b.any != 0 || fs_vs_box_masked(tiles, b.x0, b.y0, b.x1, b.y1));
+    /* A batch that may reach a masked tile is lit per triangle by
      * fs_prim_draw, only where a triangle's box meets one: big batches
-     * (whole objects) touch some sampled tile almost always. */
+     * (whole objects) touch some masked tile almost always. */
     for (size_t i = 0; i < n; i++) {
         /* A lazy vertex is lit before any triangle reads it (fs_prim_draw);
-         * the others are read as zeros by triangles charged or clipped
-         * away outside the sample. */
+         * the others are read as zeros by triangles dropped or clipped
+         * away outside the mask. */
         if (!need) {
             memset(out[i].col, 0, sizeof out[i].col);
             memset(out[i].tc, 0, sizeof out[i].tc);
@@ -617,13 +445,13 @@ static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *
 
 #if FS_VS_HAVE_FMA
 __attribute__((target("fma"))) static bool vs_process_fma(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out,
-                                                          size_t n, const fs_cycle_tiles *tiles)
+                                                          size_t n, const fs_tile_mask *tiles)
 {
     return vs_process(s, in, out, n, tiles);
 }
 #endif
 
-bool fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n, const fs_cycle_tiles *tiles)
+bool fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n, const fs_tile_mask *tiles)
 {
 #if FS_VS_HAVE_FMA
     if (s->has_fma)
@@ -632,13 +460,13 @@ bool fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size
     return vs_process(s, in, out, n, tiles);
 }
 
-/* The tile sample fs_vs_process may use for a draw in `mode`: filled
+/* The tile mask fs_vs_process may use for a draw in `mode`: filled
  * polygons only (points and wide lines reach beyond their vertices). */
-const fs_cycle_tiles *fs_vs_tile_sample(const fs_context *c, GLenum mode)
+const fs_tile_mask *fs_vs_tile_mask(const fs_context *c, GLenum mode)
 {
-    if (!c->cycle || mode < GL_TRIANGLES || mode > GL_POLYGON)
+    if (mode < GL_TRIANGLES || mode > GL_POLYGON)
         return NULL;
-    const fs_cycle_tiles *t = fs_cycle_tiles_active(c->cycle);
+    const fs_tile_mask *t = fs_tile_mask_active(c);
     if (!t || c->raster.polygon_mode[0] != GL_FILL || c->raster.polygon_mode[1] != GL_FILL)
         return NULL;
     return t;
@@ -664,13 +492,6 @@ void fs_exec_ArrayElement(fs_context *c, GLint i)
     if (c->arrays.vertex.enabled) fs_exec_Vertex4fv(c, v.obj);
 }
 
-/* Sampled mode: the draw is estimated, not executed; asked before any
- * vertex is fetched, which is then not needed. */
-static bool draw_estimated(fs_context *c, GLenum mode, size_t count)
-{
-    return c->cycle && !fs_cycle_draw(c->cycle, c, mode, count);
-}
-
 static void draw_batch(fs_context *c, GLenum mode, size_t n, const uint32_t *idx, size_t count, bool elements)
 {
     fs_vs_impl *v = fs_vs(c);
@@ -680,14 +501,14 @@ static void draw_batch(fs_context *c, GLenum mode, size_t n, const uint32_t *idx
         return;
     }
     fs_vs_prepare(c, &v->setup);
-    bool lazy = fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_sample(c, mode));
+    bool lazy = fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_mask(c, mode));
     fs_prim_draw(c, &v->setup, mode, v->pv, lazy ? v->iv : NULL, idx, count, elements);
     v->deferred = false;
 }
 
-/* Fetches batch vertex k from array element `src`: with the tile sample
- * active, its position only (the other attributes wait for fs_vs_attributes,
- * which most vertices of sampled mode never reach). */
+/* Fetches batch vertex k from array element `src`: under the tile mask,
+ * its position only (the other attributes wait for fs_vs_attributes, which
+ * most vertices outside the mask never reach). */
 static inline void fetch_batch(fs_context *c, bool deferred, size_t src, fs_ivert *o)
 {
     if (deferred)
@@ -700,7 +521,7 @@ static inline void fetch_batch(fs_context *c, bool deferred, size_t src, fs_iver
 static bool defer_from(fs_context *c, GLenum mode, size_t first, const void *indices, GLenum type)
 {
     fs_vs_impl *v = fs_vs(c);
-    v->deferred = fs_vs_tile_sample(c, mode) != NULL;
+    v->deferred = fs_vs_tile_mask(c, mode) != NULL;
     v->src_first = first;
     v->src_indices = indices;
     v->src_type = type;
@@ -713,14 +534,14 @@ void fs_exec_DrawArrays(fs_context *c, GLenum mode, GLint first, GLsizei count)
     if (count < 0 || first < 0) { fs_error(c, GL_INVALID_VALUE); return; }
     if (!c->arrays.vertex.enabled || count == 0 || !fs_vs(c))
         return;
-    if (draw_estimated(c, mode, (size_t)count)) {
+    if (fs_draw_skipped(c, mode, (size_t)count)) {
         c->stats.vertices += (uint64_t)count;
         return;
     }
     /* A triangle list is drawn in pieces: its triangles stand alone, so
      * the pieces make the same triangles in the same order, and a piece
      * stays in the cache from fetch to assembly (a whole 12,288-vertex
-     * draw of bench8 did not: 8% of sampled mode's time). */
+     * draw of bench8 did not: 8% of the time of a run under a tile mask). */
     const size_t total = (size_t)count, piece = mode == GL_TRIANGLES ? 3 * 128 : total;
     if (!fs_vs_reserve_iv(c, total < piece ? total : piece)) { fs_error(c, GL_OUT_OF_MEMORY); return; }
     c->stats.vertices += (uint64_t)count;
@@ -728,23 +549,6 @@ void fs_exec_DrawArrays(fs_context *c, GLenum mode, GLint first, GLsizei count)
         size_t n = total - at < piece ? total - at : piece;
         fs_vs_impl *v = fs_vs(c);
         bool deferred = defer_from(c, mode, (size_t)first + at, NULL, 0);
-        if (deferred && mode == GL_TRIANGLES && fs_vs_corners_ok(c)) {
-            /* The tile sample: the triangles straight from the array
-             * (fs_prim_sampled_list), the rest of the piece as below. */
-            if (!fs_vs_reserve_pv(c, n)) {
-                v->deferred = false;
-                fs_error(c, GL_OUT_OF_MEMORY);
-                return;
-            }
-            fs_vs_prepare(c, &v->setup);
-            size_t done = fs_prim_sampled_list(c, &v->setup, (size_t)first + at, n, v->pv, v->iv);
-            v->deferred = false;
-            at += done;
-            n -= done;
-            if (!n)
-                continue;
-            deferred = defer_from(c, mode, (size_t)first + at, NULL, 0);
-        }
         if (deferred)
             fetch_positions(c, (size_t)first + at, n, v->iv);
         else
@@ -778,7 +582,7 @@ static void draw_elements(fs_context *c, GLenum mode, GLsizei count, GLenum type
     size_t range = (size_t)(hi - lo) + 1;
     fs_vs_impl *v;
     c->stats.vertices += n;
-    if (draw_estimated(c, mode, n))
+    if (fs_draw_skipped(c, mode, n))
         return;
     if (range <= 2 * n + 64) {
         /* Dense indices: transform each referenced vertex once. */

@@ -15,13 +15,11 @@
 
 /* A vertex as submitted: object position and the attributes current when
  * it was specified. */
-/* x86 builds carry FMA and AVX2 variants of the vertex stage's hot loops,
- * chosen at run time (fs_vs_setup.has_fma, has_avx2): the four fmaf of a
- * vertex's viewport transform become one instruction each instead of
- * library calls, and sampled mode's position pass works on 8 vertices or
- * triangles at a time.  Every variant does the same IEEE operations in
- * the same order (fmaf rounds once either way), so the bits are the same
- * (tests: fma_variant_identical, avx2_variant_identical). */
+/* x86 builds carry an FMA variant of the vertex stage's loop, chosen at
+ * run time (fs_vs_setup.has_fma): the four fmaf of a vertex's viewport
+ * transform become one instruction each instead of library calls.  It does
+ * the same IEEE operations in the same order (fmaf rounds once either
+ * way), so the bits are the same (test: fma_variant_identical). */
 #if (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__))
 #define FS_VS_HAVE_FMA 1
 #include <immintrin.h>
@@ -44,7 +42,7 @@ typedef struct fs_pvert {
     float col[2][4];  /* front and back colour, clamped */
     float tc[4];
     unsigned mask;    /* bit i: outside clip plane i (clip.c's order) */
-    bool lazy;        /* col and tc not computed yet (fs_vs_process, tiles) */
+    bool lazy;        /* col and tc not computed yet (fs_vs_process under a tile mask) */
 } fs_pvert;
 
 typedef struct fs_light_setup {
@@ -65,7 +63,6 @@ typedef struct fs_vs_setup {
     float nscale;       /* GL_RESCALE_NORMAL factor */
     float nmat_of[16];  /* the modelview nmat and nscale were computed from */
     bool has_fma;       /* the CPU has FMA: fs_vs_process's FMA variant */
-    bool has_avx2;      /* ... and AVX2: positions 8 at a time (tile sample) */
     bool nmat_valid;
     float tex[16];
     bool tex_identity;
@@ -103,7 +100,7 @@ typedef struct fs_vs_impl {
     uint32_t *idx;
     size_t idx_cap;
     fs_vs_setup setup;
-    /* An array draw in sampled mode's tile sample fetches positions only;
+    /* An array draw under the observer's tile mask fetches positions only;
      * a lazy vertex fetches its other attributes when it is lit
      * (fs_vs_attributes).  Batch vertex k is array element
      * src_indices[k] (of src_type) or, without indices, src_first + k. */
@@ -155,29 +152,17 @@ void fs_light_vertex(const fs_vs_setup *s, const float eye[4], const float n[3],
 /* vertex_array.c: transformation of a batch of vertices.  s persists from
  * draw to draw (it caches the normal matrix): zero it before its first use. */
 void fs_vs_prepare(fs_context *c, fs_vs_setup *s);
-/* tiles: NULL, or sampled mode's tile sample (fs_vs_tile_sample), with
- * which a batch that cannot reach a sampled tile skips its lighting, and
- * one that may leaves it to fs_prim_draw per triangle (the vertices are
- * then `lazy`; returns true). */
-bool fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n, const fs_cycle_tiles *tiles);
-const fs_cycle_tiles *fs_vs_tile_sample(const fs_context *c, GLenum mode);
+/* tiles: NULL, or the observer's tile mask (fs_vs_tile_mask, observer.h),
+ * with which a batch that cannot reach a masked tile skips its lighting,
+ * and one that may leaves it to fs_prim_draw per triangle (the vertices
+ * are then `lazy`; returns true). */
+bool fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n, const fs_tile_mask *tiles);
+const fs_tile_mask *fs_vs_tile_mask(const fs_context *c, GLenum mode);
 /* Colours and texture coordinates of lazy vertex k of the batch (its
  * inputs fetched first when the draw deferred them). */
 void fs_vs_attributes(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pvert *pv, size_t k);
-/* Whether a window-space box can make fragments in a sampled tile. */
-bool fs_vs_box_sampled(const fs_cycle_tiles *t, float x0, float y0, float x1, float y1);
-/* A tile-sampled triangle list of a deferred glDrawArrays straight from
- * the vertex array (primitive.c fs_prim_sampled_list): whether the array
- * allows it; the window x, y, y_raster and clip masks of the corners of the
- * 8 triangles from array element `first` on (lane j, corner k: element
- * first + 3j + k), with vs_position's bits; and batch vertex k's position
- * alone, lazy. */
-bool fs_vs_corners_ok(const fs_context *c);
-#if FS_VS_HAVE_FMA
-__attribute__((target("avx2,fma"))) void fs_vs_corners8(const fs_context *c, const fs_vs_setup *s, size_t first,
-                                                      __m256 x[3], __m256 y[3], __m256 yr[3], __m256i mask[3]);
-#endif
-void fs_vs_lazy_vertex(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pvert *pv, size_t k);
+/* Whether a window-space box can make fragments in a masked tile. */
+bool fs_vs_box_masked(const fs_tile_mask *t, float x0, float y0, float x1, float y1);
 
 /* primitive.c: assembles a primitive from processed vertices.  idx may be
  * NULL (vertices in order).  elements: the draw came as indices (glDrawElements
@@ -186,12 +171,6 @@ void fs_vs_lazy_vertex(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pve
 void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv, fs_ivert *iv,
                   const uint32_t *idx, size_t count, bool elements);
 bool fs_prim_mode_valid(GLenum mode);
-/* Sampled mode's tile sample: a glDrawArrays(GL_TRIANGLES) piece of n
- * vertices from array element `first` (deferred, fs_vs_corners_ok), pv and
- * iv its batch; returns how many vertices it drew, a multiple of 24 (0:
- * the draw needs fs_prim_draw). */
-size_t fs_prim_sampled_list(fs_context *c, const fs_vs_setup *s, size_t first, size_t n, fs_pvert *pv, fs_ivert *iv);
-
 /* clip.c */
 unsigned fs_clip_mask(const float clip[4]);
 void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,

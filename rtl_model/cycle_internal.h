@@ -9,6 +9,9 @@
 #ifndef FS_CYCLE_INTERNAL_H
 #define FS_CYCLE_INTERNAL_H
 #include "cycle_model.h"
+#include "../pipeline/observer.h"
+#include "../pipeline/rasterizer.h"
+#include "../pipeline/fragment_ops.h"
 #include "texture_cache.h"
 #include "cycle_fifo.h"
 
@@ -69,8 +72,39 @@ enum {
     FS_CARRY_frag_bytes, FS_CARRY_occ, FS_CARRY_quads, FS_CARRY_frags, FS_CARRY_COUNT
 };
 
+/* Sampled mode's screen-tile sample: one tile in `every` is rasterized,
+ * one in each block of `step` x (every / step) tiles. */
+typedef struct fs_cycle_tiles {
+    uint32_t every;
+    uint32_t step;
+} fs_cycle_tiles;
+
+/* Whether tile (tx, ty) is in the sample: the screen's tiles are cut into
+ * blocks of step x (every / step) tiles, and each block has one sampled
+ * tile at a position hashed from the block (jittered, i.e. stratified
+ * random, sampling: even coverage of the screen like a lattice, but
+ * unbiased whatever regular structure the scene has, which a fixed
+ * lattice is not).  The map of the pipeline's tile mask caches it for the
+ * screen's tiles (fs_cyc_tile_tables_alloc). */
+static inline bool fs_cycle_tile_hashed(const fs_cycle_tiles *t, uint32_t tx, uint32_t ty)
+{
+    uint32_t bw = t->step, bh = t->every / t->step;
+    uint32_t bx = tx / bw, by = ty / bh;
+    uint32_t h = bx * 0x9E3779B1u ^ (by + 0x7F4A7C15u) * 0x85EBCA77u;
+    h ^= h >> 15;
+    h *= 0x2C1B3C6Du;
+    h ^= h >> 12;
+    h %= t->every;
+    return tx - bx * bw == h % bw && ty - by * bh == h / bw;
+}
+
 struct fs_cycle {
-    fs_cycle_tiles tiles;     /* first: fs_cycle_quad_skipped reads it (cycle_model.h) */
+    /* What the pipeline sees of the model (c->observer): the reports it
+     * takes and, in tile sampling, the tile mask of the sampled tiles
+     * (mask.on while every > 1; mask.quiet: the current draw is
+     * estimated but filled in the sampled tiles, sampling.every). */
+    fs_observer watch;
+    fs_cycle_tiles tiles;
     fs_config cfg;
     fs_cycle_mode mode;
     fs_cyc_unit u[FS_U_COUNT];
@@ -142,7 +176,7 @@ struct fs_cycle {
      * of the screen in this frame, for the error estimate */
     double *tile_work;
     int tiles_x, tiles_y, fb_width, fb_height;
-    uint8_t *tile_map;    /* what tiles.map points to */
+    uint8_t *tile_map;    /* what watch.mask.map points to */
     double tile_var;            /* variance of the tile-sampled frames' cycles so far */
     /* ratio estimator: areas and sampled fragments of the triangles done,
      * and the current triangle's */
@@ -169,6 +203,22 @@ static inline uint64_t fs_cyc_time(const fs_cycle *cy) { return cy->done > cy->c
 static inline uint64_t fs_cyc_now_total(const fs_cycle *cy) { return fs_cyc_time(cy) + cy->est; }
 
 /* ---- the observer (cycle_observer.c) ---- */
+/* The reports of pipeline/observer.h (user: the fs_cycle), in
+ * cycle_observer.c, cycle_sampling.c (triangle_area) and texture_stage.c. */
+bool fs_cycle_draw(void *user, fs_context *c, GLenum mode, size_t n);
+void fs_cycle_triangle(void *user);
+void fs_cycle_triangle_area(void *user, double area, int x, int y);
+void fs_cycle_quad(void *user, fs_context *c, const fs_quad *q, const fs_quad_work *w);
+void fs_cycle_texture(void *user, const struct fs_tex_object *t, const fs_quad *q, const struct fs_tex_reads *r);
+void fs_cycle_texture_footprint(void *user, const struct fs_tex_object *t, const fs_quad *q,
+                                const struct fs_filter_out *out);
+void fs_cycle_ctr_reloads(void *user, uint64_t n);
+void fs_cycle_clear(void *user, fs_context *c, GLbitfield mask, int w, int h);
+void fs_cycle_read_pixels(void *user, fs_context *c, uint64_t bytes);
+void fs_cycle_render_mode(void *user, fs_context *c, GLenum mode);
+void fs_cycle_query_begin(void *user, fs_context *c, GLuint id);
+void fs_cycle_query_end(void *user, fs_context *c);
+void fs_cycle_query_wait(void *user, fs_context *c, GLuint id);
 /* The current draw's record (fs_cycle_set_record_fn); an estimated draw's
  * is its estimate alone. */
 void fs_cyc_emit_draw(fs_cycle *cy, bool estimated, uint64_t cycles);

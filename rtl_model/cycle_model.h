@@ -1,10 +1,10 @@
 /*
  * The cycle-level model (docs/cycle_model.md).
  *
- * The functional pipeline computes every value; while fs_context.cycle is
- * set it reports the work it does through the fs_cycle_* calls below (one
- * call per draw, triangle, quad, textured quad, clear, read-back, render
- * mode change and query), and this model computes when each piece of work
+ * The functional pipeline computes every value; attached as the context's
+ * observer (pipeline/observer.h) this model hears of the work it does (one
+ * report per draw, triangle, quad, textured quad, clear, read-back, render
+ * mode change and query) and computes when each piece of work
  * passes each clocked unit.  Units are stages with a service time per work
  * item, a latency and a bounded FIFO in front; an item's departure is
  *     depart = max(start + service, memory done, the downstream FIFO has room)
@@ -21,7 +21,6 @@
 #include <stdio.h>
 #include <GL/gl.h>
 #include "../pipeline/config.h"
-#include "../pipeline/rasterizer.h"
 
 typedef struct fs_context fs_context;
 typedef struct fs_cycle fs_cycle;
@@ -53,120 +52,13 @@ void fs_cycle_stats_list(FILE *f);
  * message in err on a configuration the model cannot build. */
 fs_cycle *fs_cycle_create(const fs_config *cfg, fs_cycle_mode mode, char *err, size_t errlen);
 void fs_cycle_destroy(fs_cycle *cy);
-/* Attaches the model to a context (sets c->cycle). */
+/* Attaches the model to a context: it becomes the context's observer
+ * (c->observer, pipeline/observer.h) and hears of all the work from then on. */
 void fs_cycle_attach(fs_cycle *cy, fs_context *c);
 
-/* ---- calls from the functional pipeline (only when c->cycle != NULL) ---- */
-/* A draw of n vertices in mode; false in sampled mode when the draw is
- * estimated: the caller then skips it (no vertices, no fragments).  True
- * with the tile sample's `fill` set: estimated too, but the caller runs it
- * in the sampled tiles (the model's hooks ignore it). */
-bool fs_cycle_draw(fs_cycle *cy, fs_context *c, GLenum mode, size_t n);
-/* A triangle assembled (before culling and clipping). */
-void fs_cycle_triangle(fs_cycle *cy);
-/* Sampled mode's screen-tile sample.  It is the first member of struct
- * fs_cycle so that the rasterizer's per-quad test below inlines to a load
- * and a branch (every = 1 outside tile sampling). */
-typedef struct fs_cycle_tiles {
-    uint32_t every;   /* one tile in `every` is rasterized */
-    uint32_t step;    /* width in tiles of a block of `every` tiles (one sampled per block) */
-    int shift;        /* log2 of the tile side */
-    /* The screen's tiles, 1 where sampled: the rasterizer asks per
-     * triangle, and the hash below costs five divisions.  Three zero bytes
-     * follow it, so that a tile's entry can be read as 4 bytes (the vertex
-     * stage's 8-wide triangle pass gathers 32-bit words). */
-    uint32_t map_w, map_h;
-    const uint8_t *map;
-    /* The current draw is estimated, but it writes depth or stencil that
-     * later simulated draws test against: the pipeline still runs it in the
-     * sampled tiles (only triangles whose box meets one), untimed, so that
-     * those tiles stay exact (sampling.every; docs/cycle_model.md). */
-    bool fill;
-} fs_cycle_tiles;
-static inline const fs_cycle_tiles *fs_cycle_tile_sample(const fs_cycle *cy)
-{
-    return (const fs_cycle_tiles *)(const void *)cy;
-}
-/* True when quad (x, y) lies in a tile sampled mode does not rasterize: the
- * caller drops it before interpolation, texturing and the per-fragment
- * operations, and the model charges its work from the sampled tiles. */
-/* Whether tile (tx, ty) is in the sample: the screen's tiles are cut into
- * blocks of step x (every / step) tiles, and each block has one sampled
- * tile at a position hashed from the block (jittered, i.e. stratified
- * random, sampling: even coverage of the screen like a lattice, but
- * unbiased whatever regular structure the scene has, which a fixed
- * lattice is not). */
-static inline bool fs_cycle_tile_hashed(const fs_cycle_tiles *t, uint32_t tx, uint32_t ty)
-{
-    uint32_t bw = t->step, bh = t->every / t->step;
-    uint32_t bx = tx / bw, by = ty / bh;
-    uint32_t h = bx * 0x9E3779B1u ^ (by + 0x7F4A7C15u) * 0x85EBCA77u;
-    h ^= h >> 15;
-    h *= 0x2C1B3C6Du;
-    h ^= h >> 12;
-    h %= t->every;
-    return tx - bx * bw == h % bw && ty - by * bh == h / bw;
-}
-static inline bool fs_cycle_tile_sampled(const fs_cycle_tiles *t, uint32_t tx, uint32_t ty)
-{
-    if (tx < t->map_w && ty < t->map_h)
-        return t->map[(size_t)ty * t->map_w + tx];
-    return fs_cycle_tile_hashed(t, tx, ty);
-}
-/* Whether a sampled tile meets the window-space pixel box [x0, x1] x
- * [y0, y1] (inclusive): the one walk of the tile map over a box, for the
- * vertex stage's batch and triangle boxes and the rasterizer's triangles. */
-static inline bool fs_cycle_tiles_meet_box(const fs_cycle_tiles *t, int x0, int y0, int x1, int y1)
-{
-    const int sh = t->shift;
-    for (int ty = y0 >> sh; ty <= y1 >> sh; ty++)
-        for (int tx = x0 >> sh; tx <= x1 >> sh; tx++)
-            if (fs_cycle_tile_sampled(t, (uint32_t)tx, (uint32_t)ty))
-                return true;
-    return false;
-}
-/* The tile sample when tile sampling is on, else NULL (cy may be NULL). */
-static inline const fs_cycle_tiles *fs_cycle_tiles_active(const fs_cycle *cy)
-{
-    const fs_cycle_tiles *t = cy ? fs_cycle_tile_sample(cy) : NULL;
-    return t && t->every > 1 ? t : NULL;
-}
-static inline bool fs_cycle_quad_skipped(const fs_cycle *cy, int x, int y)
-{
-    const fs_cycle_tiles *t = fs_cycle_tile_sample(cy);
-    if (t->every <= 1)
-        return false;
-    return !fs_cycle_tile_sampled(t, (uint32_t)x >> t->shift, (uint32_t)y >> t->shift);
-}
-/* Tile sampling: a triangle of `area` pixels whose bounding box is centred
- * at window (x, y) is about to be rasterized in the sampled tiles only. */
-void fs_cycle_triangle_area(fs_cycle *cy, double area, int x, int y);
-/* A quad after the per-fragment operations ran on it, with their record of
- * what they did (pipeline/fragment_ops.h). */
-struct fs_quad_work;
-void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q, const struct fs_quad_work *w);
-/* The texture unit sampled quad q of texture t and read the texels r
- * lists (units/texture_reads.h). */
-struct fs_tex_reads;
-void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, const fs_quad *q, const struct fs_tex_reads *r);
-/* The texture unit filtered quad q's covered pixels with the fast-footprint
- * filter; out[i] (4 entries) is pixel i's result (the texel rectangles it read and its
- * weighting-ROM lookups, units/texture_filter.h). */
-struct fs_filter_out;
-void fs_cycle_texture_footprint(fs_cycle *cy, const struct fs_tex_object *t, const fs_quad *q,
-                                const struct fs_filter_out *out);
-/* MP-Grid: the CTR was reloaded n times while the quad was sampled. */
-void fs_cycle_ctr_reloads(fs_cycle *cy, uint64_t n);
-/* glClear of w x h pixels with mask. */
-void fs_cycle_clear(fs_cycle *cy, fs_context *c, GLbitfield mask, int w, int h);
-/* glReadPixels of `bytes` bytes: a drain, then the read. */
-void fs_cycle_read_pixels(fs_cycle *cy, fs_context *c, uint64_t bytes);
-/* glRenderMode(mode): a drain (the unit's counters are read or reset). */
-void fs_cycle_render_mode(fs_cycle *cy, fs_context *c, GLenum mode);
-void fs_cycle_query_begin(fs_cycle *cy, fs_context *c, GLuint id);
-void fs_cycle_query_end(fs_cycle *cy, fs_context *c);
-/* Reading a query's result: the front end waits until it is available. */
-void fs_cycle_query_wait(fs_cycle *cy, fs_context *c, GLuint id);
+/* Sampled mode's tile sample: whether quad (x, y) lies in a tile that is
+ * not rasterized (false outside tile sampling). */
+bool fs_cycle_quad_skipped(const fs_cycle *cy, int x, int y);
 
 /* ---- calls from the driver ---- */
 /* Sampled mode: the trace's frame count (decides frame or draw sampling). */

@@ -169,12 +169,35 @@ void fs_cycle_destroy(fs_cycle *cy)
     free(cy);
 }
 
+static const fs_observer_ops cycle_observer_ops = {
+    fs_cycle_draw, fs_cycle_triangle, fs_cycle_triangle_area, fs_cycle_quad, fs_cycle_texture,
+    fs_cycle_texture_footprint, fs_cycle_ctr_reloads, fs_cycle_clear, fs_cycle_read_pixels,
+    fs_cycle_render_mode, fs_cycle_query_begin, fs_cycle_query_end, fs_cycle_query_wait,
+};
+
+/* Tiles off the mask's map (off the screen, or all of them when the map
+ * could not be allocated) are in the sample as the hash says. */
+static bool tile_off_map(const void *tiles, uint32_t tx, uint32_t ty)
+{
+    return fs_cycle_tile_hashed(tiles, tx, ty);
+}
+
 void fs_cycle_attach(fs_cycle *cy, fs_context *c)
 {
-    c->cycle = cy;
+    cy->watch.ops = &cycle_observer_ops;
+    cy->watch.user = cy;
+    cy->watch.mask.off_map = tile_off_map;
+    cy->watch.mask.off_map_user = &cy->tiles;
+    c->observer = &cy->watch;
     cy->fb_width = c->fb.width;
     cy->fb_height = c->fb.height;
     fs_cyc_tile_tables_alloc(cy);
+}
+
+bool fs_cycle_quad_skipped(const fs_cycle *cy, int x, int y)
+{
+    const fs_tile_mask *m = &cy->watch.mask;
+    return m->on && !fs_tile_mask_has(m, (uint32_t)x >> m->shift, (uint32_t)y >> m->shift);
 }
 
 void fs_cycle_set_record_fn(fs_cycle *cy, fs_cycle_record_fn fn, void *user, bool draws)
@@ -291,8 +314,9 @@ static void close_draw(fs_cycle *cy)
     cy->draw_index++;
 }
 
-bool fs_cycle_draw(fs_cycle *cy, fs_context *c, GLenum mode, size_t n)
+bool fs_cycle_draw(void *user, fs_context *c, GLenum mode, size_t n)
 {
+    fs_cycle *cy = user;
     close_draw(cy);
     if (!cy->occu_hooked && c->occlusion)
         fs_cyc_occlusion_hook(cy, c);
@@ -325,9 +349,10 @@ bool fs_cycle_draw(fs_cycle *cy, fs_context *c, GLenum mode, size_t n)
     return true;
 }
 
-void fs_cycle_triangle(fs_cycle *cy)
+void fs_cycle_triangle(void *user)
 {
-    if (cy->tiles.fill)
+    fs_cycle *cy = user;
+    if (cy->watch.mask.quiet)
         return;
     close_triangle(cy);
     cy->fe_frac += cy->fe_per_tri;
@@ -347,13 +372,14 @@ void fs_cycle_triangle(fs_cycle *cy)
 
 /* ---- quads ---- */
 
-void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q, const fs_quad_work *w)
+void fs_cycle_quad(void *user, fs_context *c, const fs_quad *q, const fs_quad_work *w)
 {
+    fs_cycle *cy = user;
     unsigned m = q->mask & 0xfu;
     unsigned n = (unsigned)((0x4332322132212110ull >> (4 * m)) & 0xfu);
     unsigned written = w->written, passed = w->passed;
     unsigned reaching = n > w->killed_early ? n - w->killed_early : 0;
-    if (cy->tiles.fill) {
+    if (cy->watch.mask.quiet) {
         /* A filled estimated draw: its sampled quads keep the cost pools
          * (and the texture cache) current for the simulated draws after
          * it, which otherwise priced their first quads at the costs of
@@ -425,8 +451,9 @@ void fs_cycle_quad(fs_cycle *cy, fs_context *c, const fs_quad *q, const fs_quad_
 
 /* ---- clears, synchronisation, queries ---- */
 
-void fs_cycle_clear(fs_cycle *cy, fs_context *c, GLbitfield mask, int w, int h)
+void fs_cycle_clear(void *user, fs_context *c, GLbitfield mask, int w, int h)
 {
+    fs_cycle *cy = user;
     (void)c;
     close_triangle(cy);
     uint64_t bpp = ((mask & GL_COLOR_BUFFER_BIT) ? 4u : 0u) +
@@ -471,8 +498,9 @@ static uint64_t merge_latency(const fs_cycle *cy)
     return (uint64_t)cy->cfg.occlusion_merge_board_latency + (uint64_t)cy->cfg.occlusion_merge_global_latency;
 }
 
-void fs_cycle_read_pixels(fs_cycle *cy, fs_context *c, uint64_t bytes)
+void fs_cycle_read_pixels(void *user, fs_context *c, uint64_t bytes)
 {
+    fs_cycle *cy = user;
     (void)c;
     close_triangle(cy);
     uint64_t t = fs_cyc_time(cy);
@@ -482,8 +510,9 @@ void fs_cycle_read_pixels(fs_cycle *cy, fs_context *c, uint64_t bytes)
     wait_until(cy, ready);
 }
 
-void fs_cycle_render_mode(fs_cycle *cy, fs_context *c, GLenum mode)
+void fs_cycle_render_mode(void *user, fs_context *c, GLenum mode)
 {
+    fs_cycle *cy = user;
     (void)mode;
     close_triangle(cy);
     fs_cyc_occlusion_hook(cy, c);
@@ -492,16 +521,18 @@ void fs_cycle_render_mode(fs_cycle *cy, fs_context *c, GLenum mode)
     cy->acc.rendermode_sync_cycles += wait_until(cy, fs_cyc_time(cy) + merge_latency(cy));
 }
 
-void fs_cycle_query_begin(fs_cycle *cy, fs_context *c, GLuint id)
+void fs_cycle_query_begin(void *user, fs_context *c, GLuint id)
 {
+    fs_cycle *cy = user;
     fs_cyc_occlusion_hook(cy, c);
     cy->query_id = id;
     cy->query_issue = fs_cyc_now_total(cy);
     snapshot(cy, &cy->query_snap);
 }
 
-void fs_cycle_query_end(fs_cycle *cy, fs_context *c)
+void fs_cycle_query_end(void *user, fs_context *c)
 {
+    fs_cycle *cy = user;
     (void)c;
     close_triangle(cy);
     uint64_t issue = issue_time(cy);
@@ -536,8 +567,9 @@ void fs_cycle_query_end(fs_cycle *cy, fs_context *c)
     cy->query_index++;
 }
 
-void fs_cycle_query_wait(fs_cycle *cy, fs_context *c, GLuint id)
+void fs_cycle_query_wait(void *user, fs_context *c, GLuint id)
 {
+    fs_cycle *cy = user;
     (void)c;
     for (int i = 0; i < cy->nqready; i++)
         if (cy->qready[i].id == id) {
@@ -551,7 +583,7 @@ void fs_cycle_query_wait(fs_cycle *cy, fs_context *c, GLuint id)
 
 void fs_cycle_frame_end(fs_cycle *cy, fs_cycle_stats *out)
 {
-    cy->tiles.fill = false;
+    cy->watch.mask.quiet = false;
     close_draw(cy);
     close_triangle(cy);
     fs_cyc_charge_estimated_draws(cy);

@@ -24,25 +24,25 @@ void fs_cyc_tile_tables_alloc(fs_cycle *cy)
     free(cy->tile_map);
     cy->tile_work = NULL;
     cy->tile_map = NULL;
-    cy->tiles.map = NULL;
-    cy->tiles.map_w = cy->tiles.map_h = 0;
+    cy->watch.mask.map = NULL;
+    cy->watch.mask.map_w = cy->watch.mask.map_h = 0;
     if (cy->tiles.every <= 1 || cy->fb_width <= 0 || cy->fb_height <= 0)
         return;
-    int side = 1 << cy->tiles.shift;
+    int side = 1 << cy->watch.mask.shift;
     cy->tiles_x = (cy->fb_width + side - 1) / side;
     cy->tiles_y = (cy->fb_height + side - 1) / side;
     size_t n = (size_t)cy->tiles_x * (size_t)cy->tiles_y;
     cy->tile_work = calloc(n, sizeof *cy->tile_work);
-    cy->tile_map = calloc(n + 3, 1); /* + 3: fs_cycle_tiles.map */
+    cy->tile_map = calloc(n + 3, 1); /* + 3: fs_tile_mask.map */
     if (!cy->tile_map)
         return; /* the hash alone answers */
     for (int ty = 0; ty < cy->tiles_y; ty++)
         for (int tx = 0; tx < cy->tiles_x; tx++)
             cy->tile_map[(size_t)ty * (size_t)cy->tiles_x + (size_t)tx] =
                 fs_cycle_tile_hashed(&cy->tiles, (uint32_t)tx, (uint32_t)ty);
-    cy->tiles.map = cy->tile_map;
-    cy->tiles.map_w = (uint32_t)cy->tiles_x;
-    cy->tiles.map_h = (uint32_t)cy->tiles_y;
+    cy->watch.mask.map = cy->tile_map;
+    cy->watch.mask.map_w = (uint32_t)cy->tiles_x;
+    cy->watch.mask.map_h = (uint32_t)cy->tiles_y;
 }
 
 /* Sampled mode's tile sample: one tile in each block of n tiles, the
@@ -59,12 +59,13 @@ static void set_tiles(fs_cycle *cy, uint32_t n)
     while ((2 << sh) <= cy->cfg.sampling_tile_size)
         sh++;
     cy->tiles.every = n > 1 ? n : 1;
+    cy->watch.mask.on = cy->tiles.every > 1;
     cy->kq = (double)cy->tiles.every;
     cy->kq_stale = false;
     double window = FS_CYC_POOL_WINDOW / (double)cy->tiles.every;
     cy->pool_keep = 1.0 - 1.0 / (window > FS_CYC_POOL_MIN ? window : FS_CYC_POOL_MIN);
     cy->tiles.step = st;
-    cy->tiles.shift = sh;
+    cy->watch.mask.shift = sh;
     fs_cyc_tile_tables_alloc(cy);
 }
 
@@ -393,7 +394,7 @@ static bool draw_writes_tests(const fs_context *c)
 int fs_cyc_sample_draw(fs_cycle *cy, const fs_context *c, GLenum mode, size_t n)
 {
     seq_close_work(cy);
-    cy->tiles.fill = false;
+    cy->watch.mask.quiet = false;
     if (cy->tiles.every > 1)
         cy->pool_cur = pool_of(cy, state_flags(c));
     if (cy->mode != FS_CYCLE_SAMPLED || cy->frame_sampling || cy->cfg.sampling_every <= 1)
@@ -416,10 +417,10 @@ int fs_cyc_sample_draw(fs_cycle *cy, const fs_context *c, GLenum mode, size_t n)
          * buffer, and the simulated draws after it came out 16% high
          * (bench32).  Filled in the sampled tiles, it costs about half a
          * simulated draw (docs/cycle_model.md). */
-        cy->tiles.fill = cy->tiles.every > 1 && draw_writes_tests(c) && !c->occlusion_hook;
-        if (cy->tiles.fill && listed)
+        cy->watch.mask.quiet = cy->tiles.every > 1 && draw_writes_tests(c) && !c->occlusion_hook;
+        if (cy->watch.mask.quiet && listed)
             cy->seq_work = cy->nseq;
-        return cy->tiles.fill;
+        return cy->watch.mask.quiet;
     }
     cy->draw_kind = k;
     cy->draw_sampled = true;
@@ -428,9 +429,10 @@ int fs_cyc_sample_draw(fs_cycle *cy, const fs_context *c, GLenum mode, size_t n)
     return -1;
 }
 
-void fs_cycle_triangle_area(fs_cycle *cy, double area, int x, int y)
+void fs_cycle_triangle_area(void *user, double area, int x, int y)
 {
-    if (cy->tiles.fill) {
+    fs_cycle *cy = user;
+    if (cy->watch.mask.quiet) {
         work_add_area(cy, estimate_pool(cy), area);
         return;
     }
@@ -449,7 +451,7 @@ void fs_cyc_tile_work_add(fs_cycle *cy, const fs_quad *q, double w)
 {
     if (!cy->tile_work)
         return;
-    int tx = q->x >> cy->tiles.shift, ty = q->y >> cy->tiles.shift;
+    int tx = q->x >> cy->watch.mask.shift, ty = q->y >> cy->watch.mask.shift;
     if (tx >= 0 && ty >= 0 && tx < cy->tiles_x && ty < cy->tiles_y)
         cy->tile_work[(size_t)ty * (size_t)cy->tiles_x + (size_t)tx] += w;
 }
@@ -527,7 +529,7 @@ static void tile_frame_error(fs_cycle *cy, uint64_t frame_cycles)
     double n = 0, sum = 0, sumsq = 0, N = (double)cy->tiles.every;
     for (int ty = 0; ty < cy->tiles_y; ty++)
         for (int tx = 0; tx < cy->tiles_x; tx++) {
-            if (!fs_cycle_tile_sampled(&cy->tiles, (uint32_t)tx, (uint32_t)ty))
+            if (!fs_tile_mask_has(&cy->watch.mask, (uint32_t)tx, (uint32_t)ty))
                 continue;
             double w = cy->tile_work[(size_t)ty * (size_t)cy->tiles_x + (size_t)tx];
             n++;

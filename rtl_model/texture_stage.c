@@ -112,8 +112,9 @@ static uint64_t cache_settle(fs_cycle *cy, fs_tex_cache *cache, const fs_tex_cac
     return after.bank_conflicts - before->bank_conflicts;
 }
 
-void fs_cycle_texture(fs_cycle *cy, const struct fs_tex_object *t, const fs_quad *q, const fs_tex_reads *r)
+void fs_cycle_texture(void *user, const struct fs_tex_object *t, const fs_quad *q, const fs_tex_reads *r)
 {
+    fs_cycle *cy = user;
     if (!cy->cfg.texture_present)
         return;
     /* The texture unit of the board owning the quad's image engine. */
@@ -193,8 +194,9 @@ unsigned fs_cyc_footprint_addresses(const fs_tex_object *t, const fs_filter_out 
     return m;
 }
 
-void fs_cycle_texture_footprint(fs_cycle *cy, const fs_tex_object *t, const fs_quad *q, const fs_filter_out *out)
+void fs_cycle_texture_footprint(void *user, const fs_tex_object *t, const fs_quad *q, const fs_filter_out *out)
 {
+    fs_cycle *cy = user;
     if (!cy->cfg.texture_present)
         return;
     int board = fs_cyc_route(cy, q->x, q->y) / (int)cy->cfg.fragment_image_engines;
@@ -232,8 +234,9 @@ void fs_cycle_texture_footprint(fs_cycle *cy, const fs_tex_object *t, const fs_q
     cy->tex_misses += misses;
 }
 
-void fs_cycle_ctr_reloads(fs_cycle *cy, uint64_t n)
+void fs_cycle_ctr_reloads(void *user, uint64_t n)
 {
+    fs_cycle *cy = user;
     if (!cy->cfg.texture_present || !n)
         return;
     /* Each reload reads one pointer-table entry before the texel can be

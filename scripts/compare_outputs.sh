@@ -12,9 +12,10 @@ trap 'git -C "$ROOT" worktree remove --force "$W/src" >/dev/null 2>&1 || true; r
 git -C "$ROOT" worktree add --detach "$W/src" "$REV" >/dev/null
 make -C "$W/src" -j2 BUILD=build all >/dev/null
 CB=${COMPARE_BUILD:-build-compare}   # one per person working in this tree
+case $CB in /*) ;; *) CB=$ROOT/$CB ;; esac   # relative to the tree, or absolute
 make -C "$ROOT" -j2 BUILD="$CB" all >/dev/null
 "$ROOT/scripts/record_outputs.sh" "$W/src/build" "$W/old"
-"$ROOT/scripts/record_outputs.sh" "$ROOT/$CB" "$W/new"
+"$ROOT/scripts/record_outputs.sh" "$CB" "$W/new"
 if diff -r "$W/old/run" "$W/new/run" > "$W/diff.txt"; then
     echo "compare_outputs: identical to $REV ($(ls "$W/new/run" | wc -l) runs)"
 else

@@ -7,6 +7,10 @@
 #   2 rtl_model/                 the cycle-level model, observing layer 1
 #   3 driver/                    traces, replay, display lists, the CLI, the shim
 # (tests/ and traces/ sit above all of them and may include anything.)
+# The functional pipeline knows nothing of timing (issue 18): no file under
+# pipeline/ names the cycle model, sampled mode, its tile sample, charging
+# or the vector variants that served it; it reports its work through
+# pipeline/observer.h only.
 # Includes against the order that are still to be removed are listed in
 # tests/layers_pending.txt with the reason; a listed include that is gone
 # fails too, so that the list only shrinks.
@@ -53,6 +57,28 @@ check_tree() {
     [ -z "$new" ] || echo "include against the layers: $new"
     [ -z "$gone" ] || echo "listed in tests/layers_pending.txt but no longer there (remove the line): $gone"
     [ -z "$new" ] && [ -z "$gone" ]
+}
+
+# Lines of root's pipeline/ that speak of timing (see the top).
+TIMING_WORDS='\bcycles?\b|cycle[- ](level|model)|rtl_model|fs_cycle|fs_cyc_|sampled (mode|tile|quad|draw)|tile sampl|\bsampling\b|charg(e|ed|es|ing)\b|avx2'
+timing_mentions() {
+    grep -inE "$TIMING_WORDS" "$1"/pipeline/* 2>/dev/null | sed "s|^$1/||"
+}
+
+test_pipeline_names_no_timing() {
+    local found
+    found=$(timing_mentions "$ROOT")
+    [ -z "$found" ] || fail "pipeline/ speaks of timing: $found"
+}
+
+test_pipeline_naming_the_cycle_model_fails() {
+    local w
+    for w in '/* the cycle model times it */' '/* in sampled mode */' '/* charged its area */' 'x = fs_cycle_draw(y);'; do
+        rm -rf "$WORK/tree"
+        copy_tree
+        printf '%s\n' "$w" >>"$WORK/tree/pipeline/blend.c"
+        [ -n "$(timing_mentions "$WORK/tree")" ] || fail "not caught: $w"
+    done
 }
 
 # A copy of the layered directories (sources only) to break on purpose.
@@ -112,6 +138,8 @@ test_fixed_pending_include_fails() {
 }
 
 run_test test_tree_follows_the_layers
+run_test test_pipeline_names_no_timing
+run_test test_pipeline_naming_the_cycle_model_fails
 run_test test_unit_including_the_driver_fails
 run_test test_pipeline_including_the_cycle_model_fails
 run_test test_cycle_model_including_the_driver_fails

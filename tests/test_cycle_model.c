@@ -508,7 +508,7 @@ TEST(tile_sample_charged_triangles_as_rasterized)
     /* Small triangles of every winding, some degenerate, some partly or
      * wholly off screen, with back faces culled, drawn from an array in
      * sampled mode: those outside the sampled tiles are only snapped and
-     * charged their area (fs_raster_triangle_charge).  A rasterizer hook
+     * charged their area (fs_raster_triangle_dropped).  A rasterizer hook
      * sends every triangle through fs_raster_triangle instead; both runs
      * must give the same cycles and the same triangle counts. */
     enum { NT = 400 };
@@ -562,107 +562,6 @@ TEST(tile_sample_charged_triangles_as_rasterized)
     CHECK_EQ_UINT(cycles[0], cycles[1]);
     for (int k = 0; k < 3; k++)
         CHECK_EQ_UINT(counts[0][k], counts[1][k]);
-}
-
-TEST(avx2_variant_identical_sampled)
-{
-    /* A one-frame trace of small triangles from client arrays, like the
-     * bench scenes, in sampled mode with draw sampling: the estimated draws
-     * are filled, and there the vertex stage takes 8 vertices and 8
-     * triangles at a time when the CPU has AVX2.  Some triangles are off
-     * screen, clipped, degenerate, huge, back-facing (culled) or have NaN
-     * and infinite positions, and the draws' lengths are not multiples of
-     * 8 triangles.  With and without the AVX2 variant the cycles, counts,
-     * depth and colour must be the same. */
-    enum { NT = 3000, NS = 240, W = 4 * WN };
-    static float pos[NT * 3][3];
-    static uint8_t col[NT * 3][4];
-    uint32_t r = 777;
-    for (int t = 0; t < NT; t++) {
-        r = r * 1103515245u + 12345u;
-        float cx = (float)((r >> 8) % 1000) / 1000.0f * (W + 40) - 20.0f;
-        r = r * 1103515245u + 12345u;
-        float cy = (float)((r >> 8) % 1000) / 1000.0f * (W + 40) - 20.0f;
-        float size = t % 97 == 0 ? 300.0f : 6.0f;
-        for (int k = 0; k < 3; k++) {
-            r = r * 1103515245u + 12345u;
-            pos[t * 3 + k][0] = 2.0f * (cx + ((float)((r >> 8) % 100) / 100.0f - 0.5f) * size) / W - 1.0f;
-            r = r * 1103515245u + 12345u;
-            pos[t * 3 + k][1] = 2.0f * (cy + ((float)((r >> 8) % 100) / 100.0f - 0.5f) * size) / W - 1.0f;
-            pos[t * 3 + k][2] = (float)((r >> 4) % 1000) / 600.0f - 0.8f; /* some beyond the far plane */
-            for (int j = 0; j < 4; j++)
-                col[t * 3 + k][j] = (uint8_t)(r >> (j * 8));
-        }
-        if (t >= NT - NS) /* a cluster of 8 per draw, 3 pixels across */
-            for (int k = 0; k < 3; k++) {
-                pos[t * 3 + k][0] = pos[(t & ~7) * 3][0] + (float)((t + k) % 3) * 1.5f / W;
-                pos[t * 3 + k][1] = pos[(t & ~7) * 3][1] + (float)((t * k) % 4) * 1.0f / W;
-                pos[t * 3 + k][2] = t % 80 < 16 ? 1.5f : pos[(t & ~7) * 3][2];
-            }
-        if (t % 50 == 7)
-            pos[t * 3 + 1][0] = pos[t * 3][0], pos[t * 3 + 1][1] = pos[t * 3][1]; /* degenerate */
-        if (t % 211 == 3)
-            pos[t * 3 + t % 3][t % 2] = t % 4 == 3 ? NAN : INFINITY;
-    }
-    uint64_t res[2][6];
-    static uint8_t img[2][W * W * 4];
-    static uint32_t depth[2][W * W];
-    bool hw = false;
-    for (int run = 0; run < 2; run++) {
-        fs_config cfg;
-        fs_config_defaults(&cfg);
-        cfg.sampling_tiles = 16;
-        cfg.sampling_tile_size = 8;
-        cfg.sampling_every = 3;
-        fs_cycle *cy;
-        fs_context *c = new_context_sized(&cfg, W, &cy, FS_CYCLE_SAMPLED);
-        REQUIRE(c && cy);
-        fs_cycle_set_frames(cy, 1);
-        if (run == 0)
-            hw = c->raster.has_avx2;
-        else
-            c->raster.has_avx2 = false;
-        fsglEnable(c, GL_DEPTH_TEST);
-        fsglEnable(c, GL_CULL_FACE);
-        fsglClear(c, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        fsglEnableClientState(c, GL_VERTEX_ARRAY);
-        fsglEnableClientState(c, GL_COLOR_ARRAY);
-        fsglVertexPointer(c, 3, GL_FLOAT, 0, pos);
-        fsglColorPointer(c, 4, GL_UNSIGNED_BYTE, 0, col);
-        for (int at = 0, k = 0; at < NT - NS; k++) {
-            int n = k % 3 == 2 ? 67 : 100; /* two kinds of draw */
-            n = n < NT - NS - at ? n : NT - NS - at;
-            fsglDrawArrays(c, GL_TRIANGLES, at * 3, n * 3);
-            at += n;
-        }
-        /* draws of 8 small triangles: most miss the sample, some lie
-         * wholly beyond the far plane */
-        for (int at = NT - NS; at < NT; at += 8)
-            fsglDrawArrays(c, GL_TRIANGLES, at * 3, 24);
-        CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
-        fs_cycle_stats f, t;
-        fs_cycle_frame_end(cy, &f);
-        fs_cycle_totals(cy, &t);
-        res[run][0] = t.cycles;
-        res[run][1] = t.fragments;
-        res[run][2] = f.draws_estimated;
-        res[run][3] = c->stats.triangles_in;
-        res[run][4] = c->stats.triangles_rasterized;
-        res[run][5] = c->stats.triangles_culled;
-        memcpy(img[run], c->fb.color, sizeof img[run]);
-        memcpy(depth[run], c->fb.depth, sizeof depth[run]);
-        fs_cycle_destroy(cy);
-        fs_context_destroy(c);
-    }
-    printf("    avx2_variant_identical_sampled: AVX2 %s, %llu cycles, %llu draws estimated\n", hw ? "yes" : "no",
-           (unsigned long long)res[0][0], (unsigned long long)res[0][2]);
-    CHECK(res[0][2] >= 10); /* filled draws were there */
-    CHECK(res[0][1] > 0 && res[0][5] > 0);
-    CHECK_EQ_UINT(res[0][3], NT);
-    for (int k = 0; k < 6; k++)
-        CHECK_EQ_UINT(res[0][k], res[1][k]);
-    CHECK(memcmp(img[0], img[1], sizeof img[0]) == 0);
-    CHECK(memcmp(depth[0], depth[1], sizeof depth[0]) == 0);
 }
 
 TEST(draw_sample_fill_keeps_sampled_tiles_exact)
@@ -744,7 +643,6 @@ TEST_LIST = {
     TEST_ENTRY(tile_sample_clear),
     TEST_ENTRY(tile_sample_lighting_exact),
     TEST_ENTRY(tile_sample_charged_triangles_as_rasterized),
-    TEST_ENTRY(avx2_variant_identical_sampled),
     TEST_ENTRY(draw_sample_fill_keeps_sampled_tiles_exact),
     TEST_END,
 };

@@ -262,8 +262,7 @@ GLint fs_exec_RenderMode(fs_context *c, GLenum mode)
         }
     }
     update_hook(c);
-    if (c->cycle)
-        fs_cycle_render_mode(c->cycle, c, mode);
+    FS_OBSERVE(c, render_mode, c, mode);
     return ret;
 }
 
@@ -445,8 +444,7 @@ void fs_exec_BeginQuery(fs_context *c, GLenum target, GLuint id)
     o->query_count = 0;
     o->query_overflow = false;
     update_hook(c);
-    if (c->cycle)
-        fs_cycle_query_begin(c->cycle, c, id);
+    FS_OBSERVE(c, query_begin, c, id);
 }
 
 void fs_exec_EndQuery(fs_context *c, GLenum target)
@@ -465,8 +463,7 @@ void fs_exec_EndQuery(fs_context *c, GLenum target)
         q->result = o->query_count;
     o->active_query = 0;
     update_hook(c);
-    if (c->cycle)
-        fs_cycle_query_end(c->cycle, c);
+    FS_OBSERVE(c, query_end, c);
 }
 
 void fs_exec_GetQueryiv(fs_context *c, GLenum target, GLenum pname, GLint *params)
@@ -499,8 +496,7 @@ static bool query_value(fs_context *c, GLuint id, GLenum pname, uint32_t *v)
     switch (pname) {
     case GL_QUERY_RESULT:
         *v = q->result;
-        if (c->cycle)
-            fs_cycle_query_wait(c->cycle, c, id);
+        FS_OBSERVE(c, query_wait, c, id);
         return true;
     case GL_QUERY_RESULT_AVAILABLE:
         /* The model finishes every command when it is issued. */

@@ -165,7 +165,7 @@ static inline int wrap_nearest(int x, int len, GLenum wrap)
  * object its CTR, the one state a texel read changes (GL_FRAGSIM_mp_grid:
  * texels come through the CTR and pointer table, units/mpgrid_gl.h), with
  * the record of what the reads did to it (mpgrid NULL otherwise); with a
- * cycle model, the record of the texels read by pixel `pixel` (reads, else
+ * observer (pipeline/observer.h), the record of the texels read by pixel `pixel` (reads, else
  * NULL; units/texture_reads.h). */
 typedef struct tex_fetch {
     const fs_tex_object *t;
@@ -444,7 +444,7 @@ static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const fl
     tex_mip_view(t, &mv);
     double w = t->level[0].width, h = t->level[0].height;
     GLenum base = t->level[0].base_format;
-    fs_filter_out fo[4]; /* what each pixel read, for the cycle model */
+    fs_filter_out fo[4]; /* what each pixel read, for the observer */
     for (int i = 0; i < 4; i++) {
         if (!(q->mask & (1u << i)))
             continue;
@@ -474,11 +474,10 @@ static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const fl
         c->stats.tex_fp_texels += (uint64_t)o.texels;
         c->stats.tex_fp_rom_lookups += (uint64_t)lookups;
         apply_env(st, base, o.rgba, q->color[i]);
-        if (c->cycle)
+        if (c->observer)
             fo[i] = o;
     }
-    if (c->cycle)
-        fs_cycle_texture_footprint(c->cycle, t, q, fo);
+    FS_OBSERVE(c, texture_footprint, t, q, fo);
 }
 
 /* ---- per quad ---- */
@@ -542,8 +541,8 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
     }
     GLenum base = t->level[0].base_format;
     fs_tex_reads reads;
-    tex_fetch f = {t, t->mpgrid, {0, 0, 0}, c->cycle ? &reads : NULL, 0};
-    if (c->cycle)
+    tex_fetch f = {t, t->mpgrid, {0, 0, 0}, c->observer ? &reads : NULL, 0};
+    if (c->observer)
         memset(reads.n, 0, sizeof reads.n);
     for (int i = 0; i < 4; i++) {
         if (!(q->mask & (1u << i)))
@@ -574,10 +573,9 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
     }
     if (f.mpgrid)
         fs_mpgrid_gl_work_done(f.mpgrid, &f.work);
-    if (c->cycle)
-        fs_cycle_texture(c->cycle, t, q, &reads);
-    if (c->cycle && f.work.reloads)
-        fs_cycle_ctr_reloads(c->cycle, f.work.reloads);
+    FS_OBSERVE(c, texture, t, q, &reads);
+    if (f.work.reloads)
+        FS_OBSERVE(c, ctr_reloads, f.work.reloads);
 }
 
 /* llvmpipe's 2x2 quads are aligned in its y-down frame (rasterizer_priv.h):
