@@ -58,8 +58,10 @@ void fs_raster_state_init(fs_raster_state *r, int subpixel_bits)
     r->use_y_raster = false;
 #if FS_RASTER_HAVE_FMA
     r->has_fma = __builtin_cpu_supports("fma");
+    r->has_avx2 = r->has_fma && __builtin_cpu_supports("avx2");
 #else
     r->has_fma = false;
+    r->has_avx2 = false;
 #endif
 }
 

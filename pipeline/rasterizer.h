@@ -89,6 +89,9 @@ typedef struct fs_raster_state {
      * does), otherwise an exact-in-practice double emulation.  Set by
      * fs_raster_state_init; tests clear it to compare the two. */
     bool has_fma;
+    /* ... and AVX2 as well: the vertex stage transforms positions 8 at a
+     * time (same bits as one at a time; tests clear it to compare). */
+    bool has_avx2;
 } fs_raster_state;
 
 /* Whether a polygon of this facing is culled (GL 1.5 spec 3.5.1: culling

@@ -15,11 +15,12 @@
 
 /* A vertex as submitted: object position and the attributes current when
  * it was specified. */
-/* x86 builds carry an FMA variant of the vertex stage's loop, chosen at
- * run time (fs_vs_setup.has_fma): the four fmaf of a vertex's viewport
- * transform become one instruction each instead of library calls.  It does
- * the same IEEE operations in the same order (fmaf rounds once either
- * way), so the bits are the same (test: fma_variant_identical). */
+/* x86 builds carry FMA and AVX2 variants of the vertex stage's loop,
+ * chosen at run time (fs_vs_setup.has_fma, has_avx2): the four fmaf of a
+ * vertex's viewport transform become one instruction each instead of
+ * library calls, and positions are transformed 8 vertices at a time.  Each
+ * variant does the same IEEE operations in the same order (fmaf rounds once
+ * either way), so the bits are the same (test: fma_variant_identical). */
 #if (defined(__x86_64__) || defined(__i386__)) && (defined(__GNUC__) || defined(__clang__))
 #define FS_VS_HAVE_FMA 1
 #include <immintrin.h>
@@ -63,6 +64,7 @@ typedef struct fs_vs_setup {
     float nscale;       /* GL_RESCALE_NORMAL factor */
     float nmat_of[16];  /* the modelview nmat and nscale were computed from */
     bool has_fma;       /* the CPU has FMA: fs_vs_process's FMA variant */
+    bool has_avx2;      /* ... and AVX2: positions 8 at a time */
     bool nmat_valid;
     float tex[16];
     bool tex_identity;

@@ -8,8 +8,8 @@
 #   3 driver/                    traces, replay, display lists, the CLI, the shim
 # (tests/ and traces/ sit above all of them and may include anything.)
 # The functional pipeline knows nothing of timing (issue 18): no file under
-# pipeline/ names the cycle model, sampled mode, its tile sample, charging
-# or the vector variants that served it; it reports its work through
+# pipeline/ names the cycle model, sampled mode, its tile sample or charging
+# (its vector variants are gone); it reports its work through
 # pipeline/observer.h only.
 # Includes against the order that are still to be removed are listed in
 # tests/layers_pending.txt with the reason; a listed include that is gone
@@ -60,7 +60,7 @@ check_tree() {
 }
 
 # Lines of root's pipeline/ that speak of timing (see the top).
-TIMING_WORDS='\bcycles?\b|cycle[- ](level|model)|rtl_model|fs_cycle|fs_cyc_|sampled (mode|tile|quad|draw)|tile sampl|\bsampling\b|charg(e|ed|es|ing)\b|avx2'
+TIMING_WORDS='\bcycles?\b|cycle[- ](level|model)|rtl_model|fs_cycle|fs_cyc_|sampled (mode|tile|quad|draw)|tile sampl|\bsampling\b|charg(e|ed|es|ing)\b'
 timing_mentions() {
     grep -inE "$TIMING_WORDS" "$1"/pipeline/* 2>/dev/null | sed "s|^$1/||"
 }

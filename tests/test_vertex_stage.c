@@ -965,10 +965,12 @@ TEST(fma_variant_identical)
     fs_vs_setup s;
     memset(&s, 0, sizeof s);
     fs_vs_prepare(c, &s);
-    bool hw = s.has_fma;
-    s.has_fma = false;
+    /* The plain loop (no FMA, no AVX2) is the reference for the variants. */
+    bool hw = s.has_fma, avx2 = s.has_avx2;
+    s.has_fma = s.has_avx2 = false;
     fs_vs_process(&s, in, a, N, NULL);
     s.has_fma = hw;
+    s.has_avx2 = avx2;
     fs_vs_process(&s, in, b, N, NULL);
     long differ = 0;
     for (int i = 0; i < N; i++) {
@@ -977,7 +979,8 @@ TEST(fma_variant_identical)
                     same_floats(a[i].tc, b[i].tc, 4);
         differ += !same;
     }
-    printf("    fma_variant_identical: %d vertices, hardware FMA %s, %ld differ\n", N, hw ? "yes" : "no", differ);
+    printf("    fma_variant_identical: %d vertices, hardware FMA %s, AVX2 %s, %ld differ\n", N, hw ? "yes" : "no",
+           avx2 ? "yes" : "no", differ);
     CHECK_EQ_INT(differ, 0);
     /* Under a tile mask (lazy vertices: positions only) the positions and
      * clip masks are the full pass's, in batches of every length mod 8, and
@@ -987,7 +990,10 @@ TEST(fma_variant_identical)
     long batches = 0, needed = 0;
     differ = 0;
     for (int at = 0, n = 1; at + n <= N; at += n, n = n % 37 + 1) {
+        s.has_fma = s.has_avx2 = false;
         fs_vs_process(&s, in + at, a + at, (size_t)n, NULL);
+        s.has_fma = hw;
+        s.has_avx2 = avx2;
         bool lazy = fs_vs_process(&s, in + at, b + at, (size_t)n, &tiles);
         batches++;
         needed += lazy;
