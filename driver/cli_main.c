@@ -332,8 +332,8 @@ static json_t *unsupported_json(const fs_context *c)
     json_t *o = json_object();
     int rc = 0;
     for (int i = 0; i < FS_CMD_COUNT; i++)
-        if (c->unsupported[i])
-            rc |= json_object_set_new(o, fs_cmd_table[i].name, json_integer((json_int_t)c->unsupported[i]));
+        if (fs_cmd_unsupported(c, i))
+            rc |= json_object_set_new(o, fs_cmd_table[i].name, json_integer((json_int_t)fs_cmd_unsupported(c, i)));
     for (int i = 0; i < c->unsupported_feature_count; i++)
         rc |= json_object_set_new(o, c->unsupported_feature[i].name,
                                   json_integer((json_int_t)c->unsupported_feature[i].count));
@@ -417,14 +417,14 @@ static void print_unsupported(FILE *f, const fs_context *c, const fs_replayer *r
 {
     bool any = fs_replay_skipped_total(r) > 0 || c->unsupported_feature_count > 0;
     for (int i = 0; i < FS_CMD_COUNT && !any; i++)
-        any = c->unsupported[i] != 0;
+        any = fs_cmd_unsupported(c, i) != 0;
     if (!any)
         return;
     fprintf(f, "%s: calls not executed or not fully modelled:\n", prog);
     for (int i = 0; i < FS_CMD_COUNT; i++)
-        if (c->unsupported[i])
+        if (fs_cmd_unsupported(c, i))
             fprintf(f, "  %-48s %10llu  (not implemented)\n", fs_cmd_table[i].name,
-                    (unsigned long long)c->unsupported[i]);
+                    (unsigned long long)fs_cmd_unsupported(c, i));
     for (int i = 0; i < c->unsupported_feature_count; i++)
         fprintf(f, "  %-48s %10llu  (not modelled)\n", c->unsupported_feature[i].name,
                 (unsigned long long)c->unsupported_feature[i].count);

@@ -171,9 +171,9 @@ void fs_cycle_query_wait(fs_cycle *cy, fs_context *c, GLuint id);
 /* ---- calls from the driver ---- */
 /* Sampled mode: the trace's frame count (decides frame or draw sampling). */
 void fs_cycle_set_frames(fs_cycle *cy, uint64_t frames);
-/* Sampled mode: should the driver skip this call (a draw, clear or
- * read-back in a frame that is interpolated, not simulated)? */
-bool fs_cycle_skip_call(const fs_cycle *cy, const fs_context *c, int cmd);
+/* Sampled mode: is the current frame interpolated, not simulated?  The
+ * driver then skips its draws, clears and read-backs (fs_cmd_skippable). */
+bool fs_cycle_frame_skipped(const fs_cycle *cy);
 /* Sampled mode: after the last frame, fills in the skipped frames' cycles
  * (linear between the simulated frames around them).  Idempotent. */
 void fs_cycle_finish(fs_cycle *cy);

@@ -17,6 +17,7 @@
 #include <string.h>
 #include "check.h"
 #include "../pipeline/context.h"
+#include "../driver/gl_call.h"
 #include "../rtl_model/cycle_internal.h"
 #include "../pipeline/vertex_internal.h"
 #include "../glext/GL_FRAGSIM_occlusion_unit.h"

@@ -21,6 +21,7 @@
 #include <string.h>
 #include "check.h"
 #include "../pipeline/context.h"
+#include "../driver/gl_call.h"
 #include "../rtl_model/cycle_internal.h"
 #include "../units/footprint.h"
 #include "../units/texture_priv.h"
@@ -90,19 +91,31 @@ static int brute_texels(const fs_tex_object *t, const fs_filter_out *o, bool *in
     return n;
 }
 
+/* A context with texture 5 bound: a w x h MIPmapped texture with the
+ * min filter and wrap modes given; NULL when it cannot be made. */
+static fs_context *texture_5(int w, int h, uint32_t seed, GLenum min, GLenum wrap_s, GLenum wrap_t)
+{
+    fs_context *c = fs_context_create(NULL, 16, 16);
+    if (!c)
+        return NULL;
+    fsglBindTexture(c, GL_TEXTURE_2D, 5);
+    upload_mipmaps(c, w, h, seed);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)min);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, (GLint)wrap_s);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, (GLint)wrap_t);
+    if (fsglGetError(c) != GL_NO_ERROR || !fs_tex_complete(c->texture->bound)) {
+        fs_context_destroy(c);
+        return NULL;
+    }
+    return c;
+}
+
 TEST(footprint_texels_brute_force)
 {
     /* A non-square texture, REPEAT in s and CLAMP_TO_EDGE in t. */
-    fs_context *c = fs_context_create(NULL, 16, 16);
+    fs_context *c = texture_5(128, 32, 11, GL_LINEAR_MIPMAP_LINEAR, GL_REPEAT, GL_CLAMP_TO_EDGE);
     REQUIRE(c);
-    fsglBindTexture(c, GL_TEXTURE_2D, 5);
-    upload_mipmaps(c, 128, 32, 11);
-    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
     fs_tex_object *t = c->texture->bound;
-    REQUIRE(t && fs_tex_complete(t));
     fs_mip_view mv;
     memset(&mv, 0, sizeof mv);
     mv.levels = t->last_level + 1;
@@ -435,8 +448,39 @@ TEST(cycle_mode_bit_identical_footprint)
         }
 }
 
+/* The texture unit's answers for the cycle model's memory layout
+ * (units/texture_unit.h): level sizes as glTexImage2D gave them, false
+ * outside the complete chain, and the footprint filters' wrapping, against
+ * wrap_ref (REPEAT modulo the size, everything else clamped to the edge). */
+TEST(texture_layout_queries)
+{
+    fs_context *c = texture_5(16, 4, 3, GL_NEAREST_MIPMAP_NEAREST, GL_REPEAT, GL_CLAMP);
+    REQUIRE(c);
+    const fs_tex_object *t = c->texture->bound;
+    CHECK_EQ_UINT(fs_tex_object_name(t), 5);
+    static const int want[6][2] = {{16, 4}, {8, 2}, {4, 1}, {2, 1}, {1, 1}, {0, 0}};
+    for (int l = 0; l < 6; l++) {
+        int w = -1, h = -1;
+        CHECK_EQ_INT(fs_tex_level_size(t, l, &w, &h), l < 5);
+        CHECK_EQ_INT(w, want[l][0]);
+        CHECK_EQ_INT(h, want[l][1]);
+    }
+    int w = -1, h = -1;
+    CHECK(!fs_tex_level_size(t, -1, &w, &h) && w == 0 && h == 0);
+    CHECK(!fs_tex_level_size(t, FS_TEX_MAX_LEVELS, &w, &h) && w == 0 && h == 0);
+    for (int l = 0; l < 5; l++)
+        for (int v = -20; v <= 20; v++) {
+            int x = v, y = v;
+            fs_tex_footprint_texel(t, l, &x, &y);
+            CHECK_EQ_INT(x, wrap_ref(v, want[l][0], GL_REPEAT));
+            CHECK_EQ_INT(y, wrap_ref(v, want[l][1], GL_CLAMP_TO_EDGE));
+        }
+    fs_context_destroy(c);
+}
+
 TEST_LIST = {
     TEST_ENTRY(footprint_texels_brute_force),
+    TEST_ENTRY(texture_layout_queries),
     TEST_ENTRY(rom_stage_latency_closed_form),
     TEST_ENTRY(ctr_reload_cycles_brute_force),
     TEST_ENTRY(clamp_border_texels_not_read),

@@ -35,7 +35,7 @@ static inline void fuzz_cycle_frame_end(fs_cycle *cy)
 /* Submits a call, unless sampled mode skips it (a frame it interpolates). */
 static inline int fuzz_cycle_submit(const fs_cycle *cy, fs_context *c, fs_call *call)
 {
-    return cy && fs_cycle_skip_call(cy, c, call->cmd) ? 0 : fs_submit(c, call);
+    return cy && fs_cycle_frame_skipped(cy) && fs_cmd_skippable(c, call->cmd) ? 0 : fs_submit(c, call);
 }
 
 /* Finishes the run (the interpolation of skipped frames and the totals
