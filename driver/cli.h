@@ -19,11 +19,12 @@ int fs_cli_rom(int argc, char **argv);
 /* driver/cli_cycle.c: the cycle-level model behind `fragsim replay --mode`. */
 #include <stdio.h>
 #include "../pipeline/context.h"
+#include "../rtl_model/cycle_config.h"
 typedef struct fs_cli_cycle fs_cli_cycle;
 /* "functional" -> -1, "cycle", "sampled" -> an fs_cycle_mode; returns -1 for
  * an unknown name. */
 int fs_cli_cycle_mode(const char *name, int *mode);
-fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_config *cfg, fs_context *c, const char *csv_path,
+fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_cycle_config *cfg, fs_context *c, const char *csv_path,
                                  uint64_t trace_frames, bool draw_stats, char *err, size_t errlen);
 /* Sampled mode: true for a call the replay skips (fs_cycle_frame_skipped, fs_cmd_skippable). */
 bool fs_cli_cycle_skip(const fs_cli_cycle *h, const fs_context *c, int cmd);

@@ -85,7 +85,7 @@ bool fs_cli_cycle_skip(const fs_cli_cycle *h, const fs_context *c, int cmd)
     return h && fs_cycle_frame_skipped(h->cy) && fs_cmd_skippable(c, cmd);
 }
 
-fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_config *cfg, fs_context *c, const char *csv_path,
+fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_cycle_config *cfg, fs_context *c, const char *csv_path,
                                  uint64_t trace_frames, bool draw_stats, char *err, size_t errlen)
 {
     fs_cli_cycle *h = calloc(1, sizeof *h);

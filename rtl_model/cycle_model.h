@@ -20,7 +20,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <GL/gl.h>
-#include "../pipeline/config.h"
+#include "cycle_config.h"
 #include "../pipeline/rasterizer.h"
 
 typedef struct fs_context fs_context;
@@ -51,7 +51,7 @@ void fs_cycle_stats_list(FILE *f);
 
 /* Creates the model for a configuration (already checked).  NULL with a
  * message in err on a configuration the model cannot build. */
-fs_cycle *fs_cycle_create(const fs_config *cfg, fs_cycle_mode mode, char *err, size_t errlen);
+fs_cycle *fs_cycle_create(const fs_cycle_config *cfg, fs_cycle_mode mode, char *err, size_t errlen);
 void fs_cycle_destroy(fs_cycle *cy);
 /* Attaches the model to a context (sets c->cycle). */
 void fs_cycle_attach(fs_cycle *cy, fs_context *c);

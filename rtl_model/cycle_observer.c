@@ -66,7 +66,7 @@ void fs_cycle_stats_write_csv(FILE *f, const fs_cycle_stats *s)
 
 /* ---- creation ---- */
 
-static const long *unit_fifo(const fs_config *g, int u)
+static const long *unit_fifo(const fs_cycle_config *g, int u)
 {
     switch (u) {
     case FS_U_front_end: return &g->frontend_fifo_depth;
@@ -78,7 +78,7 @@ static const long *unit_fifo(const fs_config *g, int u)
     }
 }
 
-static long unit_latency(const fs_config *g, int u)
+static long unit_latency(const fs_cycle_config *g, int u)
 {
     switch (u) {
     case FS_U_front_end: return g->frontend_latency;
@@ -90,7 +90,7 @@ static long unit_latency(const fs_config *g, int u)
     }
 }
 
-fs_cycle *fs_cycle_create(const fs_config *cfg, fs_cycle_mode mode, char *err, size_t errlen)
+fs_cycle *fs_cycle_create(const fs_cycle_config *cfg, fs_cycle_mode mode, char *err, size_t errlen)
 {
     fs_cycle *cy = calloc(1, sizeof *cy);
     if (!cy) {
@@ -100,7 +100,7 @@ fs_cycle *fs_cycle_create(const fs_config *cfg, fs_cycle_mode mode, char *err, s
     cy->cfg = *cfg;
     cy->mode = mode;
     cy->tiles.every = 1;
-    const fs_config *g = &cy->cfg;
+    const fs_cycle_config *g = &cy->cfg;
     int boards = (int)g->raster_boards, engines = boards * (int)g->fragment_image_engines;
     cy->engines_total = engines;
     int count[FS_U_COUNT] = {1, 1, boards, boards, engines, engines};

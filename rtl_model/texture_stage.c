@@ -33,7 +33,7 @@ static bool pow2(long v) { return v > 0 && (v & (v - 1)) == 0; }
 
 int fs_cyc_texture_init(fs_cycle *cy, char *err, size_t errlen)
 {
-    const fs_config *g = &cy->cfg;
+    const fs_cycle_config *g = &cy->cfg;
     int n = cy->u[FS_U_texture].n;
     cy->cache = calloc((size_t)n, sizeof *cy->cache);
     if (!cy->cache) {

@@ -21,6 +21,7 @@
 #include <string.h>
 #include "check.h"
 #include "../pipeline/context.h"
+#include "../driver/run_config.h"
 #include "../driver/gl_call.h"
 #include "../rtl_model/cycle_internal.h"
 #include "../units/footprint.h"
@@ -192,13 +193,13 @@ static void filter_wrap_enable(fs_context *c, GLenum filter, GLenum wrap)
     fsglEnable(c, GL_TEXTURE_2D);
 }
 
-static fs_context *cycle_context(const fs_config *cfg, fs_cycle **cy)
+static fs_context *cycle_context(const fs_run_config *cfg, fs_cycle **cy)
 {
-    fs_context *c = fs_context_create(cfg, WN, WN);
+    fs_context *c = fs_context_create(&cfg->gl, WN, WN);
     if (!c)
         return NULL;
     char err[256];
-    *cy = fs_cycle_create(&c->cfg, FS_CYCLE_FULL, err, sizeof err);
+    *cy = fs_cycle_create(&cfg->cycle, FS_CYCLE_FULL, err, sizeof err);
     if (!*cy) {
         fprintf(stderr, "%s\n", err);
         fs_context_destroy(c);
@@ -214,7 +215,7 @@ static fs_context *cycle_context(const fs_config *cfg, fs_cycle **cy)
  * One triangle that covers exactly the pixel centres (8.5 | 9.5, 8.5 |
  * 9.5): base y = 8 from x = 7.35 to 10.65, apex (9, 10.3); at y = 8.5 it
  * spans [7.71, 10.29], at y = 9.5 [8.43, 9.57]. */
-static void one_footprint_quad(const fs_config *cfg, fs_cycle_stats *s, uint64_t *lookups)
+static void one_footprint_quad(const fs_run_config *cfg, fs_cycle_stats *s, uint64_t *lookups)
 {
     fs_cycle *cy;
     fs_context *c = cycle_context(cfg, &cy);
@@ -240,12 +241,12 @@ static void one_footprint_quad(const fs_config *cfg, fs_cycle_stats *s, uint64_t
 
 TEST(rom_stage_latency_closed_form)
 {
-    fs_config cfg;
-    fs_config_defaults(&cfg);
-    cfg.texture_texels_per_cycle = 64; /* a pixel's array in one cycle */
-    cfg.texture_cache_bytes = 0;       /* no bank conflicts */
-    cfg.texture_rom_ports = 1;
-    cfg.texture_rom_stage_latency = 0;
+    fs_run_config cfg;
+    fs_run_config_defaults(&cfg);
+    cfg.cycle.texture_texels_per_cycle = 64; /* a pixel's array in one cycle */
+    cfg.cycle.texture_cache_bytes = 0;       /* no bank conflicts */
+    cfg.cycle.texture_rom_ports = 1;
+    cfg.cycle.texture_rom_stage_latency = 0;
     fs_cycle_stats base, s;
     uint64_t lookups = 0, l2 = 0;
     one_footprint_quad(&cfg, &base, &lookups);
@@ -256,15 +257,15 @@ TEST(rom_stage_latency_closed_form)
     CHECK_EQ_UINT(base.texture_busy, lookups);
     static const long lat[] = {1, 3, 17, 250};
     for (size_t i = 0; i < sizeof lat / sizeof lat[0]; i++) {
-        cfg.texture_rom_stage_latency = lat[i];
+        cfg.cycle.texture_rom_stage_latency = lat[i];
         one_footprint_quad(&cfg, &s, &l2);
         CHECK_EQ_UINT(l2, lookups);
         CHECK_EQ_UINT(s.cycles, base.cycles + (uint64_t)lat[i]);
         CHECK_EQ_UINT(s.texture_busy, base.texture_busy);
     }
     /* Two ports: half the cycles, rounded up. */
-    cfg.texture_rom_stage_latency = 0;
-    cfg.texture_rom_ports = 2;
+    cfg.cycle.texture_rom_stage_latency = 0;
+    cfg.cycle.texture_rom_ports = 2;
     one_footprint_quad(&cfg, &s, &l2);
     CHECK_EQ_UINT(s.texture_busy, (lookups + 1) / 2 > 4 ? (lookups + 1) / 2 : 4);
 }
@@ -296,9 +297,9 @@ TEST(ctr_reload_cycles_brute_force)
     uint64_t busy[2] = {0, 0};
     static const long cost[2] = {0, 9};
     for (int run = 0; run < 2; run++) {
-        fs_config cfg;
-        fs_config_defaults(&cfg);
-        cfg.texture_ctr_reload_cycles = cost[run];
+        fs_run_config cfg;
+        fs_run_config_defaults(&cfg);
+        cfg.cycle.texture_ctr_reload_cycles = cost[run];
         fs_cycle *cy;
         fs_context *c = cycle_context(&cfg, &cy);
         REQUIRE(c);
@@ -341,8 +342,8 @@ TEST(ctr_reload_cycles_brute_force)
  * GL_LINEAR, texture coordinates s = t from lo to hi (magnified). */
 static uint64_t clamp_texels(float lo, float hi)
 {
-    fs_config cfg;
-    fs_config_defaults(&cfg);
+    fs_run_config cfg;
+    fs_run_config_defaults(&cfg);
     fs_cycle *cy;
     fs_context *c = cycle_context(&cfg, &cy);
     if (!c)
@@ -423,9 +424,9 @@ TEST(cycle_mode_bit_identical_footprint)
     static const int Ms[3] = {8, 16, 32};
     for (int fi = 0; fi < 2; fi++)
         for (int mi = 0; mi < 3; mi++) {
-            fs_config cfg;
-            fs_config_defaults(&cfg);
-            fs_context *a = fs_context_create(&cfg, WN, WN);
+            fs_run_config cfg;
+            fs_run_config_defaults(&cfg);
+            fs_context *a = fs_context_create(&cfg.gl, WN, WN);
             fs_cycle *cy;
             fs_context *b = cycle_context(&cfg, &cy);
             REQUIRE(a && b);
