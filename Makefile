@@ -49,9 +49,9 @@ LAYER_LIBS := $(BUILD)/libfragsim_driver.a $(BUILD)/libfragsim_rtl.a $(BUILD)/li
 # Link the archives whole so that every executor overrides its weak fallback.
 WHOLE_LIB = -Wl,--whole-archive $(LAYER_LIBS) -Wl,--no-whole-archive
 
-.PHONY: all deps test run sanitize fuzz bench golden docs clean scenes tests shim study-filters
+.PHONY: all deps test run sanitize fuzz bench golden docs clean scenes tests shim study-filters exec-check
 .PHONY: studies study-occlusion study-query-cost study-texture-cache conformance conformance-run
-all: $(LIB) $(FRAGSIM) tests scenes shim
+all: $(LIB) $(FRAGSIM) tests scenes shim exec-check
 
 deps:
 	@scripts/deps.sh
@@ -85,6 +85,16 @@ $(FRAGSIM): $(CLI_OBJS) $(LIB)
 shim: $(SHIM)
 $(SHIM): $(PIC_OBJS)
 	$(CC) $(LDFLAGS) -shared -Wl,-soname,libfragsimGL.so -Wl,-z,defs -o $@ $(PIC_OBJS) $(SHIM_LIBS) -lm
+
+# The executors in pipeline/ and units/ define the prototypes the command
+# table generates (driver/gl_call.h) without including them (the layers):
+# each of those files is compiled once more with them, so that a definition
+# unlike its table row fails the build instead of the call (no object made).
+EXEC_CHECKS := $(patsubst %.c,$(BUILD)/exec_check/%.ok,$(wildcard pipeline/*.c units/*.c))
+exec-check: $(EXEC_CHECKS)
+$(BUILD)/exec_check/%.ok: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -include driver/gl_call.h -fsyntax-only -MMD -MP -MF $@.d -MT $@ $< && touch $@
 
 tests: $(TEST_BINS)
 $(BUILD)/tests/%: $(BUILD)/tests/%.o $(LIB) $(filter-out $(BUILD)/driver/cli_main.o,$(CLI_OBJS))

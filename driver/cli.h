@@ -24,9 +24,9 @@ typedef struct fs_cli_cycle fs_cli_cycle;
 /* "functional" -> -1, "cycle", "sampled" -> an fs_cycle_mode; returns -1 for
  * an unknown name. */
 int fs_cli_cycle_mode(const char *name, int *mode);
-fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_config *cfg, fs_context *c, const char *csv_path,
+fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_cycle_config *cfg, fs_context *c, const char *csv_path,
                                  uint64_t trace_frames, bool draw_stats, char *err, size_t errlen);
-/* Sampled mode: true for a call the replay skips (see fs_cycle_skip_call). */
+/* Sampled mode: true for a call the replay skips (fs_cycle_frame_skipped, fs_cmd_skippable). */
 bool fs_cli_cycle_skip(const fs_cli_cycle *h, const fs_context *c, int cmd);
 void fs_cli_cycle_frame(fs_cli_cycle *h, long frame);
 /* Sets the "cycle" member of the statistics file's JSON object (jansson);

@@ -9,6 +9,7 @@
 #include <string.h>
 #include <jansson.h>
 #include "cli.h"
+#include "gl_call.h"
 #include "../pipeline/context.h"
 
 struct fs_cli_cycle {
@@ -81,10 +82,10 @@ static void on_record(void *user, const fs_cycle_record *r)
 
 bool fs_cli_cycle_skip(const fs_cli_cycle *h, const fs_context *c, int cmd)
 {
-    return h && fs_cycle_skip_call(h->cy, c, cmd);
+    return h && fs_cycle_frame_skipped(h->cy) && fs_cmd_skippable(c, cmd);
 }
 
-fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_config *cfg, fs_context *c, const char *csv_path,
+fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_cycle_config *cfg, fs_context *c, const char *csv_path,
                                  uint64_t trace_frames, bool draw_stats, char *err, size_t errlen)
 {
     fs_cli_cycle *h = calloc(1, sizeof *h);

@@ -19,6 +19,7 @@
 #include "callset.h"
 #include "error_log.h"
 #include "json_text.h"
+#include "run_config.h"
 
 /* Exact by default: fragsim must render as llvmpipe does; pixels off by
  * exactly 1 are reported apart ("within 1") so that a rounding difference is
@@ -332,8 +333,8 @@ static json_t *unsupported_json(const fs_context *c)
     json_t *o = json_object();
     int rc = 0;
     for (int i = 0; i < FS_CMD_COUNT; i++)
-        if (c->unsupported[i])
-            rc |= json_object_set_new(o, fs_cmd_table[i].name, json_integer((json_int_t)c->unsupported[i]));
+        if (fs_cmd_unsupported(c, i))
+            rc |= json_object_set_new(o, fs_cmd_table[i].name, json_integer((json_int_t)fs_cmd_unsupported(c, i)));
     for (int i = 0; i < c->unsupported_feature_count; i++)
         rc |= json_object_set_new(o, c->unsupported_feature[i].name,
                                   json_integer((json_int_t)c->unsupported_feature[i].count));
@@ -371,7 +372,7 @@ static json_t *frame_json(const frame_record *fr, bool check)
     return o;
 }
 
-static int write_stats(const char *path, const cli_opts *o, const fs_replay_info *info,
+static int write_stats(const char *path, const cli_opts *o, const fs_run_config *cfg, const fs_replay_info *info,
                        const fs_context *c, const fs_replayer *r, const frame_record *frames,
                        size_t nframes, bool check, const char *status, const fs_error_log *errs)
 {
@@ -392,7 +393,7 @@ static int write_stats(const char *path, const cli_opts *o, const fs_replay_info
      * dump numbers calls; an error inside a display list is its glCallList's). */
     rc |= !doc || fs_error_log_json(errs, doc) != 0 || (o->cycle && fs_cli_cycle_json(o->cycle, doc) != 0);
     /* The effective configuration, so any run can be reproduced. */
-    rc |= !doc || json_object_set_new(doc, "config", fs_config_json(&c->cfg)) != 0;
+    rc |= !doc || json_object_set_new(doc, "config", fs_run_config_json(cfg)) != 0;
     if (rc) {
         fprintf(stderr, "%s: out of memory writing %s\n", prog, path);
         json_decref(doc);
@@ -417,14 +418,14 @@ static void print_unsupported(FILE *f, const fs_context *c, const fs_replayer *r
 {
     bool any = fs_replay_skipped_total(r) > 0 || c->unsupported_feature_count > 0;
     for (int i = 0; i < FS_CMD_COUNT && !any; i++)
-        any = c->unsupported[i] != 0;
+        any = fs_cmd_unsupported(c, i) != 0;
     if (!any)
         return;
     fprintf(f, "%s: calls not executed or not fully modelled:\n", prog);
     for (int i = 0; i < FS_CMD_COUNT; i++)
-        if (c->unsupported[i])
+        if (fs_cmd_unsupported(c, i))
             fprintf(f, "  %-48s %10llu  (not implemented)\n", fs_cmd_table[i].name,
-                    (unsigned long long)c->unsupported[i]);
+                    (unsigned long long)fs_cmd_unsupported(c, i));
     for (int i = 0; i < c->unsupported_feature_count; i++)
         fprintf(f, "  %-48s %10llu  (not modelled)\n", c->unsupported_feature[i].name,
                 (unsigned long long)c->unsupported_feature[i].count);
@@ -665,24 +666,24 @@ static int run_replay(int argc, char **argv, bool check)
     if (p)
         return p > 0 ? 0 : 2;
     char err[1024];
-    fs_config cfg;
-    fs_config_defaults(&cfg);
-    if (o.config_file && fs_config_load(&cfg, o.config_file, err, sizeof err) != 0) {
+    fs_run_config cfg;
+    fs_run_config_defaults(&cfg);
+    if (o.config_file && fs_run_config_load(&cfg, o.config_file, err, sizeof err) != 0) {
         fprintf(stderr, "%s: %s\n", prog, err);
         return 2;
     }
     for (int i = 0; i < o.nsets; i++) {
-        if (fs_config_set(&cfg, o.sets[i], err, sizeof err) != 0) {
+        if (fs_run_config_set(&cfg, o.sets[i], err, sizeof err) != 0) {
             fprintf(stderr, "%s: %s\n", prog, err);
             return 2;
         }
     }
-    if (fs_config_check(&cfg, err, sizeof err) != 0) {
+    if (fs_run_config_check(&cfg, err, sizeof err) != 0) {
         fprintf(stderr, "%s: %s\n", prog, err);
         return 2;
     }
-    fs_replay_opts ro = {o.frame_end, o.width ? o.width : (int)cfg.framebuffer_width,
-                         o.height ? o.height : (int)cfg.framebuffer_height};
+    fs_replay_opts ro = {o.frame_end, o.width ? o.width : (int)cfg.gl.framebuffer_width,
+                         o.height ? o.height : (int)cfg.gl.framebuffer_height};
     ro.report_skipped = o.snapshot; /* glretrace snapshots at calls fragsim skips too */
     ro.parser = o.parser;
     fs_replayer *r = fs_replay_open(o.trace, &ro, err, sizeof err);
@@ -693,7 +694,7 @@ static int run_replay(int argc, char **argv, bool check)
     const fs_replay_info *info = fs_replay_info_get(r);
     if (info->warning[0])
         fprintf(stderr, "%s: warning: %s\n", prog, info->warning);
-    fs_context *c = fs_context_create(&cfg, info->width, info->height);
+    fs_context *c = fs_context_create(&cfg.gl, info->width, info->height);
     if (c)
         fs_context_set_double_buffered(c, info->double_buffered); /* as the captured context */
     fs_osmesa *ref = NULL;
@@ -703,8 +704,8 @@ static int run_replay(int argc, char **argv, bool check)
         return 1;
     }
     if (check) {
-        ref = fs_osmesa_create(info->width, info->height, (int)cfg.framebuffer_depth_bits,
-                               (int)cfg.framebuffer_stencil_bits, err, sizeof err);
+        ref = fs_osmesa_create(info->width, info->height, (int)cfg.gl.framebuffer_depth_bits,
+                               (int)cfg.gl.framebuffer_stencil_bits, err, sizeof err);
         if (!ref) {
             fprintf(stderr, "%s: %s\n", prog, err);
             fs_context_destroy(c);
@@ -724,7 +725,7 @@ static int run_replay(int argc, char **argv, bool check)
         fs_replay_close(r);
         return 1;
     }
-    if (o.mode >= 0 && !(o.cycle = fs_cli_cycle_begin(o.mode, &cfg, c, o.csv_file, info->frames, o.draw_stats, err, sizeof err))) {
+    if (o.mode >= 0 && !(o.cycle = fs_cli_cycle_begin(o.mode, &cfg.cycle, c, o.csv_file, info->frames, o.draw_stats, err, sizeof err))) {
         fprintf(stderr, "%s: %s\n", prog, err);
         fs_osmesa_destroy(ref);
         fs_context_destroy(c);
@@ -774,7 +775,7 @@ static int run_replay(int argc, char **argv, bool check)
         rc = 3;
     }
     c->error_hook = NULL;
-    if (write_stats(stats_path, &o, info, c, r, frames, nframes, check, status, &errs) != 0 && rc == 0)
+    if (write_stats(stats_path, &o, &cfg, info, c, r, frames, nframes, check, status, &errs) != 0 && rc == 0)
         rc = 1;
     print_unsupported(stderr, c, r);
     fs_error_log_summary(&errs, stderr, prog);
@@ -923,10 +924,10 @@ static int run_bench(int argc, char **argv)
         return 2;
     }
     char err[1024];
-    fs_config cfg;
-    fs_config_defaults(&cfg);
-    if (config_file && (fs_config_load(&cfg, config_file, err, sizeof err) != 0 ||
-                        fs_config_check(&cfg, err, sizeof err) != 0)) {
+    fs_run_config cfg;
+    fs_run_config_defaults(&cfg);
+    if (config_file && (fs_run_config_load(&cfg, config_file, err, sizeof err) != 0 ||
+                        fs_run_config_check(&cfg, err, sizeof err) != 0)) {
         fprintf(stderr, "%s: %s\n", prog, err);
         return 2;
     }
@@ -954,12 +955,12 @@ static int run_bench(int argc, char **argv)
             return 1;
         }
         const fs_replay_info *info = fs_replay_info_get(r);
-        if (!c && model && (c = fs_context_create(&cfg, info->width, info->height)))
+        if (!c && model && (c = fs_context_create(&cfg.gl, info->width, info->height)))
             fs_context_set_double_buffered(c, info->double_buffered);
         if (c && cycle_mode >= 0) {
             /* A fresh model per repetition: each reports the same cycles. */
             fs_cli_cycle_end(cy);
-            cy = fs_cli_cycle_begin(cycle_mode, &cfg, c, NULL, info->frames, false, err, sizeof err);
+            cy = fs_cli_cycle_begin(cycle_mode, &cfg.cycle, c, NULL, info->frames, false, err, sizeof err);
             if (!cy) {
                 fprintf(stderr, "%s: %s\n", prog, err);
                 fs_replay_close(r);
@@ -1019,11 +1020,11 @@ static int run_bench(int argc, char **argv)
 static int run_config(int argc, char **argv)
 {
     if (argc == 1 && !strcmp(argv[0], "--list")) {
-        fs_config_list(stdout);
+        fs_run_config_list(stdout);
         return 0;
     }
     if (argc == 1 && !strcmp(argv[0], "--defaults")) {
-        fs_config_write_defaults_ini(stdout);
+        fs_run_config_write_defaults_ini(stdout);
         return 0;
     }
     printf("usage: fragsim config --list | --defaults (every key as an INI file: configs/default.ini)\n");

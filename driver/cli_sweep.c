@@ -39,7 +39,7 @@
 #include <time.h>
 #include <unistd.h>
 #include <fcntl.h>
-#include "../pipeline/config.h"
+#include "run_config.h"
 #include "cli.h"
 
 #define MAX_AXES 8
@@ -361,11 +361,11 @@ static int on_spec_value(void *user, const char *section, const char *name, cons
             /* The config parser's own check, so an axis gives the same
              * message for an unknown key or a bad value as an INI file. */
             for (int i = 0; i < a->nvalues; i++) {
-                fs_config scratch;
-                fs_config_defaults(&scratch);
+                fs_run_config scratch;
+                fs_run_config_defaults(&scratch);
                 char assign[2 * NAME_LEN + 2], msg[400];
                 fmt(assign, sizeof assign, "%s=%s", key, a->values[i]);
-                if (fs_config_set(&scratch, assign, msg, sizeof msg) != 0) {
+                if (fs_run_config_set(&scratch, assign, msg, sizeof msg) != 0) {
                     const char *m = strncmp(msg, "--set: ", 7) ? msg : msg + 7;
                     return SPEC_ERR("%s", m);
                 }
@@ -540,9 +540,9 @@ static int check_job_config(const spec *s, long j)
     job_indices(s, j, &t, vals);
     char cfgbuf[PATH_LEN], err[512];
     const char *cfgfile = job_config_file(s, vals, cfgbuf, sizeof cfgbuf);
-    fs_config cfg;
-    fs_config_defaults(&cfg);
-    if (cfgfile && fs_config_load(&cfg, cfgfile, err, sizeof err) != 0) {
+    fs_run_config cfg;
+    fs_run_config_defaults(&cfg);
+    if (cfgfile && fs_run_config_load(&cfg, cfgfile, err, sizeof err) != 0) {
         fprintf(stderr, "%s: %s\n", prog, err);
         return -1;
     }
@@ -551,12 +551,12 @@ static int check_job_config(const spec *s, long j)
             continue;
         char assign[2 * NAME_LEN + 2];
         fmt(assign, sizeof assign, "%s=%s", s->axes[i].name, s->axes[i].values[vals[i]]);
-        if (fs_config_set(&cfg, assign, err, sizeof err) != 0) {
+        if (fs_run_config_set(&cfg, assign, err, sizeof err) != 0) {
             fprintf(stderr, "%s: %s: %s\n", prog, s->path, err);
             return -1;
         }
     }
-    if (fs_config_check(&cfg, err, sizeof err) != 0) {
+    if (fs_run_config_check(&cfg, err, sizeof err) != 0) {
         fprintf(stderr, "%s: %s: job %ld:", prog, s->path, j);
         for (int i = 0; i < s->naxes; i++)
             fprintf(stderr, " %s=%s", s->axes[i].name, s->axes[i].values[vals[i]]);

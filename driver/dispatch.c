@@ -158,6 +158,42 @@ static uint32_t count_u32(int64_t n)
 #undef FS_CMD
 
 /* ---- weak fallback executors: counted as unsupported, by name ---- */
+/* The counts by command are driver knowledge (the command table), kept
+ * in the context behind an opaque pointer made at the first such call;
+ * out of memory, only the total in the statistics counts it. */
+static void count_unsupported(fs_context *c, int cmd)
+{
+    c->stats.unsupported_calls++;
+    if (!c->unsupported_cmds) {
+        c->unsupported_cmds = calloc(FS_CMD_COUNT, sizeof *c->unsupported_cmds);
+        if (!c->unsupported_cmds)
+            return;
+        c->driver_free = fs_driver_state_free;
+    }
+    c->unsupported_cmds[cmd]++;
+}
+
+bool fs_cmd_skippable(const fs_context *c, int cmd)
+{
+    if (cmd < 0 || cmd >= FS_CMD_COUNT)
+        return false;
+    bool draw = (fs_cmd_table[cmd].flags & (FS_F_PRIM | FS_F_DRAW)) || cmd == FS_CMD_Begin ||
+                cmd == FS_CMD_Clear || cmd == FS_CMD_ReadPixels;
+    return draw && !fs_dlist_compiling(c);
+}
+
+uint64_t fs_cmd_unsupported(const fs_context *c, int cmd)
+{
+    return c->unsupported_cmds && cmd >= 0 && cmd < FS_CMD_COUNT ? c->unsupported_cmds[cmd] : 0;
+}
+
+void fs_driver_state_free(fs_context *c)
+{
+    fs_dlist_free_all(c);
+    free(c->unsupported_cmds);
+    c->unsupported_cmds = NULL;
+}
+
 #define FS_PDECL_UNUSED(k, kind, name, cnt) , FS_CT_##kind name __attribute__((unused))
 #define FS_ZERO_V
 #define FS_ZERO_U return 0;
@@ -169,8 +205,7 @@ static uint32_t count_u32(int64_t n)
     __attribute__((weak)) FS_CT_##rk fs_exec_##name(                              \
         fs_context *c FS_MAP(n, FS_PDECL_UNUSED, __VA_ARGS__))                     \
     {                                                                               \
-        c->unsupported[FS_CMD_##name]++;                                           \
-        c->stats.unsupported_calls++;                                              \
+        count_unsupported(c, FS_CMD_##name);                                       \
         FS_ZERO_##rk                                                              \
     }
 #include "gl_commands.def"

@@ -46,8 +46,8 @@ typedef struct fs_dlist_state {
 
 static fs_dlist_state *state(fs_context *c)
 {
-    if (!c->lists)
-        c->lists = calloc(1, sizeof(fs_dlist_state));
+    if (!c->lists && (c->lists = calloc(1, sizeof(fs_dlist_state))) != NULL)
+        c->driver_free = fs_driver_state_free;
     return c->lists;
 }
 

@@ -171,6 +171,18 @@ int fs_submit(fs_context *c, fs_call *call);
  * an array argument is shorter than the command reads (malformed input). */
 int fs_dispatch(fs_context *c, fs_call *call);
 
+/* Whether sampled mode may leave the call out of a frame it interpolates
+ * (fs_cycle_frame_skipped): a draw, what is allowed between glBegin and
+ * glEnd, glBegin itself, a clear or a read-back; never while a display list
+ * is compiled (the call goes into the list). */
+bool fs_cmd_skippable(const fs_context *c, int cmd);
+/* How many calls of cmd were counted unsupported (a command without an
+ * executor); 0 for every command while none was. */
+uint64_t fs_cmd_unsupported(const fs_context *c, int cmd);
+/* Frees what the driver keeps in the context (display lists, the counts by
+ * command); the driver sets it as c->driver_free (pipeline/context.h). */
+void fs_driver_state_free(fs_context *c);
+
 /* Checks array arguments against what the command reads, without a
  * context.  Returns 0, or -1 - k when argument k is too short. */
 int fs_call_validate(const fs_call *call);

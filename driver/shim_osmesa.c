@@ -46,6 +46,7 @@
 #include "capture.h"
 #include "error_log.h"
 #include "shim.h"
+#include "run_config.h"
 
 /* llvmpipe's largest 2D texture, which Mesa's OSMesa reports as
  * OSMESA_MAX_WIDTH and OSMESA_MAX_HEIGHT. */
@@ -53,7 +54,7 @@
 
 struct osmesa_context {
     fs_context *fs;            /* created at the first OSMesaMakeCurrent, which gives the size */
-    fs_config cfg;
+    fs_run_config cfg;         /* FRAGSIM_CONFIG, read as replay reads --config; the model takes cfg.gl */
     GLenum format;             /* OSMESA_RGBA, ... */
     int has_depth;             /* 0 when created with depthBits 0 (see make_config) */
     void *buffer;              /* the caller's buffer, NULL before the first bind */
@@ -202,17 +203,17 @@ void fs_shim_end(enum fs_cmd cmd)
  * README: programs that enable GL_DEPTH_TEST without a depth buffer differ). */
 static int make_config(struct osmesa_context *o, GLint depth, GLint stencil)
 {
-    fs_config_defaults(&o->cfg);
+    fs_run_config_defaults(&o->cfg);
     const char *ini = getenv("FRAGSIM_CONFIG");
     char err[512];
-    if (ini && *ini && fs_config_load(&o->cfg, ini, err, sizeof err) != 0) {
+    if (ini && *ini && fs_run_config_load(&o->cfg, ini, err, sizeof err) != 0) {
         shim_message("FRAGSIM_CONFIG", err);
         return -1;
     }
     o->has_depth = depth > 0;
-    o->cfg.framebuffer_depth_bits = depth <= 0 || stencil > 0 || depth > 16 ? 24 : 16;
-    o->cfg.framebuffer_stencil_bits = stencil > 0 ? 8 : 0;
-    if (fs_config_check(&o->cfg, err, sizeof err) != 0) {
+    o->cfg.gl.framebuffer_depth_bits = depth <= 0 || stencil > 0 || depth > 16 ? 24 : 16;
+    o->cfg.gl.framebuffer_stencil_bits = stencil > 0 ? 8 : 0;
+    if (fs_run_config_check(&o->cfg, err, sizeof err) != 0) {
         shim_message("FRAGSIM_CONFIG", err);
         return -1;
     }
@@ -290,7 +291,7 @@ GLboolean GLAPIENTRY OSMesaMakeCurrent(OSMesaContext o, void *buffer, GLenum typ
     if (current)
         copy_out(current);
     if (!o->fs) {
-        o->fs = fs_context_create(&o->cfg, width, height);
+        o->fs = fs_context_create(&o->cfg.gl, width, height);
         if (!o->fs)
             return GL_FALSE;
         o->width = width;

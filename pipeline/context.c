@@ -3,7 +3,6 @@
 #include <stdio.h>
 #include <string.h>
 #include "context.h"
-#include "../driver/display_list.h"
 #include "../units/occlusion_unit.h"
 #include "../units/texture_unit.h"
 
@@ -51,7 +50,8 @@ void fs_context_destroy(fs_context *c)
 {
     if (!c)
         return;
-    fs_dlist_free_all(c);
+    if (c->driver_free)
+        c->driver_free(c);
     fs_state_free(c);
     fs_occlusion_free(c);
     fs_texture_free(c);

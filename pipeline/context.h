@@ -17,7 +17,6 @@
 #include "fragment_ops.h"
 #include "vertex_stage.h"
 #include "state.h"
-#include "../driver/gl_call.h"
 #include "observer.h"
 
 struct fs_dlist_state;      /* driver/display_list.c */
@@ -71,7 +70,13 @@ struct fs_context {
     struct fs_attrib_stack *attrib_stack;
     uint32_t dirty;
 
+    /* The driver layer's state in the context, opaque here: the display
+     * lists (driver/display_list.c) and the calls counted unsupported by
+     * command (driver/dispatch.c), each made on first use.  The driver sets
+     * driver_free when it makes one; fs_context_destroy calls it first. */
     struct fs_dlist_state *lists;
+    uint64_t *unsupported_cmds;
+    void (*driver_free)(fs_context *c);
     struct fs_capture *capture;   /* non-NULL while recording a trace */
 
     fs_occlusion_hook_fn occlusion_hook; /* issue 3 attaches here */
@@ -86,7 +91,6 @@ struct fs_context {
     fs_observer *observer;
 
     fs_stats stats;               /* counters of the current frame */
-    uint64_t unsupported[FS_CMD_COUNT]; /* by command: executor missing or mode unsupported */
     /* Unsupported features of implemented calls (e.g. "glPolygonMode(GL_LINE)"),
      * counted by name. */
     struct { char name[64]; uint64_t count; } unsupported_feature[64];

@@ -105,7 +105,7 @@ struct fs_cycle {
      * estimated but filled in the sampled tiles, sampling.every). */
     fs_observer watch;
     fs_cycle_tiles tiles;
-    fs_config cfg;
+    fs_cycle_config cfg;
     fs_cycle_mode mode;
     fs_cyc_unit u[FS_U_COUNT];
     fs_cyc_stage rtri;        /* setup -> fragment generator FIFO (triangles) */
@@ -247,10 +247,10 @@ void fs_cyc_sample_frame_end(fs_cycle *cy, uint64_t frame_cycles);
 bool fs_cyc_frame_simulated(const fs_cycle *cy, uint64_t f);
 
 /* ---- per-unit service times ---- */
-uint64_t fs_cyc_front_end_per_triangle(const fs_config *cfg, GLenum mode, size_t n); /* 1/256 cycles */
-uint64_t fs_cyc_front_end_cycles(const fs_config *cfg, size_t vertices);
-uint64_t fs_cyc_setup_cycles(const fs_config *cfg);
-uint64_t fs_cyc_raster_cycles(const fs_config *cfg, unsigned fragments);
+uint64_t fs_cyc_front_end_per_triangle(const fs_cycle_config *cfg, GLenum mode, size_t n); /* 1/256 cycles */
+uint64_t fs_cyc_front_end_cycles(const fs_cycle_config *cfg, size_t vertices);
+uint64_t fs_cyc_setup_cycles(const fs_cycle_config *cfg);
+uint64_t fs_cyc_raster_cycles(const fs_cycle_config *cfg, unsigned fragments);
 int fs_cyc_route(const fs_cycle *cy, int x, int y);     /* image engine of a pixel */
 int fs_cyc_texture_init(fs_cycle *cy, char *err, size_t errlen);
 /* The distinct texel addresses (sorted) the texture unit reads for one

@@ -20,7 +20,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <GL/gl.h>
-#include "../pipeline/config.h"
+#include "cycle_config.h"
 
 typedef struct fs_context fs_context;
 typedef struct fs_cycle fs_cycle;
@@ -50,7 +50,7 @@ void fs_cycle_stats_list(FILE *f);
 
 /* Creates the model for a configuration (already checked).  NULL with a
  * message in err on a configuration the model cannot build. */
-fs_cycle *fs_cycle_create(const fs_config *cfg, fs_cycle_mode mode, char *err, size_t errlen);
+fs_cycle *fs_cycle_create(const fs_cycle_config *cfg, fs_cycle_mode mode, char *err, size_t errlen);
 void fs_cycle_destroy(fs_cycle *cy);
 /* Attaches the model to a context: it becomes the context's observer
  * (c->observer, pipeline/observer.h) and hears of all the work from then on. */
@@ -63,9 +63,9 @@ bool fs_cycle_quad_skipped(const fs_cycle *cy, int x, int y);
 /* ---- calls from the driver ---- */
 /* Sampled mode: the trace's frame count (decides frame or draw sampling). */
 void fs_cycle_set_frames(fs_cycle *cy, uint64_t frames);
-/* Sampled mode: should the driver skip this call (a draw, clear or
- * read-back in a frame that is interpolated, not simulated)? */
-bool fs_cycle_skip_call(const fs_cycle *cy, const fs_context *c, int cmd);
+/* Sampled mode: is the current frame interpolated, not simulated?  The
+ * driver then skips its draws, clears and read-backs (fs_cmd_skippable). */
+bool fs_cycle_frame_skipped(const fs_cycle *cy);
 /* Sampled mode: after the last frame, fills in the skipped frames' cycles
  * (linear between the simulated frames around them).  Idempotent. */
 void fs_cycle_finish(fs_cycle *cy);

@@ -66,7 +66,7 @@ void fs_cycle_stats_write_csv(FILE *f, const fs_cycle_stats *s)
 
 /* ---- creation ---- */
 
-static const long *unit_fifo(const fs_config *g, int u)
+static const long *unit_fifo(const fs_cycle_config *g, int u)
 {
     switch (u) {
     case FS_U_front_end: return &g->frontend_fifo_depth;
@@ -78,7 +78,7 @@ static const long *unit_fifo(const fs_config *g, int u)
     }
 }
 
-static long unit_latency(const fs_config *g, int u)
+static long unit_latency(const fs_cycle_config *g, int u)
 {
     switch (u) {
     case FS_U_front_end: return g->frontend_latency;
@@ -90,7 +90,20 @@ static long unit_latency(const fs_config *g, int u)
     }
 }
 
-fs_cycle *fs_cycle_create(const fs_config *cfg, fs_cycle_mode mode, char *err, size_t errlen)
+static const fs_observer_ops cycle_observer_ops = {
+    fs_cycle_draw, fs_cycle_triangle, fs_cycle_triangle_area, fs_cycle_quad, fs_cycle_texture,
+    fs_cycle_texture_footprint, fs_cycle_ctr_reloads, fs_cycle_clear, fs_cycle_read_pixels,
+    fs_cycle_render_mode, fs_cycle_query_begin, fs_cycle_query_end, fs_cycle_query_wait,
+};
+
+/* Tiles off the mask's map (off the screen, or all of them when the map
+ * could not be allocated) are in the sample as the hash says. */
+static bool tile_off_map(const void *tiles, uint32_t tx, uint32_t ty)
+{
+    return fs_cycle_tile_hashed(tiles, tx, ty);
+}
+
+fs_cycle *fs_cycle_create(const fs_cycle_config *cfg, fs_cycle_mode mode, char *err, size_t errlen)
 {
     fs_cycle *cy = calloc(1, sizeof *cy);
     if (!cy) {
@@ -100,7 +113,11 @@ fs_cycle *fs_cycle_create(const fs_config *cfg, fs_cycle_mode mode, char *err, s
     cy->cfg = *cfg;
     cy->mode = mode;
     cy->tiles.every = 1;
-    const fs_config *g = &cy->cfg;
+    cy->watch.ops = &cycle_observer_ops;
+    cy->watch.user = cy;
+    cy->watch.mask.off_map = tile_off_map;
+    cy->watch.mask.off_map_user = &cy->tiles;
+    const fs_cycle_config *g = &cy->cfg;
     int boards = (int)g->raster_boards, engines = boards * (int)g->fragment_image_engines;
     cy->engines_total = engines;
     int count[FS_U_COUNT] = {1, 1, boards, boards, engines, engines};
@@ -169,25 +186,8 @@ void fs_cycle_destroy(fs_cycle *cy)
     free(cy);
 }
 
-static const fs_observer_ops cycle_observer_ops = {
-    fs_cycle_draw, fs_cycle_triangle, fs_cycle_triangle_area, fs_cycle_quad, fs_cycle_texture,
-    fs_cycle_texture_footprint, fs_cycle_ctr_reloads, fs_cycle_clear, fs_cycle_read_pixels,
-    fs_cycle_render_mode, fs_cycle_query_begin, fs_cycle_query_end, fs_cycle_query_wait,
-};
-
-/* Tiles off the mask's map (off the screen, or all of them when the map
- * could not be allocated) are in the sample as the hash says. */
-static bool tile_off_map(const void *tiles, uint32_t tx, uint32_t ty)
-{
-    return fs_cycle_tile_hashed(tiles, tx, ty);
-}
-
 void fs_cycle_attach(fs_cycle *cy, fs_context *c)
 {
-    cy->watch.ops = &cycle_observer_ops;
-    cy->watch.user = cy;
-    cy->watch.mask.off_map = tile_off_map;
-    cy->watch.mask.off_map_user = &cy->tiles;
     c->observer = &cy->watch;
     cy->fb_width = c->fb.width;
     cy->fb_height = c->fb.height;

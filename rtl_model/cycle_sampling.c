@@ -13,7 +13,6 @@
 #include <string.h>
 #include "cycle_internal.h"
 #include "../pipeline/context.h"
-#include "../driver/display_list.h"
 
 /* The per-screen tables of the tile sample, once it and the screen are
  * known: the per-tile work of the error estimate (no estimate without
@@ -591,16 +590,9 @@ void fs_cycle_set_frames(fs_cycle *cy, uint64_t frames)
                                  : cy->engines_total == 1 ? cy->cfg.sampling_frame_tiles : 1));
 }
 
-bool fs_cycle_skip_call(const fs_cycle *cy, const fs_context *c, int cmd)
+bool fs_cycle_frame_skipped(const fs_cycle *cy)
 {
-    if (!cy->frame_skipped)
-        return false;
-    /* Draws and what is allowed between glBegin and glEnd, glBegin itself,
-     * clears and read-backs; never while a display list is compiled (the
-     * call goes into the list). */
-    bool draw = (fs_cmd_table[cmd].flags & (FS_F_PRIM | FS_F_DRAW)) || cmd == FS_CMD_Begin ||
-                cmd == FS_CMD_Clear || cmd == FS_CMD_ReadPixels;
-    return draw && !fs_dlist_compiling(c);
+    return cy->frame_skipped;
 }
 
 void fs_cycle_finish(fs_cycle *cy)

@@ -6,7 +6,7 @@
  */
 #include "cycle_internal.h"
 
-uint64_t fs_cyc_front_end_cycles(const fs_config *cfg, size_t vertices)
+uint64_t fs_cyc_front_end_cycles(const fs_cycle_config *cfg, size_t vertices)
 {
     return (uint64_t)cfg->frontend_cycles_per_vertex * (uint64_t)vertices;
 }
@@ -23,7 +23,7 @@ static size_t triangles_of(GLenum mode, size_t n)
     }
 }
 
-uint64_t fs_cyc_front_end_per_triangle(const fs_config *cfg, GLenum mode, size_t n)
+uint64_t fs_cyc_front_end_per_triangle(const fs_cycle_config *cfg, GLenum mode, size_t n)
 {
     size_t t = triangles_of(mode, n);
     if (!t)

@@ -5,7 +5,7 @@
  */
 #include "cycle_internal.h"
 
-uint64_t fs_cyc_raster_cycles(const fs_config *cfg, unsigned fragments)
+uint64_t fs_cyc_raster_cycles(const fs_cycle_config *cfg, unsigned fragments)
 {
     uint64_t r = (uint64_t)cfg->raster_fragments_per_cycle;
     return (fragments + r - 1) / r;

@@ -26,7 +26,6 @@
 #include <math.h>
 #include <stdlib.h>
 #include "cycle_internal.h"
-#include "../units/texture_priv.h"
 #include "../units/texture_filter.h"
 #include "../units/texture_reads.h"
 
@@ -34,7 +33,7 @@ static bool pow2(long v) { return v > 0 && (v & (v - 1)) == 0; }
 
 int fs_cyc_texture_init(fs_cycle *cy, char *err, size_t errlen)
 {
-    const fs_config *g = &cy->cfg;
+    const fs_cycle_config *g = &cy->cfg;
     int n = cy->u[FS_U_texture].n;
     cy->cache = calloc((size_t)n, sizeof *cy->cache);
     if (!cy->cache) {
@@ -74,19 +73,15 @@ void fs_cyc_texture_free(fs_cycle *cy)
     cy->cache = NULL;
 }
 
-static inline int wrap(int v, int size, GLenum mode)
-{
-    if (mode == GL_REPEAT)
-        return v & (size - 1); /* sizes are powers of two (GL 1.5 spec 3.8.1) */
-    return v < 0 ? 0 : v >= size ? size - 1 : v;
-}
-
 /* Synthetic address of texel (0, 0) of a level. */
-static uint64_t level_base(const fs_tex_object *t, int level)
+static uint64_t level_base(const struct fs_tex_object *t, int level)
 {
-    uint64_t base = ((uint64_t)t->name + 1) << 36;
-    for (int l = 0; l < level; l++)
-        base += (uint64_t)t->level[l].width * (uint64_t)t->level[l].height * 4u;
+    uint64_t base = ((uint64_t)fs_tex_object_name(t) + 1) << 36;
+    for (int l = 0; l < level; l++) {
+        int w, h;
+        (void)fs_tex_level_size(t, l, &w, &h);
+        base += (uint64_t)w * (uint64_t)h * 4u;
+    }
     return base;
 }
 
@@ -127,7 +122,8 @@ void fs_cycle_texture(void *user, const struct fs_tex_object *t, const fs_quad *
     if (cache)
         fs_tex_cache_get_stats(cache, &before);
     uint64_t base[FS_TEX_MAX_LEVELS];
-    int bases = 0; /* levels whose base is known */
+    int width[FS_TEX_MAX_LEVELS], height;
+    int bases = 0; /* levels whose base and width are known */
     for (int i = 0; i < 4; i++) {
         unsigned n = r->n[i];
         if (!n)
@@ -135,9 +131,11 @@ void fs_cycle_texture(void *user, const struct fs_tex_object *t, const fs_quad *
         uint64_t a[FS_TEX_READS_MAX];
         for (unsigned k = 0; k < n; k++) {
             const struct fs_tex_read *e = &r->texel[i][k];
-            for (; bases <= e->level; bases++)
+            for (; bases <= e->level; bases++) {
                 base[bases] = level_base(t, bases);
-            a[k] = base[e->level] + ((uint64_t)e->y * (uint64_t)t->level[e->level].width + (uint64_t)e->x) * 4u;
+                (void)fs_tex_level_size(t, bases, &width[bases], &height);
+            }
+            a[k] = base[e->level] + ((uint64_t)e->y * (uint64_t)width[e->level] + (uint64_t)e->x) * 4u;
         }
         texels += n;
         service += (n + M - 1) / M;
@@ -157,23 +155,22 @@ void fs_cycle_texture(void *user, const struct fs_tex_object *t, const fs_quad *
     cy->tex_misses += misses;
 }
 
-unsigned fs_cyc_footprint_addresses(const fs_tex_object *t, const fs_filter_out *o, uint64_t *a, unsigned cap)
+unsigned fs_cyc_footprint_addresses(const struct fs_tex_object *t, const fs_filter_out *o, uint64_t *a,
+                                    unsigned cap)
 {
     unsigned n = 0;
     for (int r = 0; r < o->nrects && r < 2; r++) {
         const struct fs_filter_rect *rc = &o->rect[r];
-        if (rc->level < 0 || rc->level > t->last_level || rc->w <= 0 || rc->h <= 0)
-            continue;
-        const fs_tex_image *img = &t->level[rc->level];
-        int w = img->width, h = img->height;
-        if (w <= 0 || h <= 0)
+        int w, h;
+        if (rc->w <= 0 || rc->h <= 0 || !fs_tex_level_size(t, rc->level, &w, &h))
             continue;
         uint64_t base = level_base(t, rc->level);
-        /* The filter view wraps REPEAT or clamps to the edge (GL_CLAMP has
-         * no border there, texture_sample.c tex_mip_view): wrap() does both. */
+        /* The texels the filter read: wrapped as the unit's filter view
+         * wraps them. */
         for (int j = 0; j < rc->h; j++)
             for (int i = 0; i < rc->w && n < cap; i++) {
-                int x = wrap(rc->x0 + i, w, t->wrap_s), y = wrap(rc->y0 + j, h, t->wrap_t);
+                int x = rc->x0 + i, y = rc->y0 + j;
+                fs_tex_footprint_texel(t, rc->level, &x, &y);
                 a[n++] = base + ((uint64_t)y * (uint64_t)w + (uint64_t)x) * 4u;
             }
     }
@@ -194,7 +191,7 @@ unsigned fs_cyc_footprint_addresses(const fs_tex_object *t, const fs_filter_out 
     return m;
 }
 
-void fs_cycle_texture_footprint(void *user, const fs_tex_object *t, const fs_quad *q, const fs_filter_out *out)
+void fs_cycle_texture_footprint(void *user, const struct fs_tex_object *t, const fs_quad *q, const fs_filter_out *out)
 {
     fs_cycle *cy = user;
     if (!cy->cfg.texture_present)

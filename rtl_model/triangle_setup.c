@@ -7,7 +7,7 @@
  */
 #include "cycle_internal.h"
 
-uint64_t fs_cyc_setup_cycles(const fs_config *cfg)
+uint64_t fs_cyc_setup_cycles(const fs_cycle_config *cfg)
 {
     return (uint64_t)cfg->setup_cycles_per_triangle;
 }

@@ -19,6 +19,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "../pipeline/context.h"
+#include "../driver/gl_call.h"
 
 #define G(name, ...) do { if (c) fsgl##name(c, __VA_ARGS__); else gl##name(__VA_ARGS__); } while (0)
 #define G0(name) do { if (c) fsgl##name(c); else gl##name(); } while (0)

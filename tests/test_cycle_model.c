@@ -17,6 +17,8 @@
 #include <string.h>
 #include "check.h"
 #include "../pipeline/context.h"
+#include "../driver/run_config.h"
+#include "../driver/gl_call.h"
 #include "../rtl_model/cycle_internal.h"
 #include "../pipeline/vertex_internal.h"
 #include "../glext/GL_FRAGSIM_occlusion_unit.h"
@@ -115,11 +117,11 @@ TEST(memory_bandwidth)
 #define WN 64
 static float ndc(int px) { return 2.0f * (float)px / (float)WN - 1.0f; }
 
-static fs_context *new_context_sized(const fs_config *cfg, int w, fs_cycle **cy, fs_cycle_mode mode)
+static fs_context *new_context_sized(const fs_run_config *cfg, int w, fs_cycle **cy, fs_cycle_mode mode)
 {
-    fs_context *c = fs_context_create(cfg, w, w);
+    fs_context *c = fs_context_create(&cfg->gl, w, w);
     char err[256];
-    *cy = fs_cycle_create(&c->cfg, mode, err, sizeof err);
+    *cy = fs_cycle_create(&cfg->cycle, mode, err, sizeof err);
     if (!*cy)
         fprintf(stderr, "%s\n", err);
     fs_cycle_attach(*cy, c);
@@ -127,7 +129,7 @@ static fs_context *new_context_sized(const fs_config *cfg, int w, fs_cycle **cy,
     return c;
 }
 
-static fs_context *new_context(const fs_config *cfg, fs_cycle **cy, fs_cycle_mode mode)
+static fs_context *new_context(const fs_run_config *cfg, fs_cycle **cy, fs_cycle_mode mode)
 {
     return new_context_sized(cfg, WN, cy, mode);
 }
@@ -137,11 +139,11 @@ static fs_context *new_context(const fs_config *cfg, fs_cycle **cy, fs_cycle_mod
  * `every`. */
 static fs_context *tile_sampled_context(int tiles, int tile_size, int every, fs_cycle **cy, fs_cycle_mode mode)
 {
-    fs_config cfg;
-    fs_config_defaults(&cfg);
-    cfg.sampling_tiles = tiles;
-    cfg.sampling_tile_size = tile_size;
-    cfg.sampling_every = every;
+    fs_run_config cfg;
+    fs_run_config_defaults(&cfg);
+    cfg.cycle.sampling_tiles = tiles;
+    cfg.cycle.sampling_tile_size = tile_size;
+    cfg.cycle.sampling_every = every;
     fs_context *c = new_context(&cfg, cy, mode);
     fs_cycle_set_frames(*cy, 1);
     return c;
@@ -174,9 +176,9 @@ TEST(occlusion_engines_ceil_t_over_e)
     for (int E = 1; E <= 4; E++) {
         for (size_t ti = 0; ti < sizeof T_list / sizeof T_list[0]; ti++) {
             int T = T_list[ti];
-            fs_config cfg;
-            fs_config_defaults(&cfg);
-            cfg.occlusion_engines = E;
+            fs_run_config cfg;
+            fs_run_config_defaults(&cfg);
+            cfg.gl.occlusion_engines = E;
             fs_cycle *cy;
             fs_context *c = new_context(&cfg, &cy, FS_CYCLE_FULL);
             brief_occlusion_tiles(c, T);
@@ -218,20 +220,20 @@ TEST(rendermode_drain)
      *   glRenderMode(RENDER): issued when the front end took the point
      *   (M+1), results ready at M+104+k, merged M later. */
     for (int T = 1; T <= 6; T++) {
-        fs_config cfg;
-        fs_config_defaults(&cfg);
-        cfg.occlusion_engines = 2;
-        cfg.frontend_cycles_per_vertex = 1;
-        cfg.frontend_latency = cfg.setup_latency = cfg.raster_latency = 0;
-        cfg.setup_cycles_per_triangle = 1;
-        cfg.raster_fragments_per_cycle = 1;
-        cfg.fragment_cycles_per_fragment = 1;
-        cfg.fragment_latency = 100;
-        cfg.occlusion_latency = 0;
-        cfg.occlusion_merge_board_latency = 7;
-        cfg.occlusion_merge_global_latency = 11;
-        cfg.memory_bytes_per_cycle = 65536;
-        cfg.memory_latency = 0;
+        fs_run_config cfg;
+        fs_run_config_defaults(&cfg);
+        cfg.gl.occlusion_engines = 2;
+        cfg.cycle.frontend_cycles_per_vertex = 1;
+        cfg.cycle.frontend_latency = cfg.cycle.setup_latency = cfg.cycle.raster_latency = 0;
+        cfg.cycle.setup_cycles_per_triangle = 1;
+        cfg.cycle.raster_fragments_per_cycle = 1;
+        cfg.cycle.fragment_cycles_per_fragment = 1;
+        cfg.cycle.fragment_latency = 100;
+        cfg.cycle.occlusion_latency = 0;
+        cfg.cycle.occlusion_merge_board_latency = 7;
+        cfg.cycle.occlusion_merge_global_latency = 11;
+        cfg.cycle.memory_bytes_per_cycle = 65536;
+        cfg.cycle.memory_latency = 0;
         fs_cycle *cy;
         fs_context *c = new_context(&cfg, &cy, FS_CYCLE_FULL);
         brief_occlusion_tiles(c, T);
@@ -266,12 +268,12 @@ TEST(tile_sample_lattice)
             if (N % d == 0)
                 w = d;
         int h = N / w;
-        fs_config cfg;
-        fs_config_defaults(&cfg);
-        cfg.sampling_tiles = N;
-        cfg.sampling_tile_size = 8;
+        fs_run_config cfg;
+        fs_run_config_defaults(&cfg);
+        cfg.cycle.sampling_tiles = N;
+        cfg.cycle.sampling_tile_size = 8;
         char err[256];
-        fs_cycle *cy = fs_cycle_create(&cfg, FS_CYCLE_SAMPLED, err, sizeof err);
+        fs_cycle *cy = fs_cycle_create(&cfg.cycle, FS_CYCLE_SAMPLED, err, sizeof err);
         CHECK(cy != NULL);
         if (!cy)
             continue;
@@ -299,10 +301,10 @@ TEST(tile_sample_lattice)
         fs_cycle_destroy(cy);
     }
     /* full cycle mode never skips */
-    fs_config cfg;
-    fs_config_defaults(&cfg);
+    fs_run_config cfg;
+    fs_run_config_defaults(&cfg);
     char err[256];
-    fs_cycle *cy = fs_cycle_create(&cfg, FS_CYCLE_FULL, err, sizeof err);
+    fs_cycle *cy = fs_cycle_create(&cfg.cycle, FS_CYCLE_FULL, err, sizeof err);
     fs_cycle_set_frames(cy, 1);
     CHECK(!fs_cycle_quad_skipped(cy, 16, 0));
     fs_cycle_destroy(cy);

@@ -21,6 +21,8 @@
 #include <string.h>
 #include "check.h"
 #include "../pipeline/context.h"
+#include "../driver/run_config.h"
+#include "../driver/gl_call.h"
 #include "../rtl_model/cycle_internal.h"
 #include "../units/footprint.h"
 #include "../units/texture_priv.h"
@@ -90,19 +92,31 @@ static int brute_texels(const fs_tex_object *t, const fs_filter_out *o, bool *in
     return n;
 }
 
+/* A context with texture 5 bound: a w x h MIPmapped texture with the
+ * min filter and wrap modes given; NULL when it cannot be made. */
+static fs_context *texture_5(int w, int h, uint32_t seed, GLenum min, GLenum wrap_s, GLenum wrap_t)
+{
+    fs_context *c = fs_context_create(NULL, 16, 16);
+    if (!c)
+        return NULL;
+    fsglBindTexture(c, GL_TEXTURE_2D, 5);
+    upload_mipmaps(c, w, h, seed);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)min);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, (GLint)wrap_s);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, (GLint)wrap_t);
+    if (fsglGetError(c) != GL_NO_ERROR || !fs_tex_complete(c->texture->bound)) {
+        fs_context_destroy(c);
+        return NULL;
+    }
+    return c;
+}
+
 TEST(footprint_texels_brute_force)
 {
     /* A non-square texture, REPEAT in s and CLAMP_TO_EDGE in t. */
-    fs_context *c = fs_context_create(NULL, 16, 16);
+    fs_context *c = texture_5(128, 32, 11, GL_LINEAR_MIPMAP_LINEAR, GL_REPEAT, GL_CLAMP_TO_EDGE);
     REQUIRE(c);
-    fsglBindTexture(c, GL_TEXTURE_2D, 5);
-    upload_mipmaps(c, 128, 32, 11);
-    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
     fs_tex_object *t = c->texture->bound;
-    REQUIRE(t && fs_tex_complete(t));
     fs_mip_view mv;
     memset(&mv, 0, sizeof mv);
     mv.levels = t->last_level + 1;
@@ -179,13 +193,13 @@ static void filter_wrap_enable(fs_context *c, GLenum filter, GLenum wrap)
     fsglEnable(c, GL_TEXTURE_2D);
 }
 
-static fs_context *cycle_context(const fs_config *cfg, fs_cycle **cy)
+static fs_context *cycle_context(const fs_run_config *cfg, fs_cycle **cy)
 {
-    fs_context *c = fs_context_create(cfg, WN, WN);
+    fs_context *c = fs_context_create(&cfg->gl, WN, WN);
     if (!c)
         return NULL;
     char err[256];
-    *cy = fs_cycle_create(&c->cfg, FS_CYCLE_FULL, err, sizeof err);
+    *cy = fs_cycle_create(&cfg->cycle, FS_CYCLE_FULL, err, sizeof err);
     if (!*cy) {
         fprintf(stderr, "%s\n", err);
         fs_context_destroy(c);
@@ -201,7 +215,7 @@ static fs_context *cycle_context(const fs_config *cfg, fs_cycle **cy)
  * One triangle that covers exactly the pixel centres (8.5 | 9.5, 8.5 |
  * 9.5): base y = 8 from x = 7.35 to 10.65, apex (9, 10.3); at y = 8.5 it
  * spans [7.71, 10.29], at y = 9.5 [8.43, 9.57]. */
-static void one_footprint_quad(const fs_config *cfg, fs_cycle_stats *s, uint64_t *lookups)
+static void one_footprint_quad(const fs_run_config *cfg, fs_cycle_stats *s, uint64_t *lookups)
 {
     fs_cycle *cy;
     fs_context *c = cycle_context(cfg, &cy);
@@ -227,12 +241,12 @@ static void one_footprint_quad(const fs_config *cfg, fs_cycle_stats *s, uint64_t
 
 TEST(rom_stage_latency_closed_form)
 {
-    fs_config cfg;
-    fs_config_defaults(&cfg);
-    cfg.texture_texels_per_cycle = 64; /* a pixel's array in one cycle */
-    cfg.texture_cache_bytes = 0;       /* no bank conflicts */
-    cfg.texture_rom_ports = 1;
-    cfg.texture_rom_stage_latency = 0;
+    fs_run_config cfg;
+    fs_run_config_defaults(&cfg);
+    cfg.cycle.texture_texels_per_cycle = 64; /* a pixel's array in one cycle */
+    cfg.cycle.texture_cache_bytes = 0;       /* no bank conflicts */
+    cfg.cycle.texture_rom_ports = 1;
+    cfg.cycle.texture_rom_stage_latency = 0;
     fs_cycle_stats base, s;
     uint64_t lookups = 0, l2 = 0;
     one_footprint_quad(&cfg, &base, &lookups);
@@ -243,15 +257,15 @@ TEST(rom_stage_latency_closed_form)
     CHECK_EQ_UINT(base.texture_busy, lookups);
     static const long lat[] = {1, 3, 17, 250};
     for (size_t i = 0; i < sizeof lat / sizeof lat[0]; i++) {
-        cfg.texture_rom_stage_latency = lat[i];
+        cfg.cycle.texture_rom_stage_latency = lat[i];
         one_footprint_quad(&cfg, &s, &l2);
         CHECK_EQ_UINT(l2, lookups);
         CHECK_EQ_UINT(s.cycles, base.cycles + (uint64_t)lat[i]);
         CHECK_EQ_UINT(s.texture_busy, base.texture_busy);
     }
     /* Two ports: half the cycles, rounded up. */
-    cfg.texture_rom_stage_latency = 0;
-    cfg.texture_rom_ports = 2;
+    cfg.cycle.texture_rom_stage_latency = 0;
+    cfg.cycle.texture_rom_ports = 2;
     one_footprint_quad(&cfg, &s, &l2);
     CHECK_EQ_UINT(s.texture_busy, (lookups + 1) / 2 > 4 ? (lookups + 1) / 2 : 4);
 }
@@ -283,9 +297,9 @@ TEST(ctr_reload_cycles_brute_force)
     uint64_t busy[2] = {0, 0};
     static const long cost[2] = {0, 9};
     for (int run = 0; run < 2; run++) {
-        fs_config cfg;
-        fs_config_defaults(&cfg);
-        cfg.texture_ctr_reload_cycles = cost[run];
+        fs_run_config cfg;
+        fs_run_config_defaults(&cfg);
+        cfg.cycle.texture_ctr_reload_cycles = cost[run];
         fs_cycle *cy;
         fs_context *c = cycle_context(&cfg, &cy);
         REQUIRE(c);
@@ -328,8 +342,8 @@ TEST(ctr_reload_cycles_brute_force)
  * GL_LINEAR, texture coordinates s = t from lo to hi (magnified). */
 static uint64_t clamp_texels(float lo, float hi)
 {
-    fs_config cfg;
-    fs_config_defaults(&cfg);
+    fs_run_config cfg;
+    fs_run_config_defaults(&cfg);
     fs_cycle *cy;
     fs_context *c = cycle_context(&cfg, &cy);
     if (!c)
@@ -410,9 +424,9 @@ TEST(cycle_mode_bit_identical_footprint)
     static const int Ms[3] = {8, 16, 32};
     for (int fi = 0; fi < 2; fi++)
         for (int mi = 0; mi < 3; mi++) {
-            fs_config cfg;
-            fs_config_defaults(&cfg);
-            fs_context *a = fs_context_create(&cfg, WN, WN);
+            fs_run_config cfg;
+            fs_run_config_defaults(&cfg);
+            fs_context *a = fs_context_create(&cfg.gl, WN, WN);
             fs_cycle *cy;
             fs_context *b = cycle_context(&cfg, &cy);
             REQUIRE(a && b);
@@ -435,8 +449,39 @@ TEST(cycle_mode_bit_identical_footprint)
         }
 }
 
+/* The texture unit's answers for the cycle model's memory layout
+ * (units/texture_unit.h): level sizes as glTexImage2D gave them, false
+ * outside the complete chain, and the footprint filters' wrapping, against
+ * wrap_ref (REPEAT modulo the size, everything else clamped to the edge). */
+TEST(texture_layout_queries)
+{
+    fs_context *c = texture_5(16, 4, 3, GL_NEAREST_MIPMAP_NEAREST, GL_REPEAT, GL_CLAMP);
+    REQUIRE(c);
+    const fs_tex_object *t = c->texture->bound;
+    CHECK_EQ_UINT(fs_tex_object_name(t), 5);
+    static const int want[6][2] = {{16, 4}, {8, 2}, {4, 1}, {2, 1}, {1, 1}, {0, 0}};
+    for (int l = 0; l < 6; l++) {
+        int w = -1, h = -1;
+        CHECK_EQ_INT(fs_tex_level_size(t, l, &w, &h), l < 5);
+        CHECK_EQ_INT(w, want[l][0]);
+        CHECK_EQ_INT(h, want[l][1]);
+    }
+    int w = -1, h = -1;
+    CHECK(!fs_tex_level_size(t, -1, &w, &h) && w == 0 && h == 0);
+    CHECK(!fs_tex_level_size(t, FS_TEX_MAX_LEVELS, &w, &h) && w == 0 && h == 0);
+    for (int l = 0; l < 5; l++)
+        for (int v = -20; v <= 20; v++) {
+            int x = v, y = v;
+            fs_tex_footprint_texel(t, l, &x, &y);
+            CHECK_EQ_INT(x, wrap_ref(v, want[l][0], GL_REPEAT));
+            CHECK_EQ_INT(y, wrap_ref(v, want[l][1], GL_CLAMP_TO_EDGE));
+        }
+    fs_context_destroy(c);
+}
+
 TEST_LIST = {
     TEST_ENTRY(footprint_texels_brute_force),
+    TEST_ENTRY(texture_layout_queries),
     TEST_ENTRY(rom_stage_latency_closed_form),
     TEST_ENTRY(ctr_reload_cycles_brute_force),
     TEST_ENTRY(clamp_border_texels_not_read),

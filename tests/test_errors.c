@@ -18,6 +18,7 @@
 #include "../driver/image.h"
 #include "../driver/trace.h"
 #include "../pipeline/context.h"
+#include "../driver/gl_call.h"
 
 static char fragsim[1024];
 static char tmpdir[64];

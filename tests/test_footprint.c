@@ -13,6 +13,7 @@
 #include "check.h"
 #include "../driver/cli.h"
 #include "../pipeline/context.h"
+#include "../driver/gl_call.h"
 #include "../units/footprint.h"
 #include "../units/texture_priv.h"
 #include "../glext/GL_FRAGSIM_footprint_filter.h"

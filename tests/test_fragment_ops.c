@@ -19,6 +19,7 @@
 #include "check.h"
 #include "osmesa_util.h"
 #include "../pipeline/context.h"
+#include "../driver/gl_call.h"
 #include "../pipeline/fragment_stages.h"
 
 /* ---------------------------------------------------------------- helpers */

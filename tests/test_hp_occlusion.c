@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include "check.h"
 #include "../pipeline/context.h"
+#include "../driver/gl_call.h"
 
 #define W 64
 #define H 64

@@ -17,6 +17,7 @@
 #include "check.h"
 #include "../driver/cli.h"
 #include "../pipeline/context.h"
+#include "../driver/gl_call.h"
 #include "../units/mpgrid.h"
 #include "../units/texture_filter.h"
 #include "../units/texture_unit.h"

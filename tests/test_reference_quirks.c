@@ -16,6 +16,7 @@
 #include <stdlib.h>
 #include "check.h"
 #include "../pipeline/context.h"
+#include "../driver/gl_call.h"
 
 #define W 256
 #define H 256

@@ -425,8 +425,40 @@ TEST(record_replays_what_the_file_holds)
     unlink(t.path);
 }
 
+/* The driver's state in the context (pipeline/context.h keeps it opaque):
+ * the display lists install the driver's destructor, no command counts as
+ * unsupported while every one has an executor, and sampled mode's skippable
+ * calls are the draws, what glBegin/glEnd allow, glBegin, glClear and
+ * glReadPixels, none of them while a list is compiled. */
+TEST(driver_state_in_the_context)
+{
+    fs_context *c = fs_context_create(NULL, 8, 8);
+    REQUIRE(c);
+    CHECK(c->driver_free == NULL);
+    fsglNewList(c, 1, GL_COMPILE);
+    fsglEndList(c);
+    CHECK(c->driver_free == fs_driver_state_free);
+    for (int i = -1; i <= FS_CMD_COUNT; i++)
+        CHECK_EQ_UINT(fs_cmd_unsupported(c, i), 0);
+    static const int skip[] = {FS_CMD_Begin, FS_CMD_End, FS_CMD_Vertex3f, FS_CMD_Color4ub, FS_CMD_DrawArrays,
+                               FS_CMD_DrawElements, FS_CMD_CallList, FS_CMD_Clear, FS_CMD_ReadPixels};
+    static const int keep[] = {FS_CMD_Enable, FS_CMD_Viewport, FS_CMD_BindTexture, FS_CMD_Finish, FS_CMD_NewList};
+    for (size_t i = 0; i < sizeof skip / sizeof skip[0]; i++)
+        CHECK(fs_cmd_skippable(c, skip[i]));
+    for (size_t i = 0; i < sizeof keep / sizeof keep[0]; i++)
+        CHECK(!fs_cmd_skippable(c, keep[i]));
+    CHECK(!fs_cmd_skippable(c, -1) && !fs_cmd_skippable(c, FS_CMD_COUNT));
+    fsglNewList(c, 2, GL_COMPILE_AND_EXECUTE);
+    for (size_t i = 0; i < sizeof skip / sizeof skip[0]; i++)
+        CHECK(!fs_cmd_skippable(c, skip[i]));
+    fsglEndList(c);
+    CHECK(fs_cmd_skippable(c, FS_CMD_Clear));
+    fs_context_destroy(c); /* frees both lists (make sanitize) */
+}
+
 TEST_LIST = {
     TEST_ENTRY(frames_from_swaps_and_size_from_viewport),
+    TEST_ENTRY(driver_state_in_the_context),
     TEST_ENTRY(frames_from_glfinish_without_swaps),
     TEST_ENTRY(unknown_calls_are_counted_by_name),
     TEST_ENTRY(draw_without_recorded_arrays_is_refused),

@@ -17,6 +17,7 @@
 #include "check.h"
 #include "osmesa_util.h"
 #include "../pipeline/context.h"
+#include "../driver/gl_call.h"
 
 typedef void (*scene_fn)(fs_context *c, int w, int h);
 

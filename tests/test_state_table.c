@@ -16,6 +16,7 @@
 #include "check.h"
 #include "osmesa_util.h"
 #include "../pipeline/context.h"
+#include "../driver/gl_call.h"
 #include "../pipeline/state.h"
 
 /* What a sequence read: every query result and error, in order, with a

@@ -14,6 +14,7 @@
 #include "check.h"
 #include "osmesa_util.h"
 #include "../pipeline/context.h"
+#include "../driver/gl_call.h"
 #include "../units/texture_unit.h"
 
 typedef struct tex_case {

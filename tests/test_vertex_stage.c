@@ -16,6 +16,7 @@
 #include "check.h"
 #include "osmesa_util.h"
 #include "../pipeline/context.h"
+#include "../driver/gl_call.h"
 #include "../pipeline/vertex_internal.h"
 
 /* ------------------------------------------------------------ helpers */

@@ -796,6 +796,16 @@ void fs_exec_TexEnvfv(fs_context *c, GLenum target, GLenum pname, const GLfloat 
 
 GLuint fs_texture_binding_2d(const fs_context *c) { return c->texture->bound->name; }
 
+GLuint fs_tex_object_name(const fs_tex_object *t) { return t->name; }
+
+bool fs_tex_level_size(const fs_tex_object *t, int level, int *width, int *height)
+{
+    bool stored = level >= 0 && level < FS_TEX_MAX_LEVELS;
+    *width = stored ? t->level[level].width : 0;
+    *height = stored ? t->level[level].height : 0;
+    return stored && level <= t->last_level && *width > 0 && *height > 0;
+}
+
 /* A texture target the queries accept; sets the error (or counts the
  * unsupported 1D/3D target) and returns false otherwise. */
 static bool query_target_ok(fs_context *c, GLenum target, bool proxy_ok, const char *what)

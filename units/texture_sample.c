@@ -425,6 +425,20 @@ static void tex_mip_view(const fs_tex_object *t, fs_mip_view *v)
     v->wrap_t = t->wrap_t == GL_REPEAT ? GL_REPEAT : GL_CLAMP_TO_EDGE;
 }
 
+static int footprint_wrap(int v, int size, GLenum mode)
+{
+    if (mode == GL_REPEAT)
+        return v & (size - 1); /* sizes are powers of two (GL 1.5 spec 3.8.1) */
+    return v < 0 ? 0 : v >= size ? size - 1 : v;
+}
+
+/* The wrapping tex_mip_view gives the footprint filters. */
+void fs_tex_footprint_texel(const fs_tex_object *t, int level, int *x, int *y)
+{
+    *x = footprint_wrap(*x, t->level[level].width, t->wrap_s);
+    *y = footprint_wrap(*y, t->level[level].height, t->wrap_t);
+}
+
 /* Samples the covered pixels of a minified quad with the footprint filter:
  * each pixel's footprint is the parallelogram of the quad's differences
  * along its own row and column (the affine footprint, texture_filter.h). */

@@ -42,6 +42,22 @@ bool *fs_texture_enable_flag(fs_context *c, GLenum cap);
 void fs_texture_enables_changed(fs_context *c);
 /* The name of the bound 2D texture (glGet, glPushAttrib; pipeline/state.c). */
 GLuint fs_texture_binding_2d(const fs_context *c);
+/* glBindTexture's executor (texture_object.c; its prototype as the command
+ * table generates it in driver/gl_call.h), for glPopAttrib. */
+void fs_exec_BindTexture(fs_context *c, GLenum target, GLuint texture);
+
+/* A texture object as the cycle model lays its texels out in memory
+ * (rtl_model/texture_stage.c), without its internals: the object's name;
+ * the width and height of a level as stored (0 x 0 for an undefined level
+ * or one outside 0..FS_TEX_MAX_LEVELS-1), true when the level is defined
+ * and one that sampling may use (up to the complete chain's last level,
+ * GL 1.5 spec 3.8.10); and texel (x, y) of a level as the footprint
+ * filters read it: wrapped for GL_REPEAT, otherwise clamped to the edge
+ * (GL_CLAMP has no border colour there, texture_sample.c). */
+struct fs_tex_object;
+GLuint fs_tex_object_name(const struct fs_tex_object *t);
+bool fs_tex_level_size(const struct fs_tex_object *t, int level, int *width, int *height);
+void fs_tex_footprint_texel(const struct fs_tex_object *t, int level, int *x, int *y);
 
 /* Applies texturing to a quad whose tex[][] holds the interpolated
  * (s, t, r, q) of all four pixels. */

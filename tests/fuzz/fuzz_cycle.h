@@ -8,16 +8,18 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "../../driver/gl_call.h"
-#include "../../pipeline/config.h"
 #include "../../pipeline/context.h"
 #include "../../rtl_model/cycle_model.h"
 
-/* NULL for functional mode (or when the model cannot be made). */
-static inline fs_cycle *fuzz_cycle_begin(const fs_config *cfg, fs_context *c, size_t size, uint64_t frames)
+/* The model with the default configuration; NULL for functional mode (or
+ * when the model cannot be made). */
+static inline fs_cycle *fuzz_cycle_begin(fs_context *c, size_t size, uint64_t frames)
 {
     char err[256];
     int mode = (int)(size % 3) - 1;
-    fs_cycle *cy = mode >= 0 ? fs_cycle_create(cfg, (fs_cycle_mode)mode, err, sizeof err) : NULL;
+    fs_cycle_config cfg;
+    fs_cycle_config_defaults(&cfg);
+    fs_cycle *cy = mode >= 0 ? fs_cycle_create(&cfg, (fs_cycle_mode)mode, err, sizeof err) : NULL;
     if (cy) {
         fs_cycle_set_frames(cy, frames);
         fs_cycle_attach(cy, c);
@@ -35,7 +37,7 @@ static inline void fuzz_cycle_frame_end(fs_cycle *cy)
 /* Submits a call, unless sampled mode skips it (a frame it interpolates). */
 static inline int fuzz_cycle_submit(const fs_cycle *cy, fs_context *c, fs_call *call)
 {
-    return cy && fs_cycle_skip_call(cy, c, call->cmd) ? 0 : fs_submit(c, call);
+    return cy && fs_cycle_frame_skipped(cy) && fs_cmd_skippable(c, call->cmd) ? 0 : fs_submit(c, call);
 }
 
 /* Finishes the run (the interpolation of skipped frames and the totals

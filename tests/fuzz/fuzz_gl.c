@@ -200,7 +200,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fs_context *c = fs_context_create(&cfg, 32, 32);
     if (!c)
         return 0;
-    fs_cycle *cy = fuzz_cycle_begin(&cfg, c, size, 1);
+    fs_cycle *cy = fuzz_cycle_begin(c, size, 1);
     input in = {data, size};
     arena ar = {0};
     fs_call call;

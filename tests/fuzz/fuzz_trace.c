@@ -88,7 +88,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     fs_config_defaults(&cfg);
     fs_context *c = fs_context_create(&cfg, info->width, info->height);
     if (c) {
-        fs_cycle *cy = fuzz_cycle_begin(&cfg, c, size, info->frames);
+        fs_cycle *cy = fuzz_cycle_begin(c, size, info->frames);
         fs_call call;
         fs_replay_event ev;
         while ((ev = fs_replay_next(r, &call)) != FS_REPLAY_EOF && ev != FS_REPLAY_ERROR) {
