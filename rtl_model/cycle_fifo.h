@@ -11,6 +11,7 @@
 #define FS_CYCLE_FIFO_H
 #include <stdbool.h>
 #include <stdint.h>
+#include "cycle_signals.h"
 
 /* The FIFO in front of a stage: the start times of the last `depth` items
  * the stage took from it (a ring), which is all the recurrence needs: item
@@ -23,6 +24,7 @@ typedef struct fs_cyc_fifo {
     uint64_t sptr;      /* first item not known to have started (occupancy) */
     uint32_t sidx;      /* sptr % depth */
     uint64_t hwm;       /* most items ever waiting, since the last reset */
+    fs_sig_tap *tap;    /* the stage's signals (cycle_signals.h), NULL when none are written */
 } fs_cyc_fifo;
 
 /* A memory: bandwidth in bytes per cycle, read latency.  `t` is the time the
@@ -32,6 +34,7 @@ typedef struct fs_cyc_mem {
     uint64_t bw, t;
     uint32_t latency;
     int shift;   /* log2 bw when bw is a power of two (a shift, not a division), else -1 */
+    fs_sig_tap *tap;   /* its memory_busy signal, NULL when none are written */
 } fs_cyc_mem;
 
 typedef struct fs_cyc_stage {
@@ -58,6 +61,8 @@ static inline void fs_cyc_fifo_push(fs_cyc_fifo *f, uint64_t t)
     if (++f->widx == f->depth)
         f->widx = 0;
     f->count++;
+    if (f->tap)
+        fs_sig_take(f->tap, t);
 }
 
 /* The same for m quads taken one after another over `service` cycles (a
@@ -129,6 +134,8 @@ static inline uint64_t fs_cyc_step_n(fs_cyc_stage *st, uint64_t arr, uint64_t se
     st->busy += service;
     st->stalled += depart - start - service;
     st->free = depart;
+    if (st->in.tap)
+        fs_sig_item(st->in.tap, start, service, depart, next ? next->in.tap : NULL);
     return depart + lat;
 }
 /* Passes one item through stage st: it arrives at `arr`, takes `service`

@@ -55,6 +55,11 @@ fs_cycle *fs_cycle_create(const fs_config *cfg, fs_cycle_mode mode, char *err, s
 void fs_cycle_destroy(fs_cycle *cy);
 /* Attaches the model to a context (sets c->cycle). */
 void fs_cycle_attach(fs_cycle *cy, fs_context *c);
+/* From now on the model reports its signals (cycle_signals.h) to w, which
+ * must outlive it.  Full mode only: -1 in sampled mode (its estimated work
+ * has no cycles to show) or out of memory. */
+struct fs_signals;
+int fs_cycle_signals_attach(fs_cycle *cy, struct fs_signals *w);
 
 /* ---- calls from the functional pipeline (only when c->cycle != NULL) ---- */
 /* A draw of n vertices in mode; false in sampled mode when the draw is

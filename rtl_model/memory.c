@@ -23,6 +23,8 @@ uint64_t fs_cyc_mem_reserve(fs_cyc_mem *m, uint64_t t, uint64_t bytes)
     uint64_t tb = t * m->bw;
     if (m->t < tb)
         m->t = tb;
+    if (m->tap)
+        fs_sig_memory(m->tap, m->t, m->t + bytes, m->bw);
     m->t += bytes;
     if (m->shift >= 0)
         return (m->t + m->bw - 1) >> m->shift;
