@@ -7,6 +7,7 @@
  * mistake in these options is found, with a one-line message and exit
  * status 2, before the trace is opened or anything is written.
  */
+#include <stddef.h>
 #include <stdlib.h>
 #include <string.h>
 #include "cli.h"
@@ -146,11 +147,22 @@ static int check_opts(const fs_cli_signal_opts *so, int mode, char *err, size_t 
         return -1;
     }
     if (mode != FS_CYCLE_FULL) {
-        snprintf(err, errlen, "%s needs --mode cycle (sampled mode estimates work it does not time)",
-                 so->vcd ? "--vcd" : "--gpio");
+        /* sampled mode estimates work it does not time: no cycles to show */
+        snprintf(err, errlen, "%s needs --mode cycle", so->vcd ? "--vcd" : "--gpio");
         return -1;
     }
     return 0;
+}
+
+/* Without --vcd-signals: every signal in the VCD, only the mapped ones for
+ * the lines alone; the mapped ones always. */
+static void complete_selection(const fs_cli_signals *s, const fs_cli_signal_opts *so, bool sel[FS_SIG_COUNT])
+{
+    for (int i = 0; i < FS_SIG_COUNT; i++) {
+        if (!so->vcd_signals)
+            sel[i] = so->vcd != NULL;
+        sel[i] |= s->line_of[i] >= 0;
+    }
 }
 
 static fs_cli_signals *open_fail(fs_cli_signals *s, bool *failed)
@@ -201,13 +213,7 @@ fs_cli_signals *fs_cli_signals_open(const fs_cli_signal_opts *so, int mode, cons
         return open_fail(s, failed);
     }
     s->vcd_path = so->vcd;
-    /* Without --vcd-signals: every signal in the VCD, only the mapped
-     * ones for the lines alone. */
-    if (!so->vcd_signals)
-        for (int i = 0; i < FS_SIG_COUNT; i++)
-            sel[i] = so->vcd || s->line_of[i] >= 0;
-    for (int i = 0; i < FS_SIG_COUNT; i++)
-        sel[i] |= s->line_of[i] >= 0;
+    complete_selection(s, so, sel);
     char comment[600];
     snprintf(comment, sizeof comment, "fragsim replay --mode cycle%s%s %s", config ? " --config " : "",
              config ? config : "", trace ? trace : "");
@@ -234,6 +240,10 @@ int fs_cli_signals_close(fs_cli_signals *s, char *err, size_t errlen)
 {
     if (!s)
         return 0;
+    uint64_t late = fs_signals_late(s->w);
+    if (late)
+        fprintf(stderr, "fragsim: warning: %llu signal changes out of order (written at the horizon)\n",
+                (unsigned long long)late);
     int rc = fs_signals_close(s->w);
     if (s->vcd && fclose(s->vcd) != 0)
         rc = -1;
