@@ -5,7 +5,7 @@ CC ?= cc
 CXX ?= c++
 BUILD ?= build
 OPT ?= -O2
-PKGS_CORE := osmesa snappy zlib inih jansson
+PKGS_CORE := osmesa snappy zlib inih jansson libgpiod
 # -ffp-contract=off: every float operation rounds separately, as llvmpipe's
 # do, also in the functions built for FMA (clang would otherwise fuse a*b+c
 # there, and gcc outside strict ISO modes).
@@ -14,7 +14,7 @@ CFLAGS_BASE := -std=c11 -D_POSIX_C_SOURCE=200809L -g $(OPT) -Wall -Wextra -Werro
 CFLAGS += $(CFLAGS_BASE) $(SAN)
 CXXFLAGS += -std=c++17 -g $(OPT) -Wall -Wextra -Werror -ffp-contract=off $(SAN)
 LDFLAGS += $(SAN)
-PKG_LIBS = $(shell pkg-config --libs $(PKGS_CORE) 2>/dev/null || echo -lOSMesa -lsnappy -lz -linih -ljansson)
+PKG_LIBS = $(shell pkg-config --libs $(PKGS_CORE) 2>/dev/null || echo -lOSMesa -lsnappy -lz -linih -ljansson -lgpiod)
 OIIO_LIBS = $(shell pkg-config --libs OpenImageIO 2>/dev/null || echo -lOpenImageIO -lOpenImageIO_Util)
 
 # The library core: C only, no OSMesa and no OpenImageIO.
@@ -38,7 +38,7 @@ SCENEGEN := $(BUILD)/scenegen
 SHIM_SRCS := $(wildcard driver/shim_*.c)
 PIC_OBJS := $(LIB_SRCS:%.c=$(BUILD)/pic/%.o) $(SHIM_SRCS:%.c=$(BUILD)/pic/%.o)
 SHIM := $(BUILD)/libfragsimGL.so
-SHIM_LIBS = $(shell pkg-config --libs snappy zlib inih jansson 2>/dev/null || echo -lsnappy -lz -linih -ljansson)
+SHIM_LIBS = $(shell pkg-config --libs snappy zlib inih jansson libgpiod 2>/dev/null || echo -lsnappy -lz -linih -ljansson -lgpiod)
 LIB := $(BUILD)/libfragsim.a
 FRAGSIM := $(BUILD)/fragsim
 # One static library per layer (docs/architecture.md, "Layers";

@@ -37,4 +37,30 @@ int fs_cli_cycle_json(fs_cli_cycle *h, struct json_t *into);
 double fs_cli_cycle_totals(fs_cli_cycle *h, fs_cycle_stats *t);
 void fs_cli_cycle_summary(fs_cli_cycle *h, FILE *f, double seconds);
 void fs_cli_cycle_end(fs_cli_cycle *h);
+/* The run's model, to attach signals to. */
+fs_cycle *fs_cli_cycle_model(fs_cli_cycle *h);
+/* --frames A-B, A, A-, -B (first frame 0; b -1: to the end); -1 if malformed. */
+int fs_cli_parse_frames(const char *s, long *a, long *b);
+
+/* driver/cli_signals.c: `fragsim replay --vcd`, `--gpio` (docs/signals.md). */
+typedef struct fs_cli_signal_opts {
+    const char *vcd, *vcd_signals, *vcd_frames, *gpio, *gpio_map;
+} fs_cli_signal_opts;
+/* Option a with value v: 0 not a signal option, 1 taken (with its value),
+ * -1 a usage error (printed). */
+int fs_cli_signals_option(fs_cli_signal_opts *so, const char *a, const char *v);
+/* The options' help lines, generated from the signal table. */
+void fs_cli_signals_usage(FILE *f);
+typedef struct fs_cli_signals fs_cli_signals;
+/* Checks the options against the mode, opens the GPIO lines and the VCD
+ * file: NULL with *failed false when no option was given; NULL with
+ * *failed true and a one-line message in err otherwise (exit status 2,
+ * nothing written). */
+fs_cli_signals *fs_cli_signals_open(const fs_cli_signal_opts *so, int mode, const char *trace, const char *config,
+                                    bool *failed, char *err, size_t errlen);
+/* Connects them to the run's model; -1 with a message. */
+int fs_cli_signals_attach(fs_cli_signals *s, fs_cli_cycle *cycle, char *err, size_t errlen);
+/* Writes what is left, releases the lines; -1 with a message when the
+ * VCD could not be written.  s may be NULL. */
+int fs_cli_signals_close(fs_cli_signals *s, char *err, size_t errlen);
 #endif

@@ -184,6 +184,8 @@ void fs_cli_cycle_summary(fs_cli_cycle *h, FILE *f, double seconds)
             seconds > 0 ? (double)t.cycles / seconds / 1e6 : 0.0);
 }
 
+fs_cycle *fs_cli_cycle_model(fs_cli_cycle *h) { return h->cy; }
+
 void fs_cli_cycle_end(fs_cli_cycle *h)
 {
     if (!h)

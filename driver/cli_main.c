@@ -13,6 +13,7 @@
 #include <unistd.h>
 #include "../pipeline/context.h"
 #include "image.h"
+#include "../rtl_model/cycle_signals.h"
 #include "osmesa_ref.h"
 #include "cli.h"
 #include "replay.h"
@@ -49,6 +50,7 @@ typedef struct cli_opts {
     const char *snapshot_prefix;
     bool snapshot_alpha;
     fs_trace_parser parser;   /* --reader */
+    fs_cli_signal_opts sig;   /* --vcd, --gpio and their options (cli_signals.c) */
 } cli_opts;
 
 static const char *prog = "fragsim";
@@ -102,6 +104,7 @@ static void usage_replay(FILE *f, bool check)
                     "statistics file (per frame counters, unsupported calls by name).\n\n",
             check ? "check" : "stats",
             check ? "  --tolerance N      largest allowed colour difference per channel (default 0)\n" : "");
+    fs_cli_signals_usage(f);
 }
 
 /* --reader fast|general; -1 (printed) for anything else. */
@@ -118,31 +121,6 @@ static int parse_reader(const char *v, fs_trace_parser *parser)
     return 0;
 }
 
-static int parse_frames(const char *s, long *a, long *b)
-{
-    char *end;
-    *a = 0;
-    *b = -1;
-    if (*s == '-') {
-        *b = strtol(s + 1, &end, 10);
-        return *end || *b < 0 ? -1 : 0;
-    }
-    *a = strtol(s, &end, 10);
-    if (end == s || *a < 0)
-        return -1;
-    if (*end == '\0') {
-        *b = *a;
-        return 0;
-    }
-    if (*end != '-')
-        return -1;
-    if (end[1] == '\0')
-        return 0;
-    const char *t = end + 1;
-    *b = strtol(t, &end, 10);
-    return *end || *b < *a ? -1 : 0;
-}
-
 /* Returns 0, 1 when --help was printed, -1 on a usage error. */
 static int parse_opts(int argc, char **argv, cli_opts *o, bool check)
 {
@@ -154,6 +132,7 @@ static int parse_opts(int argc, char **argv, cli_opts *o, bool check)
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        int taken;
 #define NEEDV()                                                              \
     do {                                                                     \
         if (!v) {                                                            \
@@ -177,7 +156,7 @@ static int parse_opts(int argc, char **argv, cli_opts *o, bool check)
             o->sets[o->nsets++] = v;
         } else if (!strcmp(a, "--frames")) {
             NEEDV();
-            if (parse_frames(v, &o->frame_first, &o->frame_last) != 0) {
+            if (fs_cli_parse_frames(v, &o->frame_first, &o->frame_last) != 0) {
                 fprintf(stderr, "%s: --frames '%s': expected A-B, A, A- or -B with A <= B\n", prog, v);
                 return -1;
             }
@@ -242,6 +221,10 @@ static int parse_opts(int argc, char **argv, cli_opts *o, bool check)
             NEEDV();
             if (parse_reader(v, &o->parser) != 0)
                 return -1;
+        } else if ((taken = fs_cli_signals_option(&o->sig, a, v)) != 0) {
+            if (taken < 0)
+                return -1;
+            i++;
         } else if (a[0] == '-' && a[1]) {
             fprintf(stderr, "%s: unknown option %s (see --help)\n", prog, a);
             return -1;
@@ -713,6 +696,17 @@ static int run_replay(int argc, char **argv, bool check)
             return 1;
         }
     }
+    /* The signal options' errors (a missing GPIO chip, a line in use, an
+     * unknown signal...) come before anything is written. */
+    bool sig_failed;
+    fs_cli_signals *sig = fs_cli_signals_open(&o.sig, o.mode, o.trace, o.config_file, &sig_failed, err, sizeof err);
+    if (sig_failed) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        fs_osmesa_destroy(ref);
+        fs_context_destroy(c);
+        fs_replay_close(r);
+        return 2;
+    }
     char snap_dir[4096] = "";
     if (o.snapshot_prefix && strrchr(o.snapshot_prefix, '/')) {
         snprintf(snap_dir, sizeof snap_dir, "%.*s", (int)(strrchr(o.snapshot_prefix, '/') - o.snapshot_prefix),
@@ -720,13 +714,18 @@ static int run_replay(int argc, char **argv, bool check)
     }
     if (make_dir(o.out_dir) != 0 || (snap_dir[0] && make_dir(snap_dir) != 0)) {
         fprintf(stderr, "%s: cannot create %s: %s\n", prog, snap_dir[0] ? snap_dir : o.out_dir, strerror(errno));
+        fs_cli_signals_close(sig, err, sizeof err);
         fs_osmesa_destroy(ref);
         fs_context_destroy(c);
         fs_replay_close(r);
         return 1;
     }
-    if (o.mode >= 0 && !(o.cycle = fs_cli_cycle_begin(o.mode, &cfg.cycle, c, o.csv_file, info->frames, o.draw_stats, err, sizeof err))) {
+    if ((o.mode >= 0 && !(o.cycle = fs_cli_cycle_begin(o.mode, &cfg.cycle, c, o.csv_file, info->frames, o.draw_stats, err,
+                                                       sizeof err))) ||
+        (sig && fs_cli_signals_attach(sig, o.cycle, err, sizeof err) != 0)) {
         fprintf(stderr, "%s: %s\n", prog, err);
+        fs_cli_cycle_end(o.cycle);
+        fs_cli_signals_close(sig, err, sizeof err);
         fs_osmesa_destroy(ref);
         fs_context_destroy(c);
         fs_replay_close(r);
@@ -793,6 +792,11 @@ static int run_replay(int argc, char **argv, bool check)
     if (o.cycle)
         fs_cli_cycle_summary(o.cycle, stderr, now_seconds() - t0);
     fs_cli_cycle_end(o.cycle);
+    if (fs_cli_signals_close(sig, err, sizeof err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        if (rc == 0)
+            rc = 1;
+    }
     free(frames);
     fs_osmesa_destroy(ref);
     fs_context_destroy(c);
@@ -1052,6 +1056,18 @@ static int run_stats(int argc, char **argv)
     return argc == 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h")) ? 0 : 2;
 }
 
+static int run_signals(int argc, char **argv)
+{
+    bool md = argc == 2 && !strcmp(argv[1], "--markdown");
+    if ((argc == 1 || md) && !strcmp(argv[0], "--list")) {
+        fs_signals_list(stdout, md);
+        return 0;
+    }
+    printf("usage: fragsim signals --list [--markdown]\n"
+           "The cycle model's signals (`replay --mode cycle --vcd`, `--gpio`; docs/signals.md).\n");
+    return argc == 1 && (!strcmp(argv[0], "--help") || !strcmp(argv[0], "-h")) ? 0 : 2;
+}
+
 static int run_replay_only(int argc, char **argv) { return run_replay(argc, argv, false); }
 static int run_check(int argc, char **argv) { return run_replay(argc, argv, true); }
 
@@ -1068,6 +1084,7 @@ static const struct cli_command {
     {"bench", "TRACE", "time a replay on the model or on OSMesa (used by `make bench`)", run_bench},
     {"config", "--list", "list every configuration key with its default and meaning", run_config},
     {"stats", "--list", "list every statistic with its unit and meaning", run_stats},
+    {"signals", "--list", "list the cycle model's signals (VCD, GPIO)", run_signals},
     {"study-filters", "[--out DIR]", "texture filter quality/cost study (used by `make study-filters`)", fs_cli_study_filters},
     {"sweep", "SPEC.ini", "run a grid of configurations x traces as jobs; CSV and plots", fs_cli_sweep},
     {"mpgrid", "[--markdown]", "MP-Grid vs MIPmap vs Clip-Map memory example (Huettner 1999, 4.1.2)", fs_cli_mpgrid},

@@ -45,6 +45,7 @@
 #include "../pipeline/context.h"
 #include "capture.h"
 #include "error_log.h"
+#include "gpio_lines.h"
 #include "shim.h"
 #include "run_config.h"
 
@@ -64,6 +65,8 @@ struct osmesa_context {
     GLboolean y_up;            /* OSMESA_Y_UP */
     void *depth_copy;          /* what OSMesaGetDepthBuffer hands out */
     int frame_open;            /* calls recorded since the last frame boundary */
+    fs_gpio *gate;             /* FRAGSIM_TRACE_GPIO's input line, NULL without one */
+    int gate_waiting;          /* capture waits for the gate line to go high */
     /* The GL errors of the context's calls (FRAGSIM_STATS), numbered by the
      * shim's own count of the program's GL calls on it, from 0; the
      * command is named when the call returns (fs_shim_end). */
@@ -112,11 +115,8 @@ static void copy_out(struct osmesa_context *o)
 
 /* ---- capture ---- */
 
-static void capture_start(struct osmesa_context *o)
+static void capture_begin(struct osmesa_context *o, const char *path)
 {
-    const char *path = getenv("FRAGSIM_TRACE");
-    if (!path || !*path)
-        return;
     char err[512];
     if (fs_capture_open(o->fs, path, err, sizeof err) != 0) {
         shim_message("FRAGSIM_TRACE: not capturing", err);
@@ -124,6 +124,44 @@ static void capture_start(struct osmesa_context *o)
     }
     fsglViewport(o->fs, 0, 0, o->width, o->height);
     o->frame_open = 0;
+}
+
+/* FRAGSIM_TRACE_GPIO=CHIP:LINE: the input line that gates the capture
+ * (docs/signals.md); 0 when there is none or it opened, -1 (printed) when
+ * it cannot be read: then nothing is captured. */
+static int gate_open(struct osmesa_context *o)
+{
+    const char *spec = getenv("FRAGSIM_TRACE_GPIO");
+    if (!spec || !*spec || o->gate)
+        return 0;
+    char chip[256], err[512], *end;
+    const char *colon = strrchr(spec, ':');
+    unsigned long line = colon ? strtoul(colon + 1, &end, 10) : 0;
+    if (!colon || colon == spec || !colon[1] || *end || (size_t)(colon - spec) >= sizeof chip) {
+        shim_message("FRAGSIM_TRACE_GPIO: expected CHIP:LINE, not capturing", spec);
+        return -1;
+    }
+    snprintf(chip, sizeof chip, "%.*s", (int)(colon - spec), spec);
+    unsigned off = (unsigned)line;
+    bool out = false;
+    o->gate = fs_gpio_open(&fs_gpio_libgpiod, chip, 1, &off, &out, err, sizeof err);
+    if (!o->gate) {
+        shim_message("FRAGSIM_TRACE_GPIO: not capturing", err);
+        return -1;
+    }
+    return 0;
+}
+
+/* The capture starts at the first OSMesaMakeCurrent or, with a gate line,
+ * at the first of it and the glFinish calls at which the line is high. */
+static void capture_start(struct osmesa_context *o)
+{
+    const char *path = getenv("FRAGSIM_TRACE");
+    if (!path || !*path || gate_open(o) != 0)
+        return;
+    o->gate_waiting = o->gate && fs_gpio_get(o->gate, 0) != 1;
+    if (!o->gate_waiting)
+        capture_begin(o, path);
 }
 
 static void capture_finish(struct osmesa_context *o)
@@ -182,6 +220,8 @@ void fs_shim_end(enum fs_cmd cmd)
         if (o->fs->capture) {
             fs_capture_frame_end(o->fs);
             o->frame_open = 0;
+        } else if (o->gate_waiting) {
+            capture_start(o);
         }
         break;
     case FS_CMD_Flush:
@@ -327,6 +367,7 @@ void GLAPIENTRY OSMesaDestroyContext(OSMesaContext o)
         current = NULL;
     capture_finish(o);
     write_stats(o);
+    fs_gpio_close(o->gate);
     fs_context_destroy(o->fs);
     fs_error_log_free(&o->errs);
     free(o->depth_copy);

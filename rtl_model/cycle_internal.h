@@ -195,6 +195,13 @@ struct fs_cycle {
     int tri_cx, tri_cy;
     bool tri_est;
     double carry[FS_CARRY_COUNT];
+
+    /* signals (cycle_signal_taps.c), sig NULL when none are written: the
+     * taps of every stage, FIFO and memory; CTR reloads of the quad being
+     * processed; the last Occlusion Unit quad's engine and bus cycles */
+    fs_signals *sig;
+    fs_sig_tap *taps;
+    uint64_t sig_ctr, occ_last_tests, occ_last_writes;
 };
 
 /* Latest completion time so far (the pipeline drained). */
@@ -222,6 +229,22 @@ void fs_cycle_query_wait(void *user, fs_context *c, GLuint id);
 /* The current draw's record (fs_cycle_set_record_fn); an estimated draw's
  * is its estimate alone. */
 void fs_cyc_emit_draw(fs_cycle *cy, bool estimated, uint64_t cycles);
+
+/* ---- signals (cycle_signal_taps.c), each only when cy->sig is set ---- */
+static inline void fs_cyc_signal(fs_cycle *cy, uint64_t t, int sig, int64_t v)
+{
+    if (cy->sig)
+        fs_signals_put(cy->sig, t, sig, 0, v);
+}
+/* The quad's texture unit starts at t: its CTR reloads. */
+void fs_cyc_signal_texture(fs_cycle *cy, uint64_t t);
+/* Occlusion Unit e starts the quad at t: its engines' and OccU Control's cycles. */
+void fs_cyc_signal_occlusion(fs_cycle *cy, int e, uint64_t t);
+/* A draw, a render mode change, a query's begin, end and result. */
+void fs_cyc_signal_draw(fs_cycle *cy, const fs_context *c, uint64_t t);
+void fs_cyc_signal_render_mode(fs_cycle *cy, GLenum mode, uint64_t t);
+void fs_cyc_signal_query_end(fs_cycle *cy, const fs_context *c, uint64_t issue, uint64_t ready);
+void fs_cyc_signal_free(fs_cycle *cy);
 
 /* ---- the sampling estimator (cycle_sampling.c) ---- */
 /* The tile sample's per-screen tables, once it and the screen are known. */

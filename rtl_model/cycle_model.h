@@ -55,6 +55,11 @@ void fs_cycle_destroy(fs_cycle *cy);
 /* Attaches the model to a context: it becomes the context's observer
  * (c->observer, pipeline/observer.h) and hears of all the work from then on. */
 void fs_cycle_attach(fs_cycle *cy, fs_context *c);
+/* From now on the model reports its signals (cycle_signals.h) to w, which
+ * must outlive it.  Full mode only: -1 in sampled mode (its estimated work
+ * has no cycles to show) or out of memory. */
+struct fs_signals;
+int fs_cycle_signals_attach(fs_cycle *cy, struct fs_signals *w);
 
 /* Sampled mode's tile sample: whether quad (x, y) lies in a tile that is
  * not rasterized (false outside tile sampling). */

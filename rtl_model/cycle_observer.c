@@ -170,6 +170,7 @@ void fs_cycle_destroy(fs_cycle *cy)
     if (!cy)
         return;
     fs_cyc_texture_free(cy);
+    fs_cyc_signal_free(cy);
     for (int u = 0; u < FS_U_COUNT; u++) {
         for (int i = 0; cy->u[u].st && i < cy->u[u].n; i++)
             fs_cyc_stage_free(&cy->u[u].st[i]);
@@ -294,6 +295,8 @@ void fs_cyc_emit_draw(fs_cycle *cy, bool estimated, uint64_t cycles)
     cy->record_fn(cy->record_user, &r);
 }
 
+static uint64_t issue_time(const fs_cycle *cy);
+
 static void close_draw(fs_cycle *cy)
 {
     if (!cy->draw_open)
@@ -330,6 +333,8 @@ bool fs_cycle_draw(void *user, fs_context *c, GLenum mode, size_t n)
         return estimated;
     cy->draw_open = true;
     cy->draw_t0 = fs_cyc_now_total(cy);
+    if (cy->sig)
+        fs_cyc_signal_draw(cy, c, issue_time(cy));
     if (cy->record_draws)
         snapshot(cy, &cy->draw_snap);
     cy->fe_per_tri = fs_cyc_front_end_per_triangle(&cy->cfg, mode, n);
@@ -420,6 +425,8 @@ void fs_cycle_quad(void *user, fs_context *c, const fs_quad *q, const fs_quad_wo
     uint64_t a = fs_cyc_step(rs, arr, FS_SCALE(fs_cyc_raster_cycles(&cy->cfg, n)), 0, false, ts ? ts : fs);
     if (ts) {
         cy->u[FS_U_texture].active = true;
+        if (cy->sig)
+            fs_cyc_signal_texture(cy, a > ts->free ? a : ts->free);
         a = fs_cyc_step(ts, a, FS_SCALE(cy->tex_service), FS_SCALE(cy->tex_bytes), cy->tex_misses && !cy->cfg.memory_prefetch, fs);
         cy->tex_pending = false;
         cy->tex_service = cy->tex_bytes = cy->tex_misses = 0;
@@ -436,6 +443,8 @@ void fs_cycle_quad(void *user, fs_context *c, const fs_quad *q, const fs_quad_wo
         bool writes;
         cy->u[FS_U_occlusion].active = true;
         fs_cyc_occlusion_quad_end(cy, &service, &writes);
+        if (cy->sig)
+            fs_cyc_signal_occlusion(cy, e, a > os->free ? a : os->free);
         a = fs_cyc_step(os, a, FS_SCALE(service), 0, false, NULL);
         if (writes)
             a += (uint64_t)cy->cfg.occlusion_write_latency;
@@ -490,6 +499,8 @@ static uint64_t wait_until(fs_cycle *cy, uint64_t ready)
         cy->done = cy->cmd;
     cy->acc.syncs++;
     cy->acc.sync_cycles += w;
+    if (cy->sig)
+        fs_signals_drained(cy->sig, cy->cmd);
     return w;
 }
 
@@ -513,9 +524,10 @@ void fs_cycle_read_pixels(void *user, fs_context *c, uint64_t bytes)
 void fs_cycle_render_mode(void *user, fs_context *c, GLenum mode)
 {
     fs_cycle *cy = user;
-    (void)mode;
     close_triangle(cy);
     fs_cyc_occlusion_hook(cy, c);
+    if (cy->sig)
+        fs_cyc_signal_render_mode(cy, mode, issue_time(cy));
     /* glRenderMode returns the pass's results: every fragment before it
      * must have left the engines and the reports must be merged. */
     cy->acc.rendermode_sync_cycles += wait_until(cy, fs_cyc_time(cy) + merge_latency(cy));
@@ -527,16 +539,18 @@ void fs_cycle_query_begin(void *user, fs_context *c, GLuint id)
     fs_cyc_occlusion_hook(cy, c);
     cy->query_id = id;
     cy->query_issue = fs_cyc_now_total(cy);
+    fs_cyc_signal(cy, issue_time(cy), FS_SIG_query_begin, 1);
     snapshot(cy, &cy->query_snap);
 }
 
 void fs_cycle_query_end(void *user, fs_context *c)
 {
     fs_cycle *cy = user;
-    (void)c;
     close_triangle(cy);
     uint64_t issue = issue_time(cy);
     uint64_t ready = fs_cyc_time(cy) + merge_latency(cy);
+    if (cy->sig)
+        fs_cyc_signal_query_end(cy, c, issue, ready);
     uint64_t lat = ready > issue ? ready - issue : 0;
     cy->acc.queries++;
     cy->acc.query_latency += lat;
@@ -589,6 +603,8 @@ void fs_cycle_frame_end(fs_cycle *cy, fs_cycle_stats *out)
     fs_cyc_charge_estimated_draws(cy);
 
     wait_until(cy, fs_cyc_time(cy)); /* swap: the frame is done when drained */
+    if (cy->sig)
+        fs_signals_frame_end(cy->sig, fs_cyc_time(cy));
     fs_cycle_stats now;
     snapshot(cy, &now);
     diff(cy, &now, &cy->frame_snap, out);
@@ -599,5 +615,7 @@ void fs_cycle_frame_end(fs_cycle *cy, fs_cycle_stats *out)
     cy->rtri.in.hwm = 0;
     fs_cyc_sample_frame_end(cy, out->cycles);
     cy->frame++;
+    if (cy->sig)
+        fs_signals_frame_begin(cy->sig, cy->frame, fs_cyc_time(cy));
     cy->frame_skipped = cy->frame_sampling && !fs_cyc_frame_simulated(cy, cy->frame);
 }

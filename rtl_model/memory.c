@@ -12,6 +12,7 @@ void fs_cyc_mem_init(fs_cyc_mem *m, uint64_t bytes_per_cycle, uint32_t latency)
     m->bw = bytes_per_cycle ? bytes_per_cycle : 1;
     m->t = 0;
     m->latency = latency;
+    m->tap = NULL; /* no signals until fs_cycle_signals_attach */
     m->shift = -1;
     if (!(m->bw & (m->bw - 1)))
         for (m->shift = 0; (1ull << m->shift) < m->bw; m->shift++)
@@ -23,6 +24,8 @@ uint64_t fs_cyc_mem_reserve(fs_cyc_mem *m, uint64_t t, uint64_t bytes)
     uint64_t tb = t * m->bw;
     if (m->t < tb)
         m->t = tb;
+    if (m->tap)
+        fs_sig_memory(m->tap, m->t, m->t + bytes, m->bw);
     m->t += bytes;
     if (m->shift >= 0)
         return (m->t + m->bw - 1) >> m->shift;

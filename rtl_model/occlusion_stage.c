@@ -66,6 +66,8 @@ void fs_cyc_occlusion_quad_end(fs_cycle *cy, uint64_t *service, bool *writes)
     /* Engines and OccU Control overlap: the slower one sets the pace. */
     *service = tests > wr ? tests : wr;
     *writes = cy->occ_writes != 0;
+    cy->occ_last_tests = tests;
+    cy->occ_last_writes = wr;
     cy->occ_cycles = cy->occ_cur = cy->occ_writes = cy->occ_arb = 0;
     cy->occ_last_engine = -1;
     cy->occ_pending = false;

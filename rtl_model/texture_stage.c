@@ -239,6 +239,7 @@ void fs_cycle_ctr_reloads(void *user, uint64_t n)
     /* Each reload reads one pointer-table entry before the texel can be
      * addressed (4.1.4): the texture unit waits for it. */
     cy->acc.ctr_reloads += n;
+    cy->sig_ctr += n;
     cy->tex_pending = true;
     cy->tex_service += n * (uint64_t)cy->cfg.texture_ctr_reload_cycles;
 }

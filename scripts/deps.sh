@@ -4,7 +4,7 @@
 set -e
 PKGS="build-essential pkg-config libosmesa6-dev libopenimageio-dev openimageio-tools \
 libsnappy-dev zlib1g-dev libinih-dev libjansson-dev libcmocka-dev apitrace xvfb xauth mesa-utils gnuplot-nox parallel clang \
-python3 python3-opengl"
+python3 python3-opengl libgpiod-dev gtkwave"
 missing=""
 for p in $PKGS; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"

@@ -11,7 +11,7 @@ set -euo pipefail
 B=${1:-build}
 FB=${2:-build-fuzz}
 SECONDS_MAX=${FUZZ_SECONDS:-150}
-LIBS="$(pkg-config --libs snappy zlib inih jansson) -lm"
+LIBS="$(pkg-config --libs snappy zlib inih jansson libgpiod) -lm"
 CFLAGS_F="-std=c11 -D_POSIX_C_SOURCE=200809L -g -O1 -Wall -Wextra -Werror -fno-omit-frame-pointer"
 
 clang $CFLAGS_F -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \

@@ -1,6 +1,7 @@
 #!/bin/sh
 # Regenerates the reference pages that come from the tables in code
-# (pipeline/config.def, pipeline/stats.def) — never edit them by hand.
+# (pipeline/config.def, pipeline/stats.def, rtl_model/signals.def) — never
+# edit them (or docs/signals.md's table) by hand.
 set -e
 BUILD=${1:-build}
 {
@@ -24,4 +25,13 @@ BUILD=${1:-build}
     "$BUILD/fragsim" stats --list
     echo '```'
 } >docs/statistics.md
-echo "wrote docs/config.md docs/statistics.md"
+# docs/signals.md: the prose is written by hand, the table between the
+# markers comes from rtl_model/signals.def (`fragsim signals --list --markdown`).
+"$BUILD/fragsim" signals --list --markdown >docs/.signals_table.md
+awk -v table=docs/.signals_table.md '
+    /^<!-- signals: begin -->/ { print; while ((getline l < table) > 0) print l; skip = 1; next }
+    /^<!-- signals: end -->/ { skip = 0 }
+    !skip' docs/signals.md >docs/.signals.md
+mv docs/.signals.md docs/signals.md
+rm -f docs/.signals_table.md
+echo "wrote docs/config.md docs/statistics.md docs/signals.md"

@@ -21,7 +21,7 @@ workload() { # ARGS... -o FILE, rebuilt when the program or library changed
     if [ ! -x "$bin" ] || [ "$bin" -ot "$DOC/occlusion_workload.c" ] || [ "$bin" -ot "$BUILD/libfragsim.a" ]; then
         ${CC:-cc} -std=c11 -D_POSIX_C_SOURCE=200809L -O2 -Wall -Wextra -Werror -Wno-missing-field-initializers \
             "$DOC/occlusion_workload.c" -o "$bin" -Wl,--whole-archive "$BUILD/libfragsim.a" -Wl,--no-whole-archive \
-            $(pkg-config --libs osmesa snappy zlib inih jansson 2>/dev/null || echo -lOSMesa -lsnappy -lz -linih -ljansson) -lm
+            $(pkg-config --libs osmesa snappy zlib inih jansson libgpiod 2>/dev/null || echo -lOSMesa -lsnappy -lz -linih -ljansson -lgpiod) -lm
     fi
     "$bin" "$@"
 }

@@ -151,9 +151,25 @@ PY
     diff "$WORK/err_want.txt" "$WORK/err_got.txt" || fail "errors list differs"
 }
 
+# FRAGSIM_TRACE_GPIO=CHIP:LINE gates the capture on an input line
+# (docs/signals.md).  No GPIO chip here: a chip that does not exist gives one
+# message naming it, nothing is captured, the program runs on unchanged.
+test_capture_gate_missing_chip() {
+    build osmesa_boxes
+    "$WORK/osmesa_boxes_shim" >"$WORK/plain.txt" 2>/dev/null || fail "plain run failed"
+    FRAGSIM_TRACE="$WORK/gated.trace" FRAGSIM_TRACE_GPIO=fragsim-no-such-chip:0 "$WORK/osmesa_boxes_shim" \
+        >"$WORK/gated.txt" 2>"$WORK/e" || fail "the program failed: $(cat "$WORK/e")"
+    grep -q "FRAGSIM_TRACE_GPIO: not capturing.*no GPIO chip 'fragsim-no-such-chip'" "$WORK/e" ||
+        fail "no message naming the chip: $(cat "$WORK/e")"
+    [ ! -e "$WORK/gated.trace" ] || fail "a trace was written"
+    diff "$WORK/plain.txt" "$WORK/gated.txt" || fail "the gate changed the output"
+    FRAGSIM_TRACE="$WORK/gated.trace" FRAGSIM_TRACE_GPIO=nocolon "$WORK/osmesa_boxes_shim" >/dev/null 2>"$WORK/e"
+    grep -q "FRAGSIM_TRACE_GPIO: expected CHIP:LINE" "$WORK/e" || fail "no message for a bad value: $(cat "$WORK/e")"
+}
+
 for t in test_shim_exports_table_and_osmesa_api test_boxes_same_numbers_as_osmesa test_api_same_as_osmesa \
          test_shim_errors_listed_by_call \
-         test_capture_dump_replay_check test_capture_to_unwritable_path; do
+         test_capture_dump_replay_check test_capture_to_unwritable_path test_capture_gate_missing_chip; do
     run_test "$t"
 done
 finish

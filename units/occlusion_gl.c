@@ -353,6 +353,14 @@ static fs_query *find_query(struct fs_occlusion *o, GLuint id)
     return NULL;
 }
 
+bool fs_occlusion_query_result(const fs_context *c, GLuint id, uint64_t *result)
+{
+    const fs_query *q = find_query(c->occlusion, id);
+    if (q)
+        *result = (uint64_t)q->result;
+    return q != NULL;
+}
+
 static fs_query *add_query(struct fs_occlusion *o, GLuint id)
 {
     if (o->nqueries == o->queries_cap) {

@@ -97,6 +97,9 @@ bool fs_occlusion_hp_take_result(fs_context *c);
  * keep the last pass's results until the next pass starts, also when no
  * client buffers were given (a replayed trace). */
 const fs_occu *fs_occlusion_unit(const fs_context *c);
+/* The result of query `id` as glEndQuery stored it (GL 1.5 4.1.7; the
+ * cycle model's occlusion_result signal); false when there is no such query. */
+bool fs_occlusion_query_result(const fs_context *c, GLuint id, uint64_t *result);
 /* Installs cycle-model hooks on the context's unit (creating it). */
 int fs_occlusion_set_hooks(fs_context *c, const fs_occu_hooks *hooks);
 #endif
