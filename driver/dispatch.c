@@ -369,11 +369,10 @@ static int dispatch(fs_context *c, fs_call *call, bool in_bounds)
         local.a[pk].is_data = 0;
         return dispatch_call(c, &local);
     }
-    if (call->cmd == FS_CMD_OcclusionBuffers && call->a[1].is_data == FS_ARG_DATA) {
+    if (call->cmd == FS_CMD_OcclusionBuffers && call->a[1].is_data != 0) {
         /* glOcclusionBuffers' second argument holds addresses the unit
-         * writes to at glRenderMode: data from a trace are no addresses of
-         * this process, so the records stay in the unit, as when the trace
-         * gives a pointer. */
+         * writes to at glRenderMode: data or an address from a trace are no
+         * addresses of this process, so the records stay in the unit. */
         fs_call local = *call;
         local.a[1].p = NULL;
         local.a[1].is_data = 0;
