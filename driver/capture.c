@@ -9,19 +9,25 @@
  * bitmask, signed integers as SINT, unsigned as UINT, pointers to input
  * arrays as arrays, index and list blobs as blobs, outputs in the leave event.
  *
- * Client arrays: fragsim has no buffer objects, so every array lives in user
- * memory.  apitrace does not record gl*Pointer calls on user memory; before
+ * Client arrays in user memory: apitrace does not record gl*Pointer calls on
+ * them; before
  * each draw it writes, per enabled array, a fake gl*Pointer call (call detail
  * flags = FLAG_FAKE) whose pointer is a blob covering the vertices the draw
  * reads (wrappers/gltrace.py _trace_user_arrays, in its order: texture
  * coordinates, colour, normal, vertex).  Capture does the same.  Like
  * apitrace, glArrayElement gets no array data (apitrace warns "user arrays
- * with glArrayElement not supported").
+ * with glArrayElement not supported").  Arrays and indices in buffer
+ * objects (GL 1.5 spec 2.9) are recorded as apitrace records them: the
+ * pointer calls with their offsets, no fake calls, and the writes through a
+ * mapping as a fake memcpy(dest, src, n) of the whole mapping before its
+ * glUnmapBuffer (apitrace's _glUnmapBuffer_flush: dest is the address
+ * glMapBuffer returned).
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "../pipeline/context.h"
+#include "../pipeline/buffer_object.h"
 #include "capture.h"
 #include "trace.h"
 #include "gl_enums.h"
@@ -31,6 +37,9 @@ struct fs_capture {
     int failed;
     fs_tval *scratch;      /* elements of array arguments of the call being written */
     size_t scratch_cap;
+    /* The mappings of GL_ARRAY_BUFFER and GL_ELEMENT_ARRAY_BUFFER, written
+     * out at their glUnmapBuffer. */
+    struct { const void *p; int64_t size; } map[2];
 };
 
 static const char *const bool_names[] = {"GL_FALSE", "GL_TRUE"};
@@ -49,6 +58,20 @@ static void write_call(fs_context *c, const fs_tcall *tc)
     struct fs_capture *cap = c->capture;
     if (!cap->failed && fs_trace_write(cap->w, tc) != 0)
         cap->failed = 1;
+}
+
+/* A call fragsim makes up (a frame end, a mapping's memcpy). */
+static void write_args(fs_context *c, const char *name, unsigned n, const char *const *names, const fs_tval *args,
+                       uint32_t flags)
+{
+    fs_tcall tc;
+    memset(&tc, 0, sizeof tc);
+    tc.name = name;
+    tc.nargs = n;
+    tc.arg_names = names;
+    tc.args = args;
+    tc.flags = flags;
+    write_call(c, &tc);
 }
 
 int fs_capture_open(fs_context *c, const char *path, char *err, size_t errlen)
@@ -151,6 +174,67 @@ static void write_fake_pointer(fs_context *c, int cmd, const fs_client_array *a,
     write_call(c, &tc);
 }
 
+/* memcpy(dest, src, n) of a mapping, as apitrace writes it (a fake call). */
+static void write_memcpy(fs_context *c, const void *p, int64_t n)
+{
+    static const char *const names[3] = {"dest", "src", "n"};
+    fs_tval args[3];
+    memset(args, 0, sizeof args);
+    args[0].type = FS_TV_OPAQUE;
+    args[0].u = (uint64_t)(uintptr_t)p;
+    args[1].type = FS_TV_BLOB;
+    args[1].str.ptr = p;
+    args[1].str.len = (size_t)n;
+    args[2].type = FS_TV_UINT;
+    args[2].u = (uint64_t)n;
+    write_args(c, "memcpy", 3, names, args, FS_TCALL_FAKE);
+}
+
+/* What capture does about buffer objects before writing `call`; false when
+ * the call is not written now (a pointer call on user memory). */
+static bool buffer_calls(fs_context *c, const fs_call *call)
+{
+    struct fs_capture *cap = c->capture;
+    int t = call->nargs > 0 && call->a[0].i == GL_ELEMENT_ARRAY_BUFFER ? 1 : 0;
+    int pk, slot = fs_pointer_slot(call->cmd, &pk);
+    if (slot >= 0) {
+        const fs_client_array *arr[4] = {&c->arrays.vertex, &c->arrays.normal, &c->arrays.color,
+                                         &c->arrays.texcoord};
+        return arr[slot]->buffer != 0; /* else written as fake calls before the draws */
+    }
+    switch (call->cmd) {
+    case FS_CMD_MapBuffer:
+        cap->map[t].p = fs_buffer_mapping(c, (GLenum)call->a[0].i, &cap->map[t].size);
+        break;
+    case FS_CMD_UnmapBuffer:
+        if (cap->map[t].p && call->ret.i == GL_TRUE)
+            write_memcpy(c, cap->map[t].p, cap->map[t].size);
+        cap->map[t].p = NULL;
+        break;
+    case FS_CMD_BufferData: case FS_CMD_DeleteBuffers:
+        cap->map[0].p = cap->map[1].p = NULL; /* a store a mapping pointed at may be gone */
+        break;
+    default:
+        break;
+    }
+    return true;
+}
+
+/* The indices of glDrawElements/glDrawRangeElements at an offset into the
+ * element array buffer: *local then points at them, for the vertex count
+ * of the fake calls; false when there is none such. */
+static bool element_indices(const fs_context *c, const fs_call *call, fs_call *local)
+{
+    int k = call->cmd == FS_CMD_DrawElements ? 3 : call->cmd == FS_CMD_DrawRangeElements ? 5 : -1;
+    if (k < 0 || !c->arrays.element_buffer)
+        return false;
+    size_t bytes;
+    *local = *call;
+    local->a[k].p = fs_buffer_element_data(c, (uint64_t)(uintptr_t)call->a[k].p, &bytes);
+    local->a[k].count = bytes > UINT32_MAX ? UINT32_MAX : (uint32_t)bytes;
+    return true;
+}
+
 static int is_array_kind(int k)
 {
     return k == FS_K_AF || k == FS_K_AD || k == FS_K_AI || k == FS_K_AU || k == FS_K_AUB ||
@@ -202,7 +286,7 @@ static fs_tval scalar_val(const fs_cmd_info *info, int k, const char *argname, c
         t.u = (uint64_t)(uint32_t)a->i;
         t.sig = &clear_sig;
         return t;
-    case FS_K_I: case FS_K_SZ: case FS_K_BY: case FS_K_S:
+    case FS_K_I: case FS_K_SZ: case FS_K_BY: case FS_K_S: case FS_K_IP:
         t.type = FS_TV_SINT;
         t.i = a->i;
         return t;
@@ -226,7 +310,7 @@ static fs_tval scalar_val(const fs_cmd_info *info, int k, const char *argname, c
         t.str.len = a->count;
         return t;
     case FS_K_CPTR:
-        if (a->is_data && a->p) {
+        if (a->is_data == FS_ARG_DATA && a->p) {
             t.type = FS_TV_BLOB;
             t.str.ptr = a->p;
             t.str.len = a->count;
@@ -237,8 +321,9 @@ static fs_tval scalar_val(const fs_cmd_info *info, int k, const char *argname, c
         t.type = FS_TV_OPAQUE;
         t.u = (uint64_t)(uintptr_t)a->p;
         return t;
-    case FS_K_OV:
-        /* apitrace writes glReadPixels' pixels (Out(GLpointer)) as an opaque pointer. */
+    case FS_K_OV: case FS_K_P:
+        /* apitrace writes glReadPixels' pixels (Out(GLpointer)) as an opaque
+         * pointer, and glMapBuffer's result. */
         if (!a->out)
             break;
         t.type = FS_TV_OPAQUE;
@@ -265,26 +350,20 @@ void fs_capture_call(fs_context *c, const fs_call *call)
         return;
     const fs_cmd_info *info = &fs_cmd_table[call->cmd];
 
-    switch (call->cmd) {
-    case FS_CMD_VertexPointer:
-    case FS_CMD_NormalPointer:
-    case FS_CMD_ColorPointer:
-    case FS_CMD_TexCoordPointer:
-        /* Written as fake calls before the draws that use them. */
+    if (!buffer_calls(c, call))
         return;
-    default:
-        break;
-    }
+    fs_call resolved;
+    bool offset_indices = element_indices(c, call, &resolved);
     if ((info->flags & FS_F_DRAW) && call->cmd != FS_CMD_ArrayElement) {
-        uint64_t n = draw_vertex_count(call);
+        uint64_t n = draw_vertex_count(offset_indices ? &resolved : call);
         const fs_array_state *ar = &c->arrays;
-        if (ar->texcoord.enabled)
+        if (ar->texcoord.enabled && !ar->texcoord.buffer)
             write_fake_pointer(c, FS_CMD_TexCoordPointer, &ar->texcoord, n);
-        if (ar->color.enabled)
+        if (ar->color.enabled && !ar->color.buffer)
             write_fake_pointer(c, FS_CMD_ColorPointer, &ar->color, n);
-        if (ar->normal.enabled)
+        if (ar->normal.enabled && !ar->normal.buffer)
             write_fake_pointer(c, FS_CMD_NormalPointer, &ar->normal, n);
-        if (ar->vertex.enabled)
+        if (ar->vertex.enabled && !ar->vertex.buffer)
             write_fake_pointer(c, FS_CMD_VertexPointer, &ar->vertex, n);
     }
 
@@ -322,6 +401,11 @@ void fs_capture_call(fs_context *c, const fs_call *call)
             args[i].arr.n = a->count;
             for (uint32_t e = 0; e < a->count; e++)
                 cap->scratch[used++] = array_elem(k, a->p, e);
+        } else if (k == FS_K_BLOB && offset_indices) {
+            /* an offset into the element array buffer: a pointer value */
+            fs_arg addr = *a;
+            addr.is_data = 0;
+            args[i] = scalar_val(info, FS_K_CPTR, info->argnames[i], &addr);
         } else {
             args[i] = scalar_val(info, k, info->argnames[i], a);
         }
@@ -352,13 +436,7 @@ void fs_capture_frame_end(fs_context *c)
     memset(args, 0, sizeof args);
     args[0].type = FS_TV_NULL;
     args[1].type = FS_TV_UINT;
-    fs_tcall tc;
-    memset(&tc, 0, sizeof tc);
-    tc.name = "glXSwapBuffers";
-    tc.nargs = 2;
-    tc.arg_names = names;
-    tc.args = args;
-    write_call(c, &tc);
+    write_args(c, "glXSwapBuffers", 2, names, args, 0);
 }
 
 int fs_capture_close(fs_context *c)

@@ -6,6 +6,7 @@
 #include <string.h>
 #include <stdlib.h>
 #include "../pipeline/context.h"
+#include "../pipeline/buffer_object.h"
 #include "display_list.h"
 #include "capture.h"
 #include "gl_call_unpack.h"
@@ -134,6 +135,8 @@ static uint32_t count_u32(int64_t n)
 #define FS_PK_OI FS_PK_OUT
 #define FS_PK_OU FS_PK_OUT
 #define FS_PK_OB FS_PK_OUT
+#define FS_PK_IP FS_PK_INT
+#define FS_PK_OP FS_PK_OUT
 #define FS_PACK(k, kind, name, cnt) FS_PK_##kind(call.a[k], name, cnt);
 
 #define FS_RETURN_V(r)
@@ -142,6 +145,7 @@ static uint32_t count_u32(int64_t n)
 #define FS_RETURN_B(r) return (GLboolean)(r).i;
 #define FS_RETURN_I(r) return (GLint)(r).i;
 #define FS_RETURN_STR(r) return (const GLubyte *)(r).p;
+#define FS_RETURN_P(r) return (r).out;
 
 #define FS_CMD(name, rk, flags, n, ...)                                   \
     FS_CT_##rk fsgl##name(fs_context *c FS_MAP(n, FS_PDECL, __VA_ARGS__)) \
@@ -201,6 +205,7 @@ void fs_driver_state_free(fs_context *c)
 #define FS_ZERO_B return GL_FALSE;
 #define FS_ZERO_I return 0;
 #define FS_ZERO_STR return NULL;
+#define FS_ZERO_P return NULL;
 #define FS_CMD(name, rk, flags, n, ...)                                            \
     __attribute__((weak)) FS_CT_##rk fs_exec_##name(                              \
         fs_context *c FS_MAP(n, FS_PDECL_UNUSED, __VA_ARGS__))                     \
@@ -262,6 +267,8 @@ void fs_driver_state_free(fs_context *c)
 #define FS_CK_OI FS_CK_OUT
 #define FS_CK_OU FS_CK_OUT
 #define FS_CK_OB FS_CK_OUT
+#define FS_CK_IP FS_CK_NONE
+#define FS_CK_OP FS_CK_OUT
 #define FS_CHECK(k, kind, name, cnt) FS_CK_##kind(k, name, cnt, FS_ESIZE_##kind)
 
 #define FS_STORE_V(r, e) e
@@ -270,6 +277,7 @@ void fs_driver_state_free(fs_context *c)
 #define FS_STORE_B(r, e) (r).i = (int64_t)(e)
 #define FS_STORE_I(r, e) (r).i = (int64_t)(e)
 #define FS_STORE_STR(r, e) (r).p = (const void *)(e)
+#define FS_STORE_P(r, e) (r).out = (e)
 
 static int bad_argument(fs_context *c, fs_call *call, int k)
 {
@@ -328,8 +336,10 @@ static int dispatch_pointer_data(fs_context *c, fs_call *call, int slot, int pk)
     fs_call local = *call;
     local.a[pk].p = c->array_copy[slot].buf[k];
     int rc = dispatch_call(c, &local);
-    if (arr->pointer == c->array_copy[slot].buf[k])
+    if (arr->pointer == c->array_copy[slot].buf[k]) {
         arr->bytes = n;
+        arr->buffer = 0; /* the data came with the call, whatever is bound */
+    }
     return rc;
 }
 
@@ -384,13 +394,20 @@ static int dispatch(fs_context *c, fs_call *call, bool in_bounds)
     if (!in_bounds && (fs_cmd_table[call->cmd].flags & FS_F_DRAW) && !draw_reads_in_bounds(c, call))
         return 0;
     int pk, slot = fs_pointer_slot(call->cmd, &pk);
-    if (slot >= 0 && call->a[pk].is_data)
+    if (slot >= 0 && call->a[pk].is_data == FS_ARG_DATA)
         return dispatch_pointer_data(c, call, slot, pk);
-    if (call->cmd == FS_CMD_OcclusionBuffers && call->a[1].is_data) {
+    if (slot >= 0 && call->a[pk].is_data == FS_ARG_ADDR && !c->arrays.array_buffer) {
+        /* A recorded address with no buffer bound is the traced program's
+         * memory: set, never dereferenced (the array reads nothing). */
+        fs_call local = *call;
+        local.a[pk].p = NULL;
+        local.a[pk].is_data = 0;
+        return dispatch_call(c, &local);
+    }
+    if (call->cmd == FS_CMD_OcclusionBuffers && call->a[1].is_data != 0) {
         /* glOcclusionBuffers' second argument holds addresses the unit
-         * writes to at glRenderMode: data from a trace are no addresses of
-         * this process, so the records stay in the unit, as when the trace
-         * gives a pointer. */
+         * writes to at glRenderMode: data or an address from a trace are no
+         * addresses of this process, so the records stay in the unit. */
         fs_call local = *call;
         local.a[1].p = NULL;
         local.a[1].is_data = 0;
@@ -399,7 +416,64 @@ static int dispatch(fs_context *c, fs_call *call, bool in_bounds)
     return dispatch_call(c, call);
 }
 
-int fs_dispatch(fs_context *c, fs_call *call) { return dispatch(c, call, false); }
+static int submit_call(fs_context *c, fs_call *call);
+
+/* ---- draws sourcing buffer objects (GL 1.5 spec 2.9.1, 2.9.2) ---- */
+
+/* The indices of glDrawElements and glDrawRangeElements while a buffer is
+ * bound to GL_ELEMENT_ARRAY_BUFFER are an offset into it: *call then points
+ * at the store.  False when the draw cannot run: indices past the store
+ * (GL leaves that undefined; Mesa draws nothing and raises no error), or a
+ * recorded address with no buffer bound (the traced program's memory). */
+static bool resolve_indices(fs_context *c, fs_call *call)
+{
+    int k = call->cmd == FS_CMD_DrawElements ? 3 : call->cmd == FS_CMD_DrawRangeElements ? 5 : -1;
+    if (k < 0)
+        return true;
+    fs_arg *a = &call->a[k];
+    const char *why = "indices not recorded in the trace";
+    if (c->arrays.element_buffer) {
+        size_t bytes;
+        const void *p = fs_buffer_element_data(c, (uint64_t)a->i, &bytes);
+        int64_t need = fs_index_bytes((GLsizei)call->a[k - 2].i, (GLenum)call->a[k - 1].i);
+        /* exactly the indices: a display list compiling the draw copies them */
+        a->p = p;
+        a->count = need > 0 && (uint64_t)need <= bytes ? (uint32_t)need : 0;
+        a->is_data = 0;
+        if (need <= 0 || (uint64_t)need <= bytes)
+            return true;
+        why = "indices past the element array buffer";
+    } else if (a->is_data != FS_ARG_ADDR) {
+        return true;
+    }
+    char what[96];
+    snprintf(what, sizeof what, "%s (%s)", fs_cmd_table[call->cmd].name, why);
+    fs_unsupported(c, what);
+    return false;
+}
+
+/* Runs a draw (submit: as fs_submit, else as fs_dispatch) with the arrays
+ * that source buffer objects pointing into their stores for its duration,
+ * each as long as its store, so that the bounds check of client arrays
+ * refuses a read past one (draw_reads_in_bounds). */
+static int draw_with_buffers(fs_context *c, const fs_call *call, bool submit)
+{
+    fs_call local = *call;
+    if (!resolve_indices(c, &local))
+        return 0;
+    fs_array_state saved = c->arrays;
+    fs_buffer_resolve_arrays(c, &c->arrays);
+    int rc = submit ? submit_call(c, &local) : dispatch(c, &local, false);
+    c->arrays = saved;
+    return rc;
+}
+
+int fs_dispatch(fs_context *c, fs_call *call)
+{
+    if (call->cmd < FS_CMD_COUNT && (fs_cmd_table[call->cmd].flags & FS_F_DRAW))
+        return draw_with_buffers(c, call, false);
+    return dispatch(c, call, false);
+}
 
 static int dispatch_call(fs_context *c, fs_call *call)
 {
@@ -422,8 +496,11 @@ static int dispatch_call(fs_context *c, fs_call *call)
 /* Array-length validation alone, for checking a whole trace before any of
  * it executes (replay's first pass).  Returns -1 - k for a short argument k. */
 #define FS_VLOCAL(k, kind, name, cnt) FS_CT_##kind name = FS_UP_##kind(FS_CT_##kind, call->a[k]); (void)name;
+/* A draw's indices given as a recorded address are checked at the draw,
+ * against the element array buffer they are an offset into. */
 #define FS_VCK_ARR(k, name, cnt) \
-    if ((int64_t)(cnt) > 0 && (name == NULL || (int64_t)call->a[k].count < (int64_t)(cnt))) \
+    if (call->a[k].is_data != FS_ARG_ADDR && (int64_t)(cnt) > 0 && \
+        (name == NULL || (int64_t)call->a[k].count < (int64_t)(cnt)))         \
         return -1 - (k);
 #define FS_VCK_E(k, name, cnt)
 #define FS_VCK_BM FS_VCK_E
@@ -446,6 +523,8 @@ static int dispatch_call(fs_context *c, fs_call *call)
 #define FS_VCK_OI FS_VCK_E
 #define FS_VCK_OU FS_VCK_E
 #define FS_VCK_OB FS_VCK_E
+#define FS_VCK_IP FS_VCK_E
+#define FS_VCK_OP FS_VCK_E
 #define FS_VCK_AF FS_VCK_ARR
 #define FS_VCK_AD FS_VCK_ARR
 #define FS_VCK_AI FS_VCK_ARR
@@ -481,7 +560,8 @@ int fs_call_validate(const fs_call *call)
 #undef fs_occlusion_tile_count
 #undef fs_teximage_bytes
 
-int fs_submit(fs_context *c, fs_call *call)
+/* fs_submit without the capture. */
+static int submit_call(fs_context *c, fs_call *call)
 {
     uint32_t flags = fs_cmd_table[call->cmd].flags;
     int rc = 0;
@@ -493,8 +573,14 @@ int fs_submit(fs_context *c, fs_call *call)
                 rc = dispatch(c, call, true);
         }
     } else {
-        rc = fs_dispatch(c, call);
+        rc = dispatch(c, call, false);
     }
+    return rc;
+}
+
+int fs_submit(fs_context *c, fs_call *call)
+{
+    int rc = (fs_cmd_table[call->cmd].flags & FS_F_DRAW) ? draw_with_buffers(c, call, true) : submit_call(c, call);
     if (c->capture)
         fs_capture_call(c, call);
     return rc;

@@ -22,7 +22,8 @@ typedef struct fs_context fs_context;
     X(V)   X(E)   X(BM)  X(B)   X(I)   X(U)   X(SZ)  X(UB)  X(BY)  X(S)  X(US) \
     X(F)   X(D)   X(CF)  X(CD)  \
     X(AF)  X(AD)  X(AI)  X(AU)  X(AUB) X(ABY) X(AS)  X(AUS) \
-    X(BLOB) X(CPTR) X(OV) X(OF) X(OD) X(OI) X(OU) X(OB) X(STR)
+    X(BLOB) X(CPTR) X(OV) X(OF) X(OD) X(OI) X(OU) X(OB) X(STR) \
+    X(IP) X(OP) X(P)
 
 enum fs_kind {
 #define FS_KIND_ENUM(k) FS_K_##k,
@@ -64,6 +65,11 @@ enum fs_kind {
 #define FS_CT_OU GLuint *
 #define FS_CT_OB GLboolean *
 #define FS_CT_STR const GLubyte *
+/* GL 1.5's GLintptr and GLsizeiptr (the same C type), glGetBufferPointerv's
+ * output and glMapBuffer's result. */
+#define FS_CT_IP GLintptr
+#define FS_CT_OP GLvoid **
+#define FS_CT_P GLvoid *
 
 /* Command flags. */
 #define FS_F_LIST 0x1u   /* compiled into display lists */
@@ -75,6 +81,9 @@ enum fs_kind {
  * entry point, so the reference dispatcher (osmesa_ref.c) skips it.  Such
  * rows are written FS_CMD_EXT in gl_commands.def (see there). */
 #define FS_F_EXT 0x20u
+/* A trace pseudo-call (apitrace's memcpy), no GL entry point: the shim does
+ * not export it (rows written FS_CMD_TRACE). */
+#define FS_F_TRACE 0x40u
 #define LIST FS_F_LIST
 #define NOLIST FS_F_NOLIST
 
@@ -88,10 +97,15 @@ typedef struct fs_arg {
         void *out;
     };
     uint32_t count; /* elements for arrays/outputs, bytes for BLOB/OV */
-    /* For CPTR: nonzero when p is trace-provided data (a blob), zero when p is
-     * an address in the caller's memory or a buffer offset. */
+    /* For CPTR: FS_ARG_DATA when p is trace-provided data (a blob), 0 when p
+     * is an address in the caller's memory or a buffer offset.  For CPTR and
+     * a draw's BLOB: FS_ARG_ADDR when p is an address a trace recorded (an
+     * offset into a bound buffer object, or the traced program's memory,
+     * which is never dereferenced). */
     uint32_t is_data;
 } fs_arg;
+#define FS_ARG_DATA 1u
+#define FS_ARG_ADDR 2u
 
 typedef struct fs_call {
     uint16_t cmd;   /* enum fs_cmd */

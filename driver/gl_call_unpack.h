@@ -42,6 +42,8 @@
 #define FS_UP_OI FS_UP_OUT
 #define FS_UP_OU FS_UP_OUT
 #define FS_UP_OB FS_UP_OUT
+#define FS_UP_IP FS_UP_INT
+#define FS_UP_OP FS_UP_OUT
 #define FS_LOCAL(k, kind, name, cnt) FS_CT_##kind name = FS_UP_##kind(FS_CT_##kind, call->a[k]);
 
 #define FS_ESIZE_OV 1
@@ -50,6 +52,8 @@
 #define FS_ESIZE_OI sizeof(GLint)
 #define FS_ESIZE_OU sizeof(GLuint)
 #define FS_ESIZE_OB sizeof(GLboolean)
+#define FS_ESIZE_OP sizeof(GLvoid *)
+#define FS_ESIZE_IP 0
 #define FS_ESIZE_AF 0
 #define FS_ESIZE_AD 0
 #define FS_ESIZE_AI 0

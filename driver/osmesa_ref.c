@@ -105,8 +105,11 @@ static int64_t osm_gettex_bytes(GLenum target, GLint level, GLenum format, GLenu
     return osm_image_bytes(true, w, h, format, type);
 }
 
+/* A recorded address (FS_ARG_ADDR) reaching here is an offset into a
+ * buffer OSMesa has bound (osm_addresses). */
 #define FS_OCK_ARR(k, name, cnt) \
-    if ((int64_t)(cnt) > 0 && (name == NULL || (int64_t)call->a[k].count < (int64_t)(cnt))) return -1;
+    if (call->a[k].is_data != FS_ARG_ADDR && (int64_t)(cnt) > 0 && \
+        (name == NULL || (int64_t)call->a[k].count < (int64_t)(cnt))) return -1;
 #define FS_OCK_OUT(k, name, cnt, esize) \
     if (name == NULL) {                                                       \
         int64_t need_ = (int64_t)(cnt) > 16 ? (int64_t)(cnt) : 16;            \
@@ -129,6 +132,7 @@ static int64_t osm_gettex_bytes(GLenum target, GLint level, GLenum format, GLenu
 #define FS_OCK_CF FS_OCK_NONE
 #define FS_OCK_CD FS_OCK_NONE
 #define FS_OCK_CPTR FS_OCK_NONE
+#define FS_OCK_IP FS_OCK_NONE
 #define FS_OCK_AF FS_OCK_ARR
 #define FS_OCK_AD FS_OCK_ARR
 #define FS_OCK_AI FS_OCK_ARR
@@ -144,6 +148,7 @@ static int64_t osm_gettex_bytes(GLenum target, GLint level, GLenum format, GLenu
 #define FS_OCK_OI(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLint))
 #define FS_OCK_OU(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLuint))
 #define FS_OCK_OB(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLboolean))
+#define FS_OCK_OP(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLvoid *))
 #define FS_OCHECK(k, kind, name, cnt) FS_OCK_##kind(k, name, cnt)
 #define fs_readpixels_bytes(c, w, h, f, t) osm_readpixels_bytes(w, h, f, t)
 #define fs_teximage_bytes(c, w, h, f, t) osm_teximage_bytes(w, h, f, t)
@@ -154,9 +159,62 @@ static int64_t osm_gettex_bytes(GLenum target, GLint level, GLenum format, GLenu
 #define FS_OCALL_B(e) (void)(e)
 #define FS_OCALL_I(e) (void)(e)
 #define FS_OCALL_STR(e) (void)(e)
+#define FS_OCALL_P(e) (void)(e)
 
-int fs_osmesa_dispatch(fs_osmesa *o, const fs_call *call)
+/* glTraceMemcpy (a write through a mapping, from a trace): into OSMesa's
+ * own mapping of the buffer, found by binding it to GL_ARRAY_BUFFER for
+ * the query; outside it nothing is written, as in the model. */
+static int osm_TraceMemcpy(const fs_call *call)
 {
+    GLint was = 0, size = 0;
+    void *p = NULL;
+    int64_t off = call->a[1].i, n = call->a[2].i;
+    glGetIntegerv(GL_ARRAY_BUFFER_BINDING, &was);
+    glBindBuffer(GL_ARRAY_BUFFER, (GLuint)call->a[0].i);
+    glGetBufferPointerv(GL_ARRAY_BUFFER, GL_BUFFER_MAP_POINTER, &p);
+    glGetBufferParameteriv(GL_ARRAY_BUFFER, GL_BUFFER_SIZE, &size);
+    glBindBuffer(GL_ARRAY_BUFFER, (GLuint)was);
+    while (glGetError() != GL_NO_ERROR)
+        ; /* buffer 0 or no buffer: the queries' errors are not the trace's */
+    if (!p || off < 0 || n < 0 || off > size || n > size - off || (uint64_t)n > call->a[3].count)
+        return -1;
+    memcpy((char *)p + off, call->a[3].p, (size_t)n);
+    return 0;
+}
+
+/* Addresses a trace recorded: offsets into the buffer OSMesa has bound to
+ * the target (GL 1.5 spec 2.9.1, 2.9.2), else the traced program's memory,
+ * which is never passed on: a pointer becomes NULL, a draw with such
+ * indices is not executed (false). */
+static bool osm_addresses(const fs_call *call, fs_call *local)
+{
+    int pk, slot = fs_pointer_slot(call->cmd, &pk);
+    int k = call->cmd == FS_CMD_DrawElements ? 3 : call->cmd == FS_CMD_DrawRangeElements ? 5 : -1;
+    if (slot >= 0)
+        k = pk;
+    if (k < 0 || call->a[k].is_data != FS_ARG_ADDR)
+        return true;
+    GLint bound = 0;
+    glGetIntegerv(slot >= 0 ? GL_ARRAY_BUFFER_BINDING : GL_ELEMENT_ARRAY_BUFFER_BINDING, &bound);
+    if (bound)
+        return true;
+    if (slot < 0)
+        return false;
+    *local = *call;
+    local->a[k].p = NULL;
+    local->a[k].is_data = 0;
+    return true;
+}
+
+int fs_osmesa_dispatch(fs_osmesa *o, const fs_call *in)
+{
+    fs_call fixed;
+    const fs_call *call = in;
+    fixed.cmd = FS_CMD_COUNT;
+    if (!osm_addresses(in, &fixed))
+        return -1;
+    if (fixed.cmd != FS_CMD_COUNT)
+        call = &fixed;
     switch ((enum fs_cmd)call->cmd) {
 #define FS_CMD(name, rk, flags, n, ...)                                        \
     case FS_CMD_##name: {                                                       \
@@ -169,7 +227,11 @@ int fs_osmesa_dispatch(fs_osmesa *o, const fs_call *call)
 #define FS_CMD_EXT(name, rk, flags, n, ...) \
     case FS_CMD_##name:                     \
         return -1;
+#define FS_CMD_TRACE(name, rk, flags, n, ...) \
+    case FS_CMD_##name:                       \
+        return osm_##name(call);
 #include "gl_commands.def"
+#undef FS_CMD_TRACE
 #undef FS_CMD_EXT
 #undef FS_CMD
     case FS_CMD_COUNT:

@@ -45,6 +45,18 @@ typedef struct array_track {
 /* In fs_pointer_slot's order. */
 enum { ARR_VERTEX, ARR_NORMAL, ARR_COLOR, ARR_TEXCOORD, ARR_COUNT };
 
+/* What the replayer knows of buffer objects (GL 1.5 spec 2.9), to turn
+ * apitrace's memcpy(dest, src, n) pseudo-calls (writes through a mapping,
+ * dest an address the traced program had) into glTraceMemcpy(buffer,
+ * offset, ...): the buffers bound to the two targets, and the mappings the
+ * trace's glMapBuffer results made. */
+#define MAX_MAPS 16
+typedef struct buffer_track {
+    GLuint bound[2]; /* GL_ARRAY_BUFFER, GL_ELEMENT_ARRAY_BUFFER */
+    struct { uint64_t addr; GLuint buffer; } map[MAX_MAPS];
+    int nmap;
+} buffer_track;
+
 struct fs_replayer {
     char *path;
     fs_trace_reader *tr;
@@ -61,6 +73,7 @@ struct fs_replayer {
     size_t nskips, skips_cap;
     arena_chunk *arena;
     array_track arr[ARR_COUNT];
+    buffer_track buf;
     /* name -> command id, open addressing */
     struct { const char *name; int cmd; } *names;
     size_t nnames;
@@ -127,6 +140,12 @@ static int build_names(fs_replayer *r)
         r->names[j].name = fs_cmd_table[i].name;
         r->names[j].cmd = i;
     }
+    /* apitrace's memcpy pseudo-call (see buffer_track). */
+    size_t j = hash_str("memcpy") & (r->nnames - 1);
+    while (r->names[j].name)
+        j = (j + 1) & (r->nnames - 1);
+    r->names[j].name = "memcpy";
+    r->names[j].cmd = FS_CMD_TraceMemcpy;
     return 0;
 }
 
@@ -388,7 +407,7 @@ static int convert(fs_replayer *r, const fs_tcall *tc, int cmd, fs_call *call)
         int kind = info->kinds[k];
         switch (kind) {
         case FS_K_E: case FS_K_BM: case FS_K_B: case FS_K_I: case FS_K_U: case FS_K_SZ:
-        case FS_K_UB: case FS_K_BY: case FS_K_S: case FS_K_US:
+        case FS_K_UB: case FS_K_BY: case FS_K_S: case FS_K_US: case FS_K_IP:
             if (!tv_int(v, &a->i))
                 return fail(r, tc, "argument '%s' is not an integer", info->argnames[k]);
             break;
@@ -404,16 +423,28 @@ static int convert(fs_replayer *r, const fs_tcall *tc, int cmd, fs_call *call)
                 a->count = v->str.len > UINT32_MAX ? UINT32_MAX : (uint32_t)v->str.len;
                 a->is_data = 1;
             } else {
-                int64_t addr;
-                if (!tv_int(v, &addr))
+                if (!tv_int(v, &a->i))
                     return fail(r, tc, "argument '%s' is not a pointer", info->argnames[k]);
-                /* An address in the traced program (or a buffer offset):
-                 * never dereferenced. */
-                a->p = NULL;
-                a->is_data = 0;
+                /* An address in the traced program or an offset into a
+                 * bound buffer object: the dispatcher decides, and never
+                 * dereferences the former. */
+                a->is_data = FS_ARG_ADDR;
             }
             break;
-        case FS_K_OV: case FS_K_OF: case FS_K_OD: case FS_K_OI: case FS_K_OU: case FS_K_OB:
+        case FS_K_BLOB:
+            /* A draw's indices given as a pointer value: an offset into the
+             * element array buffer (GL 1.5 spec 2.9.2), as apitrace records
+             * them while one is bound. */
+            if ((info->flags & FS_F_DRAW) && v->type != FS_TV_BLOB && v->type != FS_TV_STRING &&
+                v->type != FS_TV_ARRAY) {
+                if (!tv_int(v, &a->i))
+                    return fail(r, tc, "argument '%s' is not a pointer", info->argnames[k]);
+                a->is_data = FS_ARG_ADDR;
+            } else if (to_array(r, tc, kind, v, a) != 0) {
+                return -1;
+            }
+            break;
+        case FS_K_OV: case FS_K_OF: case FS_K_OD: case FS_K_OI: case FS_K_OU: case FS_K_OB: case FS_K_OP:
             a->out = NULL; /* the dispatcher provides scratch space */
             break;
         default:
@@ -428,6 +459,91 @@ static int convert(fs_replayer *r, const fs_tcall *tc, int cmd, fs_call *call)
         return fail(r, tc, "argument '%s' holds fewer elements than the call reads",
                     k < info->nargs ? info->argnames[k] : "?");
     }
+    return 0;
+}
+
+/* ---- buffer objects and writes through mappings ---- */
+
+static int target_slot(GLenum target)
+{
+    return target == GL_ARRAY_BUFFER ? 0 : target == GL_ELEMENT_ARRAY_BUFFER ? 1 : -1;
+}
+
+static void forget_maps_of(buffer_track *b, GLuint buffer)
+{
+    int n = 0;
+    for (int i = 0; i < b->nmap; i++)
+        if (b->map[i].buffer != buffer)
+            b->map[n++] = b->map[i];
+    b->nmap = n;
+}
+
+/* Follows the bindings and mappings of the trace (not of the model: a call
+ * the model rejects changes nothing there, and the memcpy that follows is
+ * then reported by the model as outside every mapping). */
+static void track_buffers(fs_replayer *r, const fs_tcall *tc, const fs_call *call)
+{
+    buffer_track *b = &r->buf;
+    int t = call->nargs > 0 ? target_slot((GLenum)call->a[0].i) : -1;
+    int64_t addr;
+    switch (call->cmd) {
+    case FS_CMD_BindBuffer:
+        if (t >= 0)
+            b->bound[t] = (GLuint)call->a[1].i;
+        break;
+    case FS_CMD_MapBuffer:
+        if (t < 0 || !b->bound[t] || !tc->has_ret || !tv_int(&tc->ret, &addr) || addr == 0)
+            break;
+        forget_maps_of(b, b->bound[t]);
+        if (b->nmap == MAX_MAPS) /* the oldest mapping makes room */
+            memmove(&b->map[0], &b->map[1], (MAX_MAPS - 1) * sizeof b->map[0]);
+        else
+            b->nmap++;
+        b->map[b->nmap - 1].addr = (uint64_t)addr;
+        b->map[b->nmap - 1].buffer = b->bound[t];
+        break;
+    case FS_CMD_UnmapBuffer: case FS_CMD_BufferData:
+        if (t >= 0 && b->bound[t])
+            forget_maps_of(b, b->bound[t]);
+        break;
+    case FS_CMD_DeleteBuffers:
+        for (uint32_t i = 0; call->a[1].p && i < call->a[1].count; i++) {
+            GLuint name = ((const GLuint *)call->a[1].p)[i];
+            forget_maps_of(b, name);
+            for (int k = 0; k < 2; k++)
+                if (b->bound[k] == name)
+                    b->bound[k] = 0;
+        }
+        break;
+    default:
+        break;
+    }
+}
+
+/* memcpy(dest, src, n) as glTraceMemcpy(buffer, offset, n, src): the
+ * mapping that begins closest below dest (buffer 0 when none does, which
+ * the model reports as a write outside every mapping). */
+static int convert_memcpy(fs_replayer *r, const fs_tcall *tc, fs_call *call)
+{
+    const fs_cmd_info *info = &fs_cmd_table[FS_CMD_TraceMemcpy];
+    call_start(call, FS_CMD_TraceMemcpy, info->nargs, tc->flags);
+    int64_t dest, n;
+    if (tc->nargs < 3 || !tv_int(&tc->args[0], &dest) || !tv_int(&tc->args[2], &n))
+        return fail(r, tc, "%s", "memcpy without a destination address and a size");
+    if (tc->args[1].type != FS_TV_BLOB)
+        return fail(r, tc, "%s", "memcpy without its data");
+    const buffer_track *b = &r->buf;
+    int best = -1;
+    for (int i = 0; i < b->nmap; i++)
+        if (b->map[i].addr <= (uint64_t)dest && (best < 0 || b->map[i].addr > b->map[best].addr))
+            best = i;
+    call->a[0].i = best < 0 ? 0 : b->map[best].buffer;
+    call->a[1].i = best < 0 ? 0 : (int64_t)((uint64_t)dest - b->map[best].addr);
+    call->a[2].i = n;
+    call->a[3].p = tc->args[1].str.ptr;
+    call->a[3].count = tc->args[1].str.len > UINT32_MAX ? UINT32_MAX : (uint32_t)tc->args[1].str.len;
+    if (fs_call_validate(call) < 0)
+        return fail(r, tc, "%s", "memcpy's data holds fewer bytes than its size");
     return 0;
 }
 
@@ -453,8 +569,10 @@ static void track_pointer(fs_replayer *r, const fs_call *call, int slot, int pk)
     t->size = slot == ARR_NORMAL ? 3 : (GLint)call->a[0].i;
     t->type = (GLenum)call->a[pk - 2].i;
     t->stride = (GLsizei)call->a[pk - 1].i;
-    t->has_data = p->is_data != 0;
-    t->bytes = p->is_data ? p->count : 0;
+    /* An offset into a bound buffer: the dispatcher checks the draw's reads
+     * against the store. */
+    t->has_data = p->is_data == FS_ARG_DATA || (p->is_data == FS_ARG_ADDR && r->buf.bound[0] != 0);
+    t->bytes = p->is_data == FS_ARG_DATA ? p->count : t->has_data ? SIZE_MAX : 0;
 }
 
 /* True when every enabled array holds recorded data for the draw's vertices. */
@@ -505,6 +623,7 @@ typedef struct rec_head {
     uint16_t data;   /* bit k: argument k has data */
     uint8_t nargs;
     uint8_t unsafe;  /* a draw pass 2 skips: its client arrays are not in the trace */
+    uint16_t addr;   /* bit k: argument k is a recorded address (FS_ARG_ADDR) */
 } rec_head;
 _Static_assert(FS_MAX_ARGS <= 16, "rec_head.data has a bit per argument");
 _Static_assert(sizeof(rec_head) % 8 == 0 && sizeof(fs_arg) == 16, "record layout");
@@ -533,10 +652,10 @@ static int64_t rec_payload(const fs_call *call, int k)
 {
     const fs_arg *a = &call->a[k];
     int kind = fs_cmd_table[call->cmd].kinds[k];
-    if (!a->p)
+    if (!a->p || a->is_data == FS_ARG_ADDR)
         return -1;
     if (kind == FS_K_CPTR)
-        return a->is_data ? (int64_t)a->count : -1;
+        return a->is_data == FS_ARG_DATA ? (int64_t)a->count : -1;
     size_t es = fs_kind_elem_size(kind);
     return es ? (int64_t)(es * a->count) : -1;
 }
@@ -552,7 +671,7 @@ static void rec_add(fs_replayer *r, const char *name, const fs_call *call, bool 
         int64_t n = rec_payload(call, k);
         if (n >= 0)
             size += REC_ALIGN((size_t)n + 1); /* +1: a NUL, as the reader leaves after strings */
-        else if (call->a[k].count || call->a[k].is_data)
+        else if (call->a[k].count || (call->a[k].is_data && call->a[k].is_data != FS_ARG_ADDR))
             goto drop; /* not a plain scalar: would not round-trip through 8 bytes */
     }
     if (size > UINT32_MAX)
@@ -578,13 +697,15 @@ static void rec_add(fs_replayer *r, const char *name, const fs_call *call, bool 
     }
     unsigned char *at = b->data + b->used;
     rec_head *h = (rec_head *)at;
-    *h = (rec_head){name, (uint32_t)size, call ? call->flags : 0, call ? call->cmd : REC_NOT_CMD, 0, (uint8_t)nargs, unsafe};
+    *h = (rec_head){name, (uint32_t)size, call ? call->flags : 0, call ? call->cmd : REC_NOT_CMD, 0, (uint8_t)nargs, unsafe, 0};
     unsigned char *slot = at + sizeof *h, *data = slot + 8 * (size_t)nargs;
     for (int k = 0; k < nargs; k++, slot += 8) {
         const fs_arg *a = &call->a[k];
         int64_t n = rec_payload(call, k);
         if (n < 0) {
             memcpy(slot, &a->i, 8);
+            if (a->is_data == FS_ARG_ADDR)
+                h->addr |= (uint16_t)(1u << k);
             continue;
         }
         h->data |= (uint16_t)(1u << k);
@@ -630,6 +751,8 @@ static int rec_next(fs_replayer *r, fs_call *call, const struct name_info **ni, 
         fs_arg *a = &call->a[k];
         if (!(h->data >> k & 1)) {
             memcpy(&a->i, slot, 8);
+            if (h->addr >> k & 1)
+                a->is_data = FS_ARG_ADDR;
             continue;
         }
         memcpy(&a->count, slot, 4);
@@ -676,8 +799,10 @@ static int decode_next(fs_replayer *r, fs_call *call, bool pass1, const name_inf
         r->p1_finishes++;
     if (pass1 && (cmd == FS_CMD_BeginQuery || cmd == FS_CMD_BeginQueryARB))
         r->info.uses_queries = true;
-    if (convert(r, &tc, cmd, call) != 0)
+    if ((cmd == FS_CMD_TraceMemcpy && strcmp(tc.name, "memcpy") == 0 ? convert_memcpy(r, &tc, call)
+                                                                      : convert(r, &tc, cmd, call)) != 0)
         return -1;
+    track_buffers(r, &tc, call);
     if (pass1 && cmd == FS_CMD_Viewport && r->info.width == 0) {
         int64_t w = call->a[0].i + call->a[2].i, h = call->a[1].i + call->a[3].i;
         if (w > 0 && h > 0 && w <= 16384 && h <= 16384) {
@@ -796,6 +921,7 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
     }
     r->tr = NULL;
     memset(r->arr, 0, sizeof r->arr);
+    memset(&r->buf, 0, sizeof r->buf);
     r->pending_frame_end = false;
     r->info.double_buffered = r->p1_swaps > 0;
     if (r->user_frame_end) {

@@ -38,24 +38,28 @@
 #define FS_SHIM_NONE_B return GL_FALSE;
 #define FS_SHIM_NONE_I return 0;
 #define FS_SHIM_NONE_STR return NULL;
+#define FS_SHIM_NONE_P return NULL;
 #define FS_SHIM_KEEP_V
 #define FS_SHIM_KEEP_U r_ =
 #define FS_SHIM_KEEP_E r_ =
 #define FS_SHIM_KEEP_B r_ =
 #define FS_SHIM_KEEP_I r_ =
 #define FS_SHIM_KEEP_STR r_ =
+#define FS_SHIM_KEEP_P r_ =
 #define FS_SHIM_DECL_V
 #define FS_SHIM_DECL_U GLuint r_;
 #define FS_SHIM_DECL_E GLenum r_;
 #define FS_SHIM_DECL_B GLboolean r_;
 #define FS_SHIM_DECL_I GLint r_;
 #define FS_SHIM_DECL_STR const GLubyte *r_;
+#define FS_SHIM_DECL_P GLvoid *r_;
 #define FS_SHIM_RET_V
 #define FS_SHIM_RET_U return r_;
 #define FS_SHIM_RET_E return r_;
 #define FS_SHIM_RET_B return r_;
 #define FS_SHIM_RET_I return r_;
 #define FS_SHIM_RET_STR return r_;
+#define FS_SHIM_RET_P return r_;
 
 #define FS_SHIM_BODY(name, rk, n, ...)                                        \
     {                                                                          \
@@ -80,16 +84,21 @@
     __attribute__((weak)) FS_SHIM_EXPORT FS_CT_##rk gl##name(                  \
         FS_SHIM_PARAMS(n, __VA_ARGS__))                                        \
     FS_SHIM_BODY(name, rk, n, __VA_ARGS__)
+/* Trace pseudo-calls are no GL entry points: not exported. */
+#define FS_CMD_TRACE(name, rk, flags, n, ...)
 #include "gl_commands.def"
 #undef FS_CMD
 #undef FS_CMD_EXT
+#undef FS_CMD_TRACE
 
 /* For OSMesaGetProcAddress: every entry point by command id. */
 typedef void (*fs_shim_proc)(void);
 static const fs_shim_proc procs[FS_CMD_COUNT] = {
 #define FS_CMD(name, rk, flags, n, ...) (fs_shim_proc)gl##name,
+#define FS_CMD_TRACE(name, rk, flags, n, ...) NULL,
 #include "gl_commands.def"
 #undef FS_CMD
+#undef FS_CMD_TRACE
 };
 
 fs_shim_proc fs_shim_gl_proc(const char *name)

@@ -5,6 +5,7 @@
 #include "context.h"
 #include "../units/occlusion_unit.h"
 #include "../units/texture_unit.h"
+#include "buffer_object.h"
 
 fs_context *fs_context_create(const fs_config *cfg, int width, int height)
 {
@@ -55,6 +56,7 @@ void fs_context_destroy(fs_context *c)
     fs_state_free(c);
     fs_occlusion_free(c);
     fs_texture_free(c);
+    fs_buffer_objects_free(c);
     fs_vertex_stage_free(c);
     fs_framebuffer_free(&c->fb);
     free(c->scratch);

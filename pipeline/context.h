@@ -23,6 +23,7 @@ struct fs_dlist_state;      /* driver/display_list.c */
 struct fs_capture;          /* driver/capture.c */
 struct fs_occlusion;        /* units/occlusion_gl.c */
 struct fs_texture_state;    /* units/texture_object.c */
+struct fs_buffer_objects;   /* pipeline/buffer_object.c */
 
 struct fs_context {
     fs_config cfg;
@@ -86,6 +87,9 @@ struct fs_context {
     struct fs_occlusion *occlusion;
     /* The texture unit's state (units/texture_unit.h). */
     struct fs_texture_state *texture;
+    /* The buffer objects (GL 1.5 spec 2.9), created on first use; their
+     * bindings are in `arrays` (pipeline/buffer_object.h). */
+    struct fs_buffer_objects *buffers;
     /* Whoever watches the work (observer.h); NULL in functional mode,
      * where each report point costs one branch. */
     fs_observer *observer;

@@ -51,13 +51,17 @@ int64_t fs_calllists_bytes(GLsizei n, GLenum type)
 }
 
 /* ---- array specification ---- */
-static void set_array(fs_client_array *a, GLint size, GLenum type, GLsizei stride, const void *p)
+/* GL 1.5 spec 2.9.1: the array takes the buffer bound to GL_ARRAY_BUFFER
+ * now, and p is then an offset into it (resolved at each draw, as the
+ * store may change: pipeline/buffer_object.c). */
+static void set_array(fs_context *c, fs_client_array *a, GLint size, GLenum type, GLsizei stride, const void *p)
 {
     a->size = size;
     a->type = type;
     a->stride = stride;
     a->pointer = p;
-    a->bytes = p ? SIZE_MAX : 0;
+    a->buffer = c->arrays.array_buffer;
+    a->bytes = p || a->buffer ? SIZE_MAX : 0;
 }
 
 void fs_exec_VertexPointer(fs_context *c, GLint size, GLenum type, GLsizei stride, const GLvoid *pointer)
@@ -67,7 +71,7 @@ void fs_exec_VertexPointer(fs_context *c, GLint size, GLenum type, GLsizei strid
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    set_array(&c->arrays.vertex, size, type, stride, pointer);
+    set_array(c, &c->arrays.vertex, size, type, stride, pointer);
 }
 
 void fs_exec_NormalPointer(fs_context *c, GLenum type, GLsizei stride, const GLvoid *pointer)
@@ -77,7 +81,7 @@ void fs_exec_NormalPointer(fs_context *c, GLenum type, GLsizei stride, const GLv
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    set_array(&c->arrays.normal, 3, type, stride, pointer);
+    set_array(c, &c->arrays.normal, 3, type, stride, pointer);
 }
 
 void fs_exec_ColorPointer(fs_context *c, GLint size, GLenum type, GLsizei stride, const GLvoid *pointer)
@@ -87,7 +91,7 @@ void fs_exec_ColorPointer(fs_context *c, GLint size, GLenum type, GLsizei stride
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    set_array(&c->arrays.color, size, type, stride, pointer);
+    set_array(c, &c->arrays.color, size, type, stride, pointer);
 }
 
 void fs_exec_TexCoordPointer(fs_context *c, GLint size, GLenum type, GLsizei stride, const GLvoid *pointer)
@@ -97,7 +101,7 @@ void fs_exec_TexCoordPointer(fs_context *c, GLint size, GLenum type, GLsizei str
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    set_array(&c->arrays.texcoord, size, type, stride, pointer);
+    set_array(c, &c->arrays.texcoord, size, type, stride, pointer);
 }
 
 static fs_client_array *array_of(fs_context *c, GLenum array)

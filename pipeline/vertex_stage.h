@@ -76,10 +76,16 @@ typedef struct fs_client_array {
      * (GL trusts it), 0 for NULL, the exact length for data that came with
      * a replayed call (driver/dispatch.c), which a draw may not read past. */
     size_t bytes;
+    /* The buffer object bound to GL_ARRAY_BUFFER when the pointer was set
+     * (GL 1.5 spec 2.9.1), pointer then being an offset into it; 0: none. */
+    GLuint buffer;
 } fs_client_array;
 
 typedef struct fs_array_state {
     fs_client_array vertex, normal, color, texcoord;
+    /* GL_ARRAY_BUFFER_BINDING, GL_ELEMENT_ARRAY_BUFFER_BINDING (2.9),
+     * client state as the arrays are (pipeline/buffer_object.c). */
+    GLuint array_buffer, element_buffer;
 } fs_array_state;
 
 /* Immediate-mode primitive assembly state; the vertex agent owns its fields. */

@@ -264,15 +264,7 @@ TEST(draw_without_recorded_arrays_is_refused)
     unlink(t.path);
 }
 
-static fs_tval blob(const void *p, size_t n)
-{
-    fs_tval x;
-    memset(&x, 0, sizeof x);
-    x.type = FS_TV_BLOB;
-    x.str.ptr = (const char *)p;
-    x.str.len = n;
-    return x;
-}
+#define blob tb_blob
 
 static uint64_t unsupported_count(const fs_context *c, const char *name)
 {

@@ -152,6 +152,7 @@ static bool make_call(input *in, arena *ar, fs_call *call)
         case FS_K_S: a->i = (int16_t)an_int(in); break;
         case FS_K_US: a->i = (uint16_t)an_int(in); break;
         case FS_K_I: case FS_K_SZ: a->i = (int32_t)an_int(in); break;
+        case FS_K_IP: a->i = (int64_t)(int32_t)an_int(in); break; /* GLintptr, GLsizeiptr */
         case FS_K_U: a->i = (uint32_t)an_int(in); break;
         case FS_K_F: case FS_K_CF: a->d = (float)a_float(in); break;
         case FS_K_D: case FS_K_CD: a->d = a_float(in); break;
@@ -177,7 +178,7 @@ static bool make_call(input *in, arena *ar, fs_call *call)
             a->is_data = 1;
             break;
         }
-        case FS_K_OV: case FS_K_OF: case FS_K_OD: case FS_K_OI: case FS_K_OU: case FS_K_OB:
+        case FS_K_OV: case FS_K_OF: case FS_K_OD: case FS_K_OI: case FS_K_OU: case FS_K_OB: case FS_K_OP:
             a->out = NULL; /* as from a trace: the dispatcher gives scratch space */
             break;
         case FS_K_STR: {
