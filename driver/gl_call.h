@@ -206,6 +206,7 @@ int64_t fs_index_bytes(GLsizei count, GLenum type);
 int64_t fs_calllists_bytes(GLsizei n, GLenum type);
 int fs_light_param_count(GLenum pname);
 int fs_lightmodel_param_count(GLenum pname);
+int fs_fog_param_count(GLenum pname);
 int fs_material_param_count(GLenum pname);
 int fs_get_count(GLenum pname);
 int64_t fs_readpixels_bytes(fs_context *c, GLsizei w, GLsizei h, GLenum format, GLenum type);

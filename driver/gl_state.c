@@ -127,6 +127,14 @@ static bool get_computed(fs_context *c, GLenum pname, get_result *r)
     case GL_MODELVIEW_MATRIX: case GL_PROJECTION_MATRIX: case GL_TEXTURE_MATRIX:
         putf(r, GET_NORM, 16, top_matrix(c, pname)->m); /* as OSMesa converts them */
         return true;
+    case GL_TRANSPOSE_MODELVIEW_MATRIX: case GL_TRANSPOSE_PROJECTION_MATRIX: case GL_TRANSPOSE_TEXTURE_MATRIX: {
+        const float *m = top_matrix(c, pname - GL_TRANSPOSE_MODELVIEW_MATRIX + GL_MODELVIEW_MATRIX)->m;
+        float t[16];
+        for (int i = 0; i < 16; i++)
+            t[i] = m[(i % 4) * 4 + i / 4];
+        putf(r, GET_NORM, 16, t);
+        return true;
+    }
     case GL_MODELVIEW_STACK_DEPTH: put1(r, GET_NUM, c->xf.modelview_top + 1); return true;
     case GL_PROJECTION_STACK_DEPTH: put1(r, GET_NUM, c->xf.projection_top + 1); return true;
     case GL_TEXTURE_STACK_DEPTH: put1(r, GET_NUM, c->xf.texture_top + 1); return true;
@@ -134,6 +142,8 @@ static bool get_computed(fs_context *c, GLenum pname, get_result *r)
     case GL_TEXTURE_2D: put1(r, GET_BOOL, *fs_texture_enable_flag(c, pname)); return true;
     case GL_TEXTURE_BINDING_2D: put1(r, GET_NUM, fs_texture_binding_2d(c)); return true;
     /* GL 1.5 spec table 6.30 and GL_FRAGSIM_occlusion_unit's New State. */
+    /* GL_NUM_COMPRESSED_TEXTURE_FORMATS is 0: the list is empty. */
+    case GL_COMPRESSED_TEXTURE_FORMATS: put(r, GET_ENUM, 0, v); return true;
     case GL_RENDER_MODE: put1(r, GET_ENUM, fs_occlusion_render_mode(c)); return true;
     case GL_OCCLUSION_TEST_HP: put1(r, GET_BOOL, fs_occlusion_hp_enabled(c)); return true;
     /* Reading the result clears it (GL_HP_occlusion_test). */
@@ -220,7 +230,8 @@ void fs_exec_GetBooleanv(fs_context *c, GLenum pname, GLboolean *params)
  * they are only stored for glGet (table 6.27). */
 void fs_exec_Hint(fs_context *c, GLenum target, GLenum mode)
 {
-    GLenum *hint = fs_state_field(c, target, GL_HINT_BIT, NULL);
+    /* GL_GENERATE_MIPMAP_HINT is a hint outside the hint group (state.def). */
+    GLenum *hint = target == GL_GENERATE_MIPMAP_HINT ? &c->hints[5] : fs_state_field(c, target, GL_HINT_BIT, NULL);
     if (!hint || (mode != GL_FASTEST && mode != GL_NICEST && mode != GL_DONT_CARE)) {
         fs_error(c, GL_INVALID_ENUM);
         return;

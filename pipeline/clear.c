@@ -30,6 +30,27 @@ void fs_exec_ClearStencil(fs_context *c, GLint s)
     c->frag.clear_stencil = s;
 }
 
+/* 4.2.3: the accumulation buffer's clear colour, clamped to [-1, 1], and
+ * the colour index clear value.  The window has neither buffer (0
+ * accumulation and index bits), so they only answer glGet. */
+void fs_exec_ClearAccum(fs_context *c, GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha)
+{
+    const float v[4] = {red, green, blue, alpha};
+    for (int k = 0; k < 4; k++)
+        c->st.accum_clear[k] = v[k] > -1.0f ? (v[k] < 1.0f ? v[k] : 1.0f) : -1.0f;
+    fs_state_mark(c, GL_ACCUM_BUFFER_BIT);
+}
+
+/* OSMesa keeps the index as an integer (measured: 3.7 reads back as 3,
+ * -5 as -5, 4e9 as -294967296): toward zero, to 64 bits, of which the low
+ * 32 are the value; a float beyond 64 bits or NaN gives 0. */
+void fs_exec_ClearIndex(fs_context *c, GLfloat index)
+{
+    int64_t i = index > -9.2e18f && index < 9.2e18f ? (int64_t)index : INT64_MIN;
+    c->st.index_clear = (GLint)(uint32_t)i;
+    fs_state_mark(c, GL_COLOR_BUFFER_BIT);
+}
+
 /* The clear depth in buffer units: scaled in double and rounded to nearest
  * even, which matches OSMesa's full-window clears exactly.  llvmpipe's
  * scissored clears take another route and differ by one unit for about a

@@ -17,6 +17,7 @@
 #include "fragment_ops.h"
 #include "vertex_stage.h"
 #include "state.h"
+#include "stored_state.h"
 #include "observer.h"
 
 struct fs_dlist_state;      /* driver/display_list.c */
@@ -50,7 +51,7 @@ struct fs_context {
     GLint unpack_skip_pixels, unpack_skip_rows, unpack_image_height, unpack_skip_images;
     GLint pack_skip_pixels, pack_skip_rows, pack_image_height, pack_skip_images;
     GLint unpack_swap_bytes, unpack_lsb_first, pack_swap_bytes, pack_lsb_first;
-    bool unmodelled_caps[32];     /* enables fragsim stores but does not model (driver/gl_state.c) */
+    bool unmodelled_caps[48];     /* enables fragsim stores but does not model (driver/gl_state.c) */
     /* Client-state enables of the arrays fragsim does not fetch yet (edge
      * flag, index, fog coordinate, secondary colour; GL 1.5 spec 2.8), kept
      * so glIsEnabled answers (pipeline/vertex_array.c). */
@@ -63,7 +64,8 @@ struct fs_context {
     bool double_buffered;
     GLenum draw_buffer, read_buffer;
     /* Hints (GL 1.5 spec 5.6, table 6.27), stored only: llvmpipe ignores them. */
-    GLenum hints[5];
+    GLenum hints[7];
+    fs_stored_state st;           /* stored for glGet, not modelled yet (stored_state.h) */
     /* The attribute stacks (6.1.14; pipeline/state.c) and the groups whose
      * state changed since the last validation, as glPushAttrib's bits with
      * the client groups in bits 20-21 (pipeline/state.h). */

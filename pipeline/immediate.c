@@ -313,6 +313,11 @@ void fs_exec_Normal3s(fs_context *c, GLshort x, GLshort y, GLshort z) { normal3(
 void fs_exec_Normal3fv(fs_context *c, const GLfloat *v) { normal3(c, v[0], v[1], v[2]); }
 void fs_exec_Normal3dv(fs_context *c, const GLdouble *v) { normal3(c, (float)v[0], (float)v[1], (float)v[2]); }
 
+/* ---- the edge flag (2.6.2; stored: polygon edges matter only in the
+ * GL_LINE and GL_POINT polygon modes, counted as unsupported) ---- */
+void fs_exec_EdgeFlag(fs_context *c, GLboolean flag) { c->st.edge_flag = flag != GL_FALSE; }
+void fs_exec_EdgeFlagv(fs_context *c, const GLubyte *flag) { c->st.edge_flag = flag[0] != GL_FALSE; }
+
 /* ---- texture coordinates ---- */
 static void texcoord4(fs_context *c, float s, float t, float r, float q)
 {

@@ -121,9 +121,12 @@ static void lightmodel_v(fs_context *c, GLenum pname, const float *p)
     case GL_LIGHT_MODEL_LOCAL_VIEWER: c->lighting.local_viewer = p[0] != 0.0f; break;
     case GL_LIGHT_MODEL_TWO_SIDE: c->lighting.two_side = p[0] != 0.0f; break;
     case GL_LIGHT_MODEL_COLOR_CONTROL:
-        if (p[0] == (float)GL_SINGLE_COLOR)
+        if (p[0] == (float)GL_SINGLE_COLOR) {
+            c->lighting.color_control = GL_SINGLE_COLOR;
             break;
+        }
         if (p[0] == (float)GL_SEPARATE_SPECULAR_COLOR) {
+            c->lighting.color_control = GL_SEPARATE_SPECULAR_COLOR;
             fs_unsupported(c, "glLightModel(GL_SEPARATE_SPECULAR_COLOR)");
             break;
         }

@@ -25,6 +25,13 @@ typedef struct fs_context fs_context;
 #define FS_CLIENT_VERTEX_ARRAY (1u << 21)
 #define FS_CLIENT_GROUPS (FS_CLIENT_PIXEL_STORE | FS_CLIENT_VERTEX_ARRAY)
 
+/* GL 1.5 spec 2.11: the clip planes beyond the six gl.h names are
+ * GL_CLIP_PLANE0 + i (llvmpipe has 8). */
+#ifndef GL_CLIP_PLANE6
+#define GL_CLIP_PLANE6 (GL_CLIP_PLANE0 + 6)
+#define GL_CLIP_PLANE7 (GL_CLIP_PLANE0 + 7)
+#endif
+
 /* How a value converts for glGet (GL 1.5 spec 6.1.2): NUM rounds to the
  * nearest integer, NORM (colours, normals, depth values) maps [-1,1]
  * linearly onto the integer range, BOOL and ENUM convert as numbers. */

@@ -56,6 +56,7 @@ typedef struct fs_lighting_state {
     fs_light light[FS_MAX_LIGHTS];
     float model_ambient[4];
     bool local_viewer, two_side;
+    GLenum color_control;       /* GL_SINGLE_COLOR (GL_SEPARATE_SPECULAR_COLOR is counted unsupported) */
     fs_material material[2]; /* front, back */
     bool color_material;     /* GL_COLOR_MATERIAL */
     GLenum color_material_face, color_material_mode;

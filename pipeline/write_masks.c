@@ -13,6 +13,15 @@ void fs_exec_ColorMask(fs_context *c, GLboolean red, GLboolean green, GLboolean 
     c->frag.color_mask[3] = alpha != GL_FALSE;
 }
 
+/* 4.2.2: the colour index write mask; the window has no colour index
+ * mode (GL_INDEX_BITS 0), so it only answers glGet (as GLint: all ones
+ * reads as -1, as on OSMesa). */
+void fs_exec_IndexMask(fs_context *c, GLuint mask)
+{
+    c->st.index_mask = (GLint)mask;
+    fs_state_mark(c, GL_COLOR_BUFFER_BIT);
+}
+
 void fs_masked_color_write(const fs_context *c, uint8_t *dst, const uint8_t rgba[4])
 {
     for (int k = 0; k < 4; k++)
