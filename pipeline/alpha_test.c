@@ -26,6 +26,7 @@ void fs_exec_AlphaFunc(fs_context *c, GLenum func, GLclampf ref)
     c->frag.alpha_func = func;
     /* clampf arguments are clamped when specified (GL 1.5 spec 2.3). */
     c->frag.alpha_ref = ref > 0.0f ? (ref < 1.0f ? ref : 1.0f) : 0.0f;
+    fs_state_mark(c, GL_COLOR_BUFFER_BIT);
 }
 
 static inline unsigned alpha_unorm8(float x)

@@ -39,6 +39,7 @@ void fs_exec_BlendFunc(fs_context *c, GLenum sfactor, GLenum dfactor)
     }
     c->frag.blend_src = sfactor;
     c->frag.blend_dst = dfactor;
+    fs_state_mark(c, GL_COLOR_BUFFER_BIT);
 }
 
 static inline unsigned mul_norm8(unsigned a, unsigned b)

@@ -22,6 +22,7 @@ void fs_context_set_double_buffered(fs_context *c, bool double_buffered)
     /* 4.2.1 / 4.3.2: initially GL_BACK when there is a back buffer,
      * else GL_FRONT (OSMesa answers GL_FRONT). */
     c->draw_buffer = c->read_buffer = double_buffered ? GL_BACK : GL_FRONT;
+    fs_state_mark(c, GL_COLOR_BUFFER_BIT | GL_PIXEL_MODE_BIT);
 }
 
 /* 0 when the window has buffer `b`, else the GL error naming it gives. */
@@ -49,6 +50,7 @@ void fs_exec_DrawBuffer(fs_context *c, GLenum mode)
         return;
     }
     c->draw_buffer = mode;
+    fs_state_mark(c, GL_COLOR_BUFFER_BIT);
 }
 
 void fs_exec_ReadBuffer(fs_context *c, GLenum mode)
@@ -62,4 +64,5 @@ void fs_exec_ReadBuffer(fs_context *c, GLenum mode)
         return;
     }
     c->read_buffer = mode;
+    fs_state_mark(c, GL_PIXEL_MODE_BIT);
 }

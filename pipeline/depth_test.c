@@ -13,11 +13,13 @@ void fs_exec_DepthFunc(fs_context *c, GLenum func)
         return;
     }
     c->frag.depth_func = func;
+    fs_state_mark(c, GL_DEPTH_BUFFER_BIT);
 }
 
 void fs_exec_DepthMask(fs_context *c, GLboolean flag)
 {
     c->frag.depth_write = flag != GL_FALSE;
+    fs_state_mark(c, GL_DEPTH_BUFFER_BIT);
 }
 
 bool fs_depth_test(GLenum func, uint32_t z, uint32_t stored)

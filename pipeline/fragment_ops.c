@@ -4,13 +4,15 @@
  * (4.1.6), the Occlusion Unit attachment point, blending (4.1.8), dithering
  * (4.1.9), logic op (4.1.10) and the masked write (4.2.2).
  *
- * The path is chosen per quad from the state because glEnable/glDisable
- * (owned by the driver) change c->frag directly, so there is no hook to
- * recompute a cached choice; the check is a handful of loads per quad.
- * fs_fragment_quad_general is the reference; the fast paths must give the
- * same bytes and statistics (tests/test_fragment_ops.c holds them equal).
+ * fs_fragment_quad_general is the reference.  The path a quad takes is
+ * chosen once per state change, not per quad: the validation step
+ * (validate.c) computes the fragment key and picks the first entry of the
+ * table of variants below that serves it; the variants must give the same
+ * bytes, statistics, work records and hook calls as the general path
+ * (tests/test_fragment_variants.c, tests/test_fragment_ops.c).
  */
 #include "fragment_stages.h"
+#include "validate.h"
 
 void fs_fragment_state_init(fs_fragment_state *f)
 {
@@ -48,6 +50,9 @@ void fs_fragment_state_init(fs_fragment_state *f)
     f->clear_depth = 1.0;
     f->clear_stencil = 0;
     f->suppress_writes = false;
+    /* Derived by the first validation (the context starts all dirty). */
+    f->key = 0;
+    f->quad_fn = fs_fragment_quad_general;
 }
 
 static inline void store_rgba8(uint8_t *p, const float col[4])
@@ -151,11 +156,55 @@ fs_quad_work fs_fragment_quad_general(fs_context *c, fs_quad *q)
     return w;
 }
 
-/* Depth test LESS/LEQUAL with depth writes, everything else off: the state
- * of most opaque 3D drawing. */
-static fs_quad_work quad_depth_write(fs_context *c, const fs_quad *q, unsigned m, bool lequal)
+/* ---- the variants ---- */
+
+/* The product of blending, as blend.c computes it for llvmpipe: the 16-bit
+ * approximation of ab/255. */
+static inline unsigned mul_norm8(unsigned a, unsigned b)
+{
+    unsigned ab = a * b;
+    return (ab + (ab >> 8) + 128u) >> 8;
+}
+
+/* The blending variants, 4.1.8: source factor GL_SRC_ALPHA and the
+ * destination factor GL_ONE_MINUS_SRC_ALPHA (transparency) or GL_ONE
+ * (additive), with the products and the saturation of fs_blend_rgba8 but
+ * without its choice of factor per channel.  The mode is the destination
+ * factor (0: blending off). */
+enum blend_mode { B_OFF = 0, B_SRC_ALPHA = GL_ONE_MINUS_SRC_ALPHA, B_SRC_ALPHA_ONE = GL_ONE };
+
+static inline __attribute__((always_inline)) void blend_src_alpha(uint8_t *p, const float col[4], enum blend_mode b)
+{
+    uint8_t s[4];
+    store_rgba8(s, col);
+    unsigned a = s[3], da = b == B_SRC_ALPHA ? 255u - a : 255u;
+    for (int k = 0; k < 4; k++) {
+        unsigned v = mul_norm8(s[k], a) + mul_norm8(p[k], da);
+        p[k] = (uint8_t)(v > 255u ? 255u : v);
+    }
+}
+
+/* The depth test's variants, 4.1.6: the depth function (0: test off). */
+enum depth_mode { Z_OFF = 0, Z_LESS = GL_LESS, Z_LEQUAL = GL_LEQUAL, Z_GREATER = GL_GREATER, Z_ALWAYS = GL_ALWAYS };
+
+static inline __attribute__((always_inline)) bool depth_pass(enum depth_mode zmode, uint32_t z, uint32_t stored)
+{
+    return zmode == Z_LESS ? z < stored : zmode == Z_LEQUAL ? z <= stored : zmode == Z_GREATER ? z > stored : true;
+}
+
+/* The general path for a quad wholly inside the window with scissor,
+ * alpha, stencil and logic op off, all colour channels written, a colour
+ * buffer to draw to and no occlusion mode: only the depth test (one of
+ * enum depth_mode, with or without depth writes) and blending (one of
+ * enum blend_mode) remain.  The variants give the arguments as constants,
+ * so each is compiled without the branches the others need.  The
+ * attachment point is called after the writes here: the hook sees the
+ * quad and the masks, never the colour buffer. */
+static inline __attribute__((always_inline)) fs_quad_work
+quad_fast(fs_context *c, const fs_quad *q, enum depth_mode zmode, bool zwrite, enum blend_mode blend)
 {
     fs_framebuffer *fb = &c->fb;
+    unsigned m = q->mask & 0xfu;
     size_t w = (size_t)fb->width;
     size_t base = (size_t)q->y * w + (size_t)q->x;
     unsigned passed = 0;
@@ -163,12 +212,17 @@ static fs_quad_work quad_depth_write(fs_context *c, const fs_quad *q, unsigned m
         if (!(m >> i & 1u))
             continue;
         size_t k = base + (size_t)(i >> 1) * w + (size_t)(i & 1);
-        uint32_t z = q->z[i];
-        bool pass = lequal ? z <= fb->depth[k] : z < fb->depth[k];
-        if (!pass)
-            continue;
-        fb->depth[k] = z;
-        store_rgba8(fb->color + k * 4, q->color[i]);
+        if (zmode != Z_OFF) {
+            uint32_t z = q->z[i];
+            if (!depth_pass(zmode, z, fb->depth[k]))
+                continue;
+            if (zwrite)
+                fb->depth[k] = z;
+        }
+        if (blend != B_OFF)
+            blend_src_alpha(fb->color + k * 4, q->color[i], blend);
+        else
+            store_rgba8(fb->color + k * 4, q->color[i]);
         passed |= 1u << i;
     }
     unsigned np = fs_popcount4(passed);
@@ -178,37 +232,50 @@ static fs_quad_work quad_depth_write(fs_context *c, const fs_quad *q, unsigned m
     return (fs_quad_work){0, np, np};
 }
 
-/* No tests at all: plain overwrite (2D, clears drawn as quads). */
-static fs_quad_work quad_plain(fs_context *c, const fs_quad *q, unsigned m)
+/* The fields every fast variant tests: all of them off but the colour
+ * mask, which has all four channels on; and those of the depth test and
+ * blending when the variant has them. */
+#define FAST_MASK                                                                             \
+    (FS_FKEY_NO_COLOR | FS_FKEY_SUPPRESS | FS_FKEY_SCISSOR | FS_FKEY_ALPHA | FS_FKEY_STENCIL | \
+     FS_FKEY_LOGIC | FS_FKEY_COLOR_MASK_MASK | FS_FKEY_DEPTH | FS_FKEY_BLEND)
+#define FAST_VALUE (15u << FS_FKEY_COLOR_MASK_SHIFT)
+#define DEPTH_MASK(z) ((z) ? FS_FKEY_DEPTH_WRITE | FS_FKEY_DEPTH_FUNC_MASK : 0u)
+#define DEPTH_VALUE(z, zwrite) \
+    ((z) ? FS_FKEY_DEPTH | FS_FKEY_DEPTH_FUNC(z) | ((zwrite) ? FS_FKEY_DEPTH_WRITE : 0u) : 0u)
+#define BLEND_MASK(b) ((b) ? FS_FKEY_BLEND_SRC_MASK | FS_FKEY_BLEND_DST_MASK : 0u)
+#define BLEND_VALUE(b) ((b) ? FS_FKEY_BLEND | FS_FKEY_BLEND_FUNC(GL_SRC_ALPHA, b) : 0u)
+
+/* One function per row of fragment_variants.def. */
+#define FS_FRAGMENT_VARIANT(fn, name, zmode, zwrite, blend) \
+    static fs_quad_work fn(fs_context *c, fs_quad *q) { return quad_fast(c, q, zmode, zwrite, blend); }
+#include "fragment_variants.def"
+
+static const fs_fragment_variant variants[] = {
+#define FS_FRAGMENT_VARIANT(fn, name, zmode, zwrite, blend) \
+    {name, FAST_MASK | DEPTH_MASK(zmode) | BLEND_MASK(blend), FAST_VALUE | DEPTH_VALUE(zmode, zwrite) | BLEND_VALUE(blend), fn},
+#include "fragment_variants.def"
+    {"general", 0, 0, fs_fragment_quad_general},
+};
+
+const fs_fragment_variant *fs_fragment_variants(int *count)
 {
-    fs_framebuffer *fb = &c->fb;
-    size_t w = (size_t)fb->width;
-    size_t base = (size_t)q->y * w + (size_t)q->x;
-    for (int i = 0; i < 4; i++) {
-        if (m >> i & 1u)
-            store_rgba8(fb->color + (base + (size_t)(i >> 1) * w + (size_t)(i & 1)) * 4, q->color[i]);
-    }
-    occlusion_point(c, q, m, m);
-    unsigned n = fs_popcount4(m);
-    c->stats.fragments_written += n;
-    return (fs_quad_work){0, n, n};
+    *count = (int)(sizeof variants / sizeof variants[0]);
+    return variants;
+}
+
+fs_quad_work fs_fragment_quad_with(fs_context *c, fs_quad *q, fs_fragment_fn fn)
+{
+    if (!(q->mask & 0xfu))
+        return (fs_quad_work){0, 0, 0};
+    int qx = q->x, qy = q->y;
+    if (qx >= 0 && qy >= 0 && qx + 1 < c->fb.width && qy + 1 < c->fb.height)
+        return fn(c, q);
+    return fs_fragment_quad_general(c, q);
 }
 
 fs_quad_work fs_fragment_quad(fs_context *c, fs_quad *q)
 {
-    const fs_fragment_state *f = &c->frag;
-    unsigned m = q->mask & 0xfu;
-    if (!m)
-        return (fs_quad_work){0, 0, 0};
-    bool simple = !f->suppress_writes && c->draw_buffer != GL_NONE && !f->scissor_enabled && !f->alpha_enabled && !f->stencil_enabled &&
-                  !f->blend_enabled && !f->logic_op_enabled &&
-                  f->color_mask[0] && f->color_mask[1] && f->color_mask[2] && f->color_mask[3];
-    int qx = q->x, qy = q->y;
-    if (simple && qx >= 0 && qy >= 0 && qx + 1 < c->fb.width && qy + 1 < c->fb.height) {
-        if (!f->depth_enabled)
-            return quad_plain(c, q, m);
-        if (f->depth_write && (f->depth_func == GL_LESS || f->depth_func == GL_LEQUAL))
-            return quad_depth_write(c, q, m, f->depth_func == GL_LEQUAL);
-    }
-    return fs_fragment_quad_general(c, q);
+    if (c->dirty)
+        fs_validate(c);
+    return fs_fragment_quad_with(c, q, c->frag.quad_fn);
 }

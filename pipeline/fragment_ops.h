@@ -12,6 +12,19 @@
 #include <GL/gl.h>
 #include "rasterizer.h"
 
+/* What the per-fragment operations did to one quad, for the observer
+ * (observer.h) to take instead of diffing the statistics: fragments
+ * discarded before the stencil and depth tests (pixel ownership, scissor,
+ * alpha test), fragments that passed every test (what GL_SAMPLES_PASSED
+ * counts), fragments written. */
+typedef struct fs_quad_work {
+    unsigned killed_early, passed, written;
+} fs_quad_work;
+
+/* A per-fragment path: runs the operations on a quad and writes the
+ * survivors; returns what they did. */
+typedef fs_quad_work (*fs_fragment_fn)(fs_context *c, fs_quad *q);
+
 typedef struct fs_fragment_state {
     /* scissor (4.1.2) */
     bool scissor_enabled;
@@ -49,22 +62,41 @@ typedef struct fs_fragment_state {
      * 5.2; Huettner 1999, 3.2.1: occlusion modes do not change the
      * framebuffer). */
     bool suppress_writes;
+    /* Derived state, never set by a command: the fragment key of the state
+     * above and the path the table of variants gives for it, built by the
+     * validation step (pipeline/validate.c) when c->dirty says the state
+     * changed.  glPushAttrib saves neither (they are in no state row). */
+    uint32_t key;
+    fs_fragment_fn quad_fn;
 } fs_fragment_state;
 
 void fs_fragment_state_init(fs_fragment_state *f);
 
-/* What the per-fragment operations did to one quad, for the observer
- * (observer.h) to take instead of diffing the statistics: fragments
- * discarded before the stencil and depth tests (pixel ownership, scissor,
- * alpha test), fragments that passed every test (what GL_SAMPLES_PASSED
- * counts), fragments written. */
-typedef struct fs_quad_work {
-    unsigned killed_early, passed, written;
-} fs_quad_work;
-
 /* Runs the per-fragment operations on a quad and writes the survivors;
- * returns what they did. */
+ * returns what they did.  Validates first if the state changed. */
 fs_quad_work fs_fragment_quad(fs_context *c, fs_quad *q);
+
+/*
+ * The table of variants: specialised paths for common states, each the
+ * general path (fs_fragment_quad_general, the reference) with the stages
+ * its state makes no-ops left out, and so giving the same bytes,
+ * statistics, work record and Occlusion Unit hook calls
+ * (tests/test_fragment_variants.c holds them equal).  An entry serves the
+ * fragment keys k (pipeline/validate.h) with (k & mask) == value; the first
+ * that matches is chosen; the last entry, the general path, matches all.
+ * A variant is only given quads wholly inside the window with a non-empty
+ * mask, so it needs no pixel ownership test (4.1.1).
+ */
+typedef struct fs_fragment_variant {
+    const char *name;
+    uint32_t mask, value;
+    fs_fragment_fn fn;
+} fs_fragment_variant;
+const fs_fragment_variant *fs_fragment_variants(int *count);
+
+/* fs_fragment_quad with the path fn instead of the validated one: fn for
+ * quads wholly inside the window, the general path for the others. */
+fs_quad_work fs_fragment_quad_with(fs_context *c, fs_quad *q, fs_fragment_fn fn);
 
 /*
  * Occlusion Unit attachment point (issue 3): called right after the depth

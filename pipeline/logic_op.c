@@ -12,6 +12,7 @@ void fs_exec_LogicOp(fs_context *c, GLenum opcode)
         return;
     }
     c->frag.logic_op = opcode;
+    fs_state_mark(c, GL_COLOR_BUFFER_BIT);
 }
 
 static inline unsigned logic(GLenum op, unsigned s, unsigned d)

@@ -13,6 +13,7 @@ void fs_exec_Scissor(fs_context *c, GLint x, GLint y, GLsizei width, GLsizei hei
     c->frag.scissor[1] = y;
     c->frag.scissor[2] = width;
     c->frag.scissor[3] = height;
+    fs_state_mark(c, GL_SCISSOR_BIT);
 }
 
 bool fs_scissor_rect(const fs_context *c, int *x0, int *y0, int *x1, int *y1)

@@ -82,6 +82,8 @@ void fs_state_init(fs_context *c)
         memcpy(&c->member, v, sizeof v);                                             \
     }
 #include "state.def"
+    /* Nothing is derived yet: the first validation derives everything. */
+    c->dirty = ~(uint32_t)0;
 }
 
 static int find_row(GLenum pname)

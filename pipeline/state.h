@@ -24,6 +24,10 @@ typedef struct fs_context fs_context;
 #define FS_CLIENT_PIXEL_STORE (1u << 20)
 #define FS_CLIENT_VERTEX_ARRAY (1u << 21)
 #define FS_CLIENT_GROUPS (FS_CLIENT_PIXEL_STORE | FS_CLIENT_VERTEX_ARRAY)
+/* A dirty bit that is no group: the occlusion render modes' suppression
+ * of writes (units/occlusion_gl.c; Huettner 1999, 3.2.1), which no
+ * glPushAttrib saves. */
+#define FS_DIRTY_OCCLUSION_MODE (1u << 22)
 
 /* GL 1.5 spec 2.11: the clip planes beyond the six gl.h names are
  * GL_CLIP_PLANE0 + i (llvmpipe has 8). */

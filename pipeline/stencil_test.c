@@ -28,6 +28,7 @@ void fs_exec_StencilFunc(fs_context *c, GLenum func, GLint ref, GLuint mask)
     GLint max = (1 << c->fb.stencil_bits) - 1;
     c->frag.stencil_ref = ref < 0 ? 0 : ref > max ? max : ref;
     c->frag.stencil_value_mask = mask;
+    fs_state_mark(c, GL_STENCIL_BUFFER_BIT);
 }
 
 void fs_exec_StencilOp(fs_context *c, GLenum fail, GLenum zfail, GLenum zpass)
@@ -39,11 +40,13 @@ void fs_exec_StencilOp(fs_context *c, GLenum fail, GLenum zfail, GLenum zpass)
     c->frag.stencil_fail = fail;
     c->frag.stencil_zfail = zfail;
     c->frag.stencil_zpass = zpass;
+    fs_state_mark(c, GL_STENCIL_BUFFER_BIT);
 }
 
 void fs_exec_StencilMask(fs_context *c, GLuint mask)
 {
     c->frag.stencil_write_mask = mask;
+    fs_state_mark(c, GL_STENCIL_BUFFER_BIT);
 }
 
 /* The reference is clamped to [0, 2^s - 1] (4.1.5). */

@@ -11,6 +11,7 @@ void fs_exec_ColorMask(fs_context *c, GLboolean red, GLboolean green, GLboolean 
     c->frag.color_mask[1] = green != GL_FALSE;
     c->frag.color_mask[2] = blue != GL_FALSE;
     c->frag.color_mask[3] = alpha != GL_FALSE;
+    fs_state_mark(c, GL_COLOR_BUFFER_BIT);
 }
 
 /* 4.2.2: the colour index write mask; the window has no colour index

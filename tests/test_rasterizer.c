@@ -207,11 +207,11 @@ static void run_batch(osm *o, fs_context *c, const tv *v, int ntri, int mode, ru
     if (mode == 1) {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
-        c->frag.depth_enabled = true;
-        c->frag.depth_func = GL_LESS;
+        fs_exec_Enable(c, GL_DEPTH_TEST); /* the commands mark the state dirty (pipeline/validate.c) */
+        fs_exec_DepthFunc(c, GL_LESS);
     } else {
         glDisable(GL_DEPTH_TEST);
-        c->frag.depth_enabled = false;
+        fs_exec_Disable(c, GL_DEPTH_TEST);
     }
     osm_tris(o, v, ntri);
     fs_tris(c, v, ntri);
@@ -652,7 +652,8 @@ TEST(fast_equals_reference)
             b->raster.has_fma = false;
         fs_clear(a);
         fs_clear(b);
-        a->frag.depth_enabled = b->frag.depth_enabled = true;
+        fs_exec_Enable(a, GL_DEPTH_TEST);
+        fs_exec_Enable(b, GL_DEPTH_TEST);
         for (int i = 0; i < 3000; i++) {
             tv v[3];
             random_tri(&r, v, (float)w, (float)h, i % 3 ? 6.0f : 40.0f, i, true);
@@ -794,8 +795,11 @@ static void run_prims(osm *o, fs_context *c, const tv *v, int n, prim_kind kind,
     } else {
         glDisable(GL_DEPTH_TEST);
     }
-    c->frag.depth_enabled = depth;
-    c->frag.depth_func = GL_LESS;
+    if (depth)
+        fs_exec_Enable(c, GL_DEPTH_TEST); /* the commands mark the state dirty (pipeline/validate.c) */
+    else
+        fs_exec_Disable(c, GL_DEPTH_TEST);
+    fs_exec_DepthFunc(c, GL_LESS);
     int per = kind == PRIM_LINES ? 2 : 1;
     glBegin(kind == PRIM_LINES ? GL_LINES : GL_POINTS);
     for (int i = 0; i < per * n; i++)

@@ -189,6 +189,7 @@ static void update_hook(fs_context *c)
     c->occlusion_hook = on ? occlusion_hook : NULL;
     c->occlusion_user = on ? o : NULL;
     c->frag.suppress_writes = in_occlusion_mode(o);
+    fs_state_mark(c, FS_DIRTY_OCCLUSION_MODE);
 }
 
 /* ---- glRenderMode (GL 1.5 spec 5.2-5.3; Huettner 1999, 3.2.1) ---- */

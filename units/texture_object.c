@@ -195,6 +195,7 @@ void fs_exec_BindTexture(fs_context *c, GLenum target, GLuint texture)
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
+    fs_state_mark(c, GL_TEXTURE_BIT);
     if (texture == 0) {
         s->bound = &s->default_2d;
         fs_texture_enables_changed(c); /* the rasterizer's tex_pair_lod */
@@ -597,6 +598,7 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
             fs_error(c, GL_INVALID_ENUM);
         return;
     }
+    fs_state_mark(c, GL_TEXTURE_BIT);
     fs_tex_object *t = c->texture->bound;
     GLenum e = float_to_enum(vals[0]);
     switch (pname) {
@@ -741,6 +743,7 @@ static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *val
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
+    fs_state_mark(c, GL_TEXTURE_BIT);
     if (pname == GL_TEXTURE_ENV_MODE) {
         GLenum m = float_to_enum(vals[0]);
         switch (m) {
