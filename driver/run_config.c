@@ -12,7 +12,8 @@ static void parts_of(fs_run_config *cfg, fs_config_part p[N_PARTS])
 void fs_run_config_defaults(fs_run_config *cfg)
 {
     fs_config_defaults(&cfg->gl);
-    fs_cycle_config_defaults(&cfg->cycle);
+    fs_config_part cycle = fs_cycle_config_part(&cfg->cycle);
+    fs_config_part_defaults(&cycle);
 }
 
 int fs_run_config_load(fs_run_config *cfg, const char *path, char *err, size_t errlen)

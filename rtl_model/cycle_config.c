@@ -14,12 +14,6 @@ fs_config_part fs_cycle_config_part(fs_cycle_config *cfg)
     return (fs_config_part){keys, sizeof keys / sizeof keys[0], cfg};
 }
 
-void fs_cycle_config_defaults(fs_cycle_config *cfg)
-{
-    fs_config_part p = fs_cycle_config_part(cfg);
-    fs_config_part_defaults(&p);
-}
-
 int fs_cycle_config_check(const fs_cycle_config *cfg, char *err, size_t errlen)
 {
     /* A 2x2 quad must stay on one image engine (rasterizer_stage.c). */

@@ -15,8 +15,8 @@ typedef struct fs_cycle_config {
 #undef FS_CONFIG
 } fs_cycle_config;
 
-void fs_cycle_config_defaults(fs_cycle_config *cfg);
-/* The key table bound to cfg (NULL: for listings only). */
+/* The key table bound to cfg (NULL: for listings only); its defaults with
+ * fs_config_part_defaults. */
 fs_config_part fs_cycle_config_part(fs_cycle_config *cfg);
 /* Constraints a key's range cannot express (the texture cache's geometry,
  * the framebuffer interleave).  Returns 0, or -1 with one message naming

@@ -18,7 +18,8 @@ static inline fs_cycle *fuzz_cycle_begin(fs_context *c, size_t size, uint64_t fr
     char err[256];
     int mode = (int)(size % 3) - 1;
     fs_cycle_config cfg;
-    fs_cycle_config_defaults(&cfg);
+    fs_config_part defaults = fs_cycle_config_part(&cfg);
+    fs_config_part_defaults(&defaults);
     fs_cycle *cy = mode >= 0 ? fs_cycle_create(&cfg, (fs_cycle_mode)mode, err, sizeof err) : NULL;
     if (cy) {
         fs_cycle_set_frames(cy, frames);
