@@ -176,7 +176,7 @@ typedef struct attrib_record {
     unsigned char *data;
     /* GL_TEXTURE_BIT / GL_ENABLE_BIT state the texture unit keeps. */
     bool texture_2d;
-    GLuint binding_2d;
+    fs_texture_attrib texture;
 } attrib_record;
 
 _Static_assert(FS_ATTRIB_STACK_DEPTH == FS_CLIENT_ATTRIB_STACK_DEPTH, "one depth check for both stacks");
@@ -218,7 +218,8 @@ static bool push(fs_context *c, attrib_record *rec, uint32_t mask)
     rec->mask = mask;
     copy_rows(c, rec, true);
     rec->texture_2d = *fs_texture_enable_flag(c, GL_TEXTURE_2D);
-    rec->binding_2d = fs_texture_binding_2d(c);
+    if (mask & GL_TEXTURE_BIT)
+        fs_texture_attrib_save(c, &rec->texture);
     return true;
 }
 
@@ -226,7 +227,7 @@ static void pop(fs_context *c, attrib_record *rec)
 {
     copy_rows(c, rec, false);
     if (rec->mask & GL_TEXTURE_BIT)
-        fs_exec_BindTexture(c, GL_TEXTURE_2D, rec->binding_2d);
+        fs_texture_attrib_restore(c, &rec->texture);
     if (rec->mask & (GL_TEXTURE_BIT | GL_ENABLE_BIT)) {
         *fs_texture_enable_flag(c, GL_TEXTURE_2D) = rec->texture_2d;
         fs_texture_enables_changed(c); /* the rasterizer interpolates texture coordinates */

@@ -326,6 +326,35 @@ static void random_client_state(fs_context *c, unsigned *s)
     G(ClientActiveTexture, GL_TEXTURE0);
 }
 
+static const GLenum min_filters[] = {GL_NEAREST, GL_LINEAR, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_NEAREST,
+                                     GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR_MIPMAP_LINEAR};
+static const GLenum wraps[] = {GL_REPEAT, GL_CLAMP, GL_CLAMP_TO_EDGE};
+static const GLenum env_modes[] = {GL_MODULATE, GL_DECAL, GL_BLEND, GL_REPLACE, GL_ADD};
+
+/* The texture group's state (GL 1.5 spec tables 6.16-6.20): the
+ * parameters of some of texture objects 0-3 (each bound to set them) and
+ * the texture environment; random_state binds one of them after. */
+static void random_texture_state(fs_context *c, unsigned *s)
+{
+    for (GLuint name = 0; name < 4; name++) {
+        if (pick(s, 2))
+            continue;
+        G(BindTexture, GL_TEXTURE_2D, name);
+        G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)min_filters[pick(s, N(min_filters))]);
+        G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, pick(s, 2) ? GL_LINEAR : GL_NEAREST);
+        G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, (GLint)wraps[pick(s, N(wraps))]);
+        G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, (GLint)wraps[pick(s, N(wraps))]);
+        GLfloat border[4];
+        random_colour(s, border, 0.0f, 1.0f);
+        G(TexParameterfv, GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
+        G(TexParameterf, GL_TEXTURE_2D, GL_TEXTURE_PRIORITY, rndf(s, 0.0f, 1.0f));
+    }
+    G(TexEnvi, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, (GLint)env_modes[pick(s, N(env_modes))]);
+    GLfloat colour[4];
+    random_colour(s, colour, 0.0f, 1.0f);
+    G(TexEnvfv, GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, colour);
+}
+
 /* scramble: the state changed between a push and its pop. */
 static void random_state(fs_context *c, unsigned *s, rec *r, bool scramble)
 {
@@ -343,8 +372,65 @@ static void random_state(fs_context *c, unsigned *s, rec *r, bool scramble)
     put_error(c, r, "fragment state");
     random_client_state(c, s);
     put_error(c, r, "client state");
+    random_texture_state(c, s);
+    put_error(c, r, "texture state");
     G(BindTexture, GL_TEXTURE_2D, (GLuint)pick(s, 4));
     put_error(c, r, "texture binding");
+}
+
+static const struct { GLenum pname; const char *label; int n; } tex_params[] = {
+    {GL_TEXTURE_MIN_FILTER, "GL_TEXTURE_MIN_FILTER", 1}, {GL_TEXTURE_MAG_FILTER, "GL_TEXTURE_MAG_FILTER", 1},
+    {GL_TEXTURE_WRAP_S, "GL_TEXTURE_WRAP_S", 1}, {GL_TEXTURE_WRAP_T, "GL_TEXTURE_WRAP_T", 1},
+    {GL_TEXTURE_BORDER_COLOR, "GL_TEXTURE_BORDER_COLOR", 4}, {GL_TEXTURE_PRIORITY, "GL_TEXTURE_PRIORITY", 1},
+    {GL_TEXTURE_MIN_LOD, "GL_TEXTURE_MIN_LOD", 1}, {GL_TEXTURE_MAX_LOD, "GL_TEXTURE_MAX_LOD", 1},
+    {GL_TEXTURE_BASE_LEVEL, "GL_TEXTURE_BASE_LEVEL", 1}, {GL_TEXTURE_MAX_LEVEL, "GL_TEXTURE_MAX_LEVEL", 1}};
+
+/* glGetTexParameter{i,f}v of every parameter of the bound texture and of
+ * textures 0-3 (bound in turn, the binding put back after), and
+ * glGetTexEnv{i,f}v of the environment. */
+static void dump_textures(fs_context *c, rec *r)
+{
+    GLint bound = 0;
+    G(GetIntegerv, GL_TEXTURE_BINDING_2D, &bound);
+    for (int name = -1; name < 4; name++) {
+        if (name >= 0)
+            G(BindTexture, GL_TEXTURE_2D, (GLuint)name);
+        put(r, "texture (-1: the bound one)", name);
+        for (int i = 0; i < N(tex_params); i++) {
+            GLint iv[4] = {0};
+            GLfloat fv[4] = {0};
+            G(GetTexParameteriv, GL_TEXTURE_2D, tex_params[i].pname, iv);
+            G(GetTexParameterfv, GL_TEXTURE_2D, tex_params[i].pname, fv);
+            for (int k = 0; k < tex_params[i].n; k++) {
+                put(r, tex_params[i].label, iv[k]);
+                put(r, tex_params[i].label, fv[k]);
+            }
+        }
+        put_error(c, r, "glGetTexParameter");
+    }
+    G(BindTexture, GL_TEXTURE_2D, (GLuint)bound);
+    GLint mode = 0, icolour[4] = {0};
+    GLfloat fmode = 0, fcolour[4] = {0};
+    G(GetTexEnviv, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &mode);
+    G(GetTexEnvfv, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, &fmode);
+    G(GetTexEnviv, GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, icolour);
+    G(GetTexEnvfv, GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, fcolour);
+    put(r, "GL_TEXTURE_ENV_MODE", mode);
+    put(r, "GL_TEXTURE_ENV_MODE", fmode);
+    for (int k = 0; k < 4; k++) {
+        put(r, "GL_TEXTURE_ENV_COLOR", icolour[k]);
+        put(r, "GL_TEXTURE_ENV_COLOR", fcolour[k]);
+    }
+    put_error(c, r, "glGetTexEnv");
+}
+
+/* Every value a sequence ends with: the table, lights and materials, and
+ * the texture objects and environment. */
+static void dump_all(fs_context *c, rec *r)
+{
+    dump(c, r);
+    dump_lighting(c, r);
+    dump_textures(c, r);
 }
 
 /* Runs seq on OSMesa and on the model and compares every value read. */
@@ -403,8 +489,7 @@ static int compare_once(seq_fn seq)
 static void seq_initial(fs_context *c, rec *r, unsigned seed)
 {
     (void)seed;
-    dump(c, r);
-    dump_lighting(c, r);
+    dump_all(c, r);
 }
 
 /* Every variable of the table answers the four glGet commands on both
@@ -418,8 +503,7 @@ static void seq_random(fs_context *c, rec *r, unsigned seed)
 {
     unsigned s = seed;
     random_state(c, &s, r, false);
-    dump(c, r);
-    dump_lighting(c, r);
+    dump_all(c, r);
 }
 
 TEST(random_state_glget_vs_osmesa)
@@ -463,8 +547,7 @@ static void seq_push_pop(fs_context *c, rec *r, unsigned seed)
     G0(PopAttrib);
     G0(PopClientAttrib);
     put_error(c, r, "pop");
-    dump(c, r);
-    dump_lighting(c, r);
+    dump_all(c, r);
 }
 
 TEST(push_pop_restores_vs_osmesa)

@@ -791,6 +791,52 @@ void fs_exec_TexEnvfv(fs_context *c, GLenum target, GLenum pname, const GLfloat 
     tex_env(c, target, pname, v, true);
 }
 
+/* ---- the texture attribute group (6.1.14) ---- */
+
+/* The scalar fields fs_tex_params shares with fs_tex_object, by name. */
+#define FS_TEX_PARAM_FIELDS(X) \
+    X(min_filter) X(mag_filter) X(wrap_s) X(wrap_t) X(priority) X(footprint_budget) X(footprint_snap)
+
+static void params_save(const fs_tex_object *t, fs_tex_params *p)
+{
+#define FS_SAVE(f) p->f = t->f;
+    FS_TEX_PARAM_FIELDS(FS_SAVE)
+#undef FS_SAVE
+    memcpy(p->border, t->border, sizeof p->border);
+}
+
+/* Stored as they were saved, without glTexParameter's checks and counting
+ * (they passed them when set). */
+static void params_restore(fs_tex_object *t, const fs_tex_params *p)
+{
+#define FS_RESTORE(f) t->f = p->f;
+    FS_TEX_PARAM_FIELDS(FS_RESTORE)
+#undef FS_RESTORE
+    memcpy(t->border, p->border, sizeof t->border);
+    t->complete = -1; /* completeness depends on the min filter (3.8.10) */
+}
+
+void fs_texture_attrib_save(const fs_context *c, fs_texture_attrib *a)
+{
+    const struct fs_texture_state *s = c->texture;
+    a->binding_2d = s->bound->name;
+    params_save(s->bound, &a->bound);
+    params_save(&s->default_2d, &a->default_2d);
+    a->env_mode = s->env_mode;
+    memcpy(a->env_color, s->env_color, sizeof a->env_color);
+}
+
+void fs_texture_attrib_restore(fs_context *c, const fs_texture_attrib *a)
+{
+    fs_exec_BindTexture(c, GL_TEXTURE_2D, a->binding_2d);
+    struct fs_texture_state *s = c->texture;
+    if (s->bound != &s->default_2d)
+        params_restore(s->bound, &a->bound);
+    params_restore(&s->default_2d, &a->default_2d);
+    s->env_mode = a->env_mode;
+    memcpy(s->env_color, a->env_color, sizeof s->env_color);
+}
+
 /* ---- queries (GL 1.5 spec 6.1.3 texture queries, 6.1.4 GetTexImage) ----
  * Values the model does not store (the GL 1.2-1.4 LOD and level range,
  * GENERATE_MIPMAP: setting them is counted unsupported) read as their

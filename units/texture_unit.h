@@ -42,9 +42,30 @@ bool *fs_texture_enable_flag(fs_context *c, GLenum cap);
 void fs_texture_enables_changed(fs_context *c);
 /* The name of the bound 2D texture (glGet, glPushAttrib; pipeline/state.c). */
 GLuint fs_texture_binding_2d(const fs_context *c);
-/* glBindTexture's executor (texture_object.c; its prototype as the command
- * table generates it in driver/gl_call.h), for glPopAttrib. */
-void fs_exec_BindTexture(fs_context *c, GLenum target, GLuint texture);
+/* The texture unit's part of the texture attribute group (GL 1.5 spec
+ * 6.1.14, tables 6.16-6.20), for glPushAttrib(GL_TEXTURE_BIT): the 2D
+ * binding, the parameters of the object bound and of the default object
+ * (texture 0), and the texture environment.  (The GL_TEXTURE_2D enable is
+ * in the enable group too; pipeline/state.c restores it through
+ * fs_texture_enable_flag.) */
+typedef struct fs_tex_params {
+    GLenum min_filter, mag_filter, wrap_s, wrap_t;
+    float border[4], priority;
+    int footprint_budget;         /* GL_FRAGSIM_footprint_filter's parameters */
+    GLenum footprint_snap;
+} fs_tex_params;
+typedef struct fs_texture_attrib {
+    GLuint binding_2d;
+    fs_tex_params bound, default_2d;
+    GLenum env_mode;
+    float env_color[4];
+} fs_texture_attrib;
+void fs_texture_attrib_save(const fs_context *c, fs_texture_attrib *a);
+/* 6.1.14: the binding is restored first, then the parameters of the
+ * object it binds; the default object's are restored whatever is bound,
+ * as OSMesa does (measured: test_state_table's push_pop_restores_vs_osmesa,
+ * texture 0 changed while another was bound). */
+void fs_texture_attrib_restore(fs_context *c, const fs_texture_attrib *a);
 
 /* A texture object as the cycle model lays its texels out in memory
  * (rtl_model/texture_stage.c), without its internals: the object's name;
