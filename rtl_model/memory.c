@@ -12,7 +12,6 @@ void fs_cyc_mem_init(fs_cyc_mem *m, uint64_t bytes_per_cycle, uint32_t latency)
     m->bw = bytes_per_cycle ? bytes_per_cycle : 1;
     m->t = 0;
     m->latency = latency;
-    m->tap = NULL; /* no signals until fs_cycle_signals_attach */
     m->shift = -1;
     m->tap = NULL; /* cycle_signal_taps.c sets it when signals are written */
     if (!(m->bw & (m->bw - 1)))
