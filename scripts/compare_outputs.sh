@@ -20,6 +20,8 @@ if diff -r "$W/old/run" "$W/new/run" > "$W/diff.txt"; then
     echo "compare_outputs: identical to $REV ($(ls "$W/new/run" | wc -l) runs)"
 else
     head -n 60 "$W/diff.txt"
+    echo "compare_outputs: differing files:"
+    diff -rq "$W/old/run" "$W/new/run" | sed "s|$W/||g"
     echo "compare_outputs: differs from $REV" >&2
     exit 1
 fi
