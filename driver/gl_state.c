@@ -5,6 +5,7 @@
  */
 #include <math.h>
 #include <string.h>
+#include "gl_call.h"
 #include "../pipeline/context.h"
 #include "../units/occlusion_unit.h"
 #include "../units/texture_unit.h"
@@ -25,6 +26,16 @@ static void set_cap(fs_context *c, GLenum cap, bool on)
     }
     const fs_state_info *row;
     bool *flag = fs_state_cap_flag(c, cap, false, &row);
+    if (!flag && row && row->cap == FS_CAP_CLI) {
+        /* Mesa's compatibility profile takes the arrays' names in glEnable
+         * and glDisable as glEnableClientState would (measured on OSMesa;
+         * GL 1.5 lists them only under 2.8's EnableClientState). */
+        if (on)
+            fs_exec_EnableClientState(c, cap);
+        else
+            fs_exec_DisableClientState(c, cap);
+        return;
+    }
     if (!flag) {
         fs_error(c, GL_INVALID_ENUM);
         return;

@@ -295,9 +295,16 @@ static void seq_client_state(fs_context *c, rec *r)
     static const GLenum a[] = {GL_VERTEX_ARRAY, GL_NORMAL_ARRAY, GL_COLOR_ARRAY, GL_TEXTURE_COORD_ARRAY,
                                GL_EDGE_FLAG_ARRAY, GL_INDEX_ARRAY, GL_FOG_COORDINATE_ARRAY,
                                GL_SECONDARY_COLOR_ARRAY, 0x1234};
+    /* via: 0 glEnableClientState, 1 glEnable, which Mesa's compatibility
+     * profile also takes for the arrays (measured on OSMesa). */
+    for (int via = 0; via < 2; via++)
     for (int on = 1; on >= 0; on--)
         for (size_t k = 0; k < sizeof a / sizeof a[0]; k++) {
-            if (on)
+            if (on && via)
+                G(Enable, a[k]);
+            else if (via)
+                G(Disable, a[k]);
+            else if (on)
                 G(EnableClientState, a[k]);
             else
                 G(DisableClientState, a[k]);
