@@ -57,6 +57,13 @@ static inline bool fs_tile_mask_has(const fs_tile_mask *m, uint32_t tx, uint32_t
     return m->off_map(m->off_map_user, tx, ty);
 }
 
+/* Whether the mask, when on, drops the quad at window (x, y) (its tile is
+ * not masked): the rasterizer's per-quad test. */
+static inline bool fs_tile_mask_drops_quad(const fs_tile_mask *m, int x, int y)
+{
+    return m->on && !fs_tile_mask_has(m, (uint32_t)x >> m->shift, (uint32_t)y >> m->shift);
+}
+
 /* Whether a masked tile meets the window-space pixel box [x0, x1] x
  * [y0, y1] (inclusive, non-negative): the one walk of the mask over a box,
  * for the vertex stage's batch and triangle boxes and the rasterizer's

@@ -211,8 +211,7 @@ __attribute__((target("fma"))) static void emit_pixels_fma(const fs_prim_setup *
 void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
 {
     /* The observer's tile mask (observer.h): one branch in functional mode. */
-    const fs_tile_mask *tm = fs_tile_mask_active(c);
-    if (tm && !fs_tile_mask_has(tm, (uint32_t)q->x >> tm->shift, (uint32_t)q->y >> tm->shift))
+    if (c->observer && fs_tile_mask_drops_quad(&c->observer->mask, q->x, q->y))
         return;
     unsigned m = q->mask;
     q->front_facing = s->front;

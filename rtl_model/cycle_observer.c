@@ -197,8 +197,7 @@ void fs_cycle_attach(fs_cycle *cy, fs_context *c)
 
 bool fs_cycle_quad_skipped(const fs_cycle *cy, int x, int y)
 {
-    const fs_tile_mask *m = &cy->watch.mask;
-    return m->on && !fs_tile_mask_has(m, (uint32_t)x >> m->shift, (uint32_t)y >> m->shift);
+    return fs_tile_mask_drops_quad(&cy->watch.mask, x, y);
 }
 
 void fs_cycle_set_record_fn(fs_cycle *cy, fs_cycle_record_fn fn, void *user, bool draws)
