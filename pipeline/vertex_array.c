@@ -445,8 +445,8 @@ __attribute__((target("avx2,fma"))) static inline __m256i xform_mask8(const __m2
  * are false on NaN, as C's), so every bit is the same as one at a time.
  * b: the batch's bounds, for the tile mask.  Under a tile mask most
  * batches need only this pass, which was then a third of the run's time. */
-__attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out,
-                                                                 size_t n, vs_bounds *b)
+__attribute__((target("avx2,fma"), always_inline)) static inline size_t
+vs_positions8_core(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n, vs_bounds *b, const bool bounds)
 {
     enum { STRIDE = sizeof(fs_ivert) / sizeof(float) };
     _Static_assert(sizeof(fs_ivert) % sizeof(float) == 0, "fs_ivert is floats");
@@ -461,8 +461,8 @@ __attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setu
     const __m256 sy = _mm256_set1_ps(s->vp_scale[1]), ty = _mm256_set1_ps(s->vp_trans[1]);
     const __m256 sz = _mm256_set1_ps(s->vp_scale[2]), tz = _mm256_set1_ps(s->vp_trans[2]);
     const __m256 sr = _mm256_set1_ps(s->yr_scale), tr = _mm256_set1_ps(s->yr_trans);
-    __m256 x0 = _mm256_set1_ps(b->x0), x1 = _mm256_set1_ps(b->x1);
-    __m256 y0 = _mm256_set1_ps(b->y0), y1 = _mm256_set1_ps(b->y1);
+    __m256 x0 = _mm256_set1_ps(bounds ? b->x0 : 0), x1 = _mm256_set1_ps(bounds ? b->x1 : 0);
+    __m256 y0 = _mm256_set1_ps(bounds ? b->y0 : 0), y1 = _mm256_set1_ps(bounds ? b->y1 : 0);
     __m256i any = _mm256_setzero_si256(), all = _mm256_set1_epi32(-1);
     size_t k = 0;
     for (; k + 8 <= n; k += 8) {
@@ -476,13 +476,14 @@ __attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setu
         const __m256 wy = _mm256_fmadd_ps(_mm256_mul_ps(c[1], iw), sy, ty);
         const __m256 wz = _mm256_fmadd_ps(_mm256_mul_ps(c[2], iw), sz, tz);
         const __m256 wr = _mm256_fmadd_ps(_mm256_mul_ps(c[1], iw), sr, tr);
-        /* bounds_add, lane by lane */
-        any = _mm256_or_si256(any, mk);
-        all = _mm256_and_si256(all, mk);
-        x0 = _mm256_blendv_ps(x0, wx, _mm256_cmp_ps(wx, x0, _CMP_LT_OQ));
-        x1 = _mm256_blendv_ps(x1, wx, _mm256_cmp_ps(wx, x1, _CMP_GT_OQ));
-        y0 = _mm256_blendv_ps(y0, wy, _mm256_cmp_ps(wy, y0, _CMP_LT_OQ));
-        y1 = _mm256_blendv_ps(y1, wy, _mm256_cmp_ps(wy, y1, _CMP_GT_OQ));
+        if (bounds) { /* bounds_add, lane by lane */
+            any = _mm256_or_si256(any, mk);
+            all = _mm256_and_si256(all, mk);
+            x0 = _mm256_blendv_ps(x0, wx, _mm256_cmp_ps(wx, x0, _CMP_LT_OQ));
+            x1 = _mm256_blendv_ps(x1, wx, _mm256_cmp_ps(wx, x1, _CMP_GT_OQ));
+            y0 = _mm256_blendv_ps(y0, wy, _mm256_cmp_ps(wy, y0, _CMP_LT_OQ));
+            y1 = _mm256_blendv_ps(y1, wy, _mm256_cmp_ps(wy, y1, _CMP_GT_OQ));
+        }
         /* Rows clip[0..3], win[0..3] to one 8-float store per vertex. */
         const __m256 t0 = _mm256_unpacklo_ps(c[0], c[1]), t1 = _mm256_unpackhi_ps(c[0], c[1]);
         const __m256 t2 = _mm256_unpacklo_ps(c[2], c[3]), t3 = _mm256_unpackhi_ps(c[2], c[3]);
@@ -505,6 +506,8 @@ __attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setu
             out[k + (size_t)j].mask = mm[j];
         }
     }
+    if (!bounds)
+        return k;
     float bx0[8], bx1[8], by0[8], by1[8];
     uint32_t ba[8], bl[8];
     _mm256_storeu_ps(bx0, x0);
@@ -526,6 +529,20 @@ __attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setu
     }
     return k;
 }
+
+/* The two instances: with the batch's bounds for a tile mask, and without
+ * for the plain functional run, which has no use for them. */
+__attribute__((target("avx2,fma"))) static size_t vs_positions8_bounded(const fs_vs_setup *s, const fs_ivert *in,
+                                                                        fs_pvert *out, size_t n, vs_bounds *b)
+{
+    return vs_positions8_core(s, in, out, n, b, true);
+}
+
+__attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out,
+                                                                 size_t n)
+{
+    return vs_positions8_core(s, in, out, n, NULL, false);
+}
 #endif
 
 static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n,
@@ -534,9 +551,8 @@ static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *
     if (!tiles) {
         size_t i = 0;
 #if FS_VS_HAVE_FMA
-        vs_bounds unused = {0, 0, 0, 0, 0, 0};
         if (s->has_avx2)
-            i = vs_positions8(s, in, out, n, &unused);
+            i = vs_positions8(s, in, out, n);
 #endif
         for (; i < n; i++)
             vs_position(s, &in[i], &out[i]);
@@ -555,7 +571,7 @@ static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *
     size_t i = 0;
 #if FS_VS_HAVE_FMA
     if (s->has_avx2)
-        i = vs_positions8(s, in, out, n, &b);
+        i = vs_positions8_bounded(s, in, out, n, &b);
 #endif
     for (; i < n; i++) {
         vs_position(s, &in[i], &out[i]);
