@@ -7,7 +7,7 @@ The entry points are the GLAPI prototypes of Debian 12's GL/gl.h (GL 1.0-1.3
 and the ARB_imaging subset of GL 1.2, everything before its GL_ARB_multitexture
 section) and of the GL_VERSION_1_2 ... GL_VERSION_1_5 sections of GL/glext.h.
 "Exported" is `nm -D` of the shim; "executed" means the command has a row in
-driver/gl_commands*.def and a strong fs_exec_* definition in the layer
+driver/gl_commands*.def (an FS_CMD or FS_FORM row) and a strong fs_exec_* definition in the layer
 libraries (a command without one falls back to the weak stub of
 driver/dispatch.c that counts it as unsupported).
 
@@ -62,7 +62,7 @@ def entry_points():
 def table_commands():
     names = set()
     for f in sorted(glob.glob(os.path.join(ROOT, 'driver', 'gl_commands*.def'))):
-        names |= set('gl' + m for m in re.findall(r'^FS_CMD\w*\((\w+),', open(f).read(), re.M))
+        names |= set('gl' + m for m in re.findall(r'^FS_(?:CMD|FORM)\w*\((\w+),', open(f).read(), re.M))
     return names
 
 
