@@ -53,7 +53,7 @@ static int out_next;
 #define IMG_V_I 0
 #define IMG_V_B GL_FALSE
 #define IMG_V_F 1.0f
-#define IMG_V_CPTR ((const GLvoid *)in_bytes)
+#define IMG_V_BLOB ((const GLvoid *)in_bytes)
 #define IMG_V_AI in_ints
 #define IMG_V_AF in_floats
 #define IMG_V_OV ((GLvoid *)out_bytes[out_next++ % 3])
