@@ -221,7 +221,9 @@ void fs_exec_GetIntegerv(fs_context *c, GLenum pname, GLint *params)
         if (r.cls == GET_NORM) {
             params[i] = fs_norm_to_int(x);
         } else {
-            x = floor(x + 0.5);
+            /* To the nearest integer, halves away from zero, as OSMesa
+             * rounds (measured with the colour index: -2.5 gives -3). */
+            x = x < 0.0 ? ceil(x - 0.5) : floor(x + 0.5);
             params[i] = x > 2147483647.0 ? 2147483647 : x < -2147483648.0 ? (GLint)-2147483647 - 1 : (GLint)x;
         }
     }

@@ -256,7 +256,11 @@ void fs_exec_Vertex4sv(fs_context *c, const GLshort *v) { vertex4(c, v[0], v[1],
 
 /* ---- colours (table 2.9) ---- */
 #define UB2F(x) ((float)(x) / 255.0f)
-#define B2F(x) ((2.0f * (float)(x) + 1.0f) / 255.0f)
+/* Signed bytes are scaled by the float nearest 1/255, not divided by 255:
+ * the two differ in the last bit for about a third of the values, and
+ * OSMesa's current colour and normal are the product (measured,
+ * tests/test_gl_forms.c: 100 gives 0.788235366, not 0.788235307). */
+#define B2F(x) ((2.0f * (float)(x) + 1.0f) * (1.0f / 255.0f))
 #define US2F(x) ((float)(x) / 65535.0f)
 #define S2F(x) ((2.0f * (float)(x) + 1.0f) / 65535.0f)
 #define UI2F(x) ((float)((double)(x) / 4294967295.0))
@@ -335,3 +339,20 @@ void fs_exec_TexCoord2d(fs_context *c, GLdouble s, GLdouble t) { texcoord4(c, (f
 void fs_exec_TexCoord2i(fs_context *c, GLint s, GLint t) { texcoord4(c, (float)s, (float)t, 0.0f, 1.0f); }
 void fs_exec_TexCoord2fv(fs_context *c, const GLfloat *v) { texcoord4(c, v[0], v[1], 0.0f, 1.0f); }
 void fs_exec_TexCoord2dv(fs_context *c, const GLdouble *v) { texcoord4(c, (float)v[0], (float)v[1], 0.0f, 1.0f); }
+
+/* ---- the colour index (2.7): stored for glGet, the window being RGBA ---- */
+void fs_exec_Indexf(fs_context *c, GLfloat c_) { c->st.current_index = c_; }
+
+/* ---- rectangles (2.10) ----
+ * glRect(x1, y1, x2, y2) is exactly the sequence Begin(POLYGON),
+ * Vertex2(x1, y1), Vertex2(x2, y1), Vertex2(x2, y2), Vertex2(x1, y2),
+ * End(), so it takes the immediate-mode path (and gets its errors). */
+void fs_exec_Rectf(fs_context *c, GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2)
+{
+    fs_exec_Begin(c, GL_POLYGON);
+    vertex4(c, x1, y1, 0.0f, 1.0f);
+    vertex4(c, x2, y1, 0.0f, 1.0f);
+    vertex4(c, x2, y2, 0.0f, 1.0f);
+    vertex4(c, x1, y2, 0.0f, 1.0f);
+    fs_exec_End(c);
+}

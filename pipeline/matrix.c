@@ -10,6 +10,7 @@
  * rotations about a coordinate axis.
  */
 #include <math.h>
+#include <stdbool.h>
 #include <string.h>
 #include "vertex_internal.h"
 
@@ -129,6 +130,28 @@ void fs_exec_MultMatrixd(fs_context *c, const GLdouble *m)
         f[i] = (float)m[i];
     mult(c, f);
 }
+
+/* GL 1.3's transposed forms (2.11.2): LoadTransposeMatrix(m) is
+ * LoadMatrix(m^T) and MultTransposeMatrix(m) is MultMatrix(m^T), m given
+ * row by row; the double forms convert each element to float as
+ * glLoadMatrixd does. */
+static void transposed(fs_context *c, const GLfloat *mf, const GLdouble *md, bool load)
+{
+    float t[16];
+    for (int i = 0; i < 16; i++) {
+        int k = (i % 4) * 4 + i / 4;
+        t[i] = mf ? mf[k] : (float)md[k];
+    }
+    if (load)
+        fs_exec_LoadMatrixf(c, t);
+    else
+        mult(c, t);
+}
+
+void fs_exec_LoadTransposeMatrixf(fs_context *c, const GLfloat *m) { transposed(c, m, NULL, true); }
+void fs_exec_LoadTransposeMatrixd(fs_context *c, const GLdouble *m) { transposed(c, NULL, m, true); }
+void fs_exec_MultTransposeMatrixf(fs_context *c, const GLfloat *m) { transposed(c, m, NULL, false); }
+void fs_exec_MultTransposeMatrixd(fs_context *c, const GLdouble *m) { transposed(c, NULL, m, false); }
 
 void fs_exec_Translatef(fs_context *c, GLfloat x, GLfloat y, GLfloat z)
 {

@@ -49,6 +49,10 @@ typedef struct fs_stored_state {
     /* 2.6.2, table 6.5: polygon edges are drawn only in GL_LINE/GL_POINT
      * polygon mode, which is counted as unsupported. */
     bool edge_flag;              /* true */
+    /* 2.7, table 6.5 (pipeline/immediate.c): the current colour index,
+     * kept as the float glIndex gives; the window is RGBA, so it only
+     * answers glGet. */
+    float current_index;         /* 1 */
 } fs_stored_state;
 
 #endif
