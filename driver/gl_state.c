@@ -155,7 +155,9 @@ static bool get_computed(fs_context *c, GLenum pname, get_result *r)
     /* GL 1.5 spec table 6.30 and GL_FRAGSIM_occlusion_unit's New State. */
     /* GL_NUM_COMPRESSED_TEXTURE_FORMATS is 0: the list is empty. */
     case GL_COMPRESSED_TEXTURE_FORMATS: put(r, GET_ENUM, 0, v); return true;
-    case GL_RENDER_MODE: put1(r, GET_ENUM, fs_occlusion_render_mode(c)); return true;
+    case GL_RENDER_MODE:
+        put1(r, GET_ENUM, fs_render_mode_diverts(&c->rmode) ? c->rmode.mode : fs_occlusion_render_mode(c));
+        return true;
     case GL_OCCLUSION_TEST_HP: put1(r, GET_BOOL, fs_occlusion_hp_enabled(c)); return true;
     /* Reading the result clears it (GL_HP_occlusion_test). */
     case GL_OCCLUSION_TEST_RESULT_HP: put1(r, GET_BOOL, fs_occlusion_hp_take_result(c)); return true;
