@@ -82,6 +82,9 @@ struct fs_context {
      * command (driver/dispatch.c), each made on first use.  The driver sets
      * driver_free when it makes one; fs_context_destroy calls it first. */
     struct fs_dlist_state *lists;
+    /* glListBase (GL 1.5 spec 5.4), here rather than in the driver's list
+     * state so that the table's GL_LIST_BIT group saves it. */
+    GLuint list_base;
     uint64_t *unsupported_cmds;
     void (*driver_free)(fs_context *c);
     struct fs_capture *capture;   /* non-NULL while recording a trace */
