@@ -404,6 +404,19 @@ static int dispatch(fs_context *c, fs_call *call, bool in_bounds)
         local.a[pk].is_data = 0;
         return dispatch_call(c, &local);
     }
+    if ((call->cmd == FS_CMD_SelectBuffer || call->cmd == FS_CMD_FeedbackBuffer) &&
+        !call->a[call->nargs - 1].out) {
+        /* No scratch space for these outputs: GL writes them after the
+         * call.  A replayed call's buffer (FS_ARG_ADDR) is the traced
+         * program's, so nothing is written and the size is no allocation
+         * (a bad trace's 2^31 - 1); a program's NULL is its error. */
+        bool replayed = call->a[call->nargs - 1].is_data == FS_ARG_ADDR;
+        if (call->cmd == FS_CMD_SelectBuffer)
+            fs_render_mode_select_buffer(c, (GLsizei)call->a[0].i, NULL);
+        else
+            fs_render_mode_feedback_buffer(c, (GLsizei)call->a[0].i, (GLenum)call->a[1].i, NULL, replayed);
+        return 0;
+    }
     if (call->cmd == FS_CMD_OcclusionBuffers && call->a[1].is_data != 0) {
         /* glOcclusionBuffers' second argument holds addresses the unit
          * writes to at glRenderMode: data or an address from a trace are no

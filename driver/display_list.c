@@ -38,7 +38,6 @@ typedef struct fs_dlist_state {
     fs_name_map names; /* the lists held, by name */
     dl_list *building; /* between glNewList and glEndList */
     GLenum mode;
-    GLuint base;
     int depth;
     bool oom; /* out of memory while compiling: EndList raises GL_OUT_OF_MEMORY */
 } fs_dlist_state;
@@ -332,8 +331,7 @@ void fs_exec_CallLists(fs_context *c, GLsizei n, GLenum type, const GLvoid *list
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    fs_dlist_state *s = state(c);
-    GLuint base = s ? s->base : 0;
+    GLuint base = c->list_base;
     const GLubyte *b = lists;
     for (GLsizei i = 0; i < n; i++) {
         GLuint v;
@@ -387,9 +385,16 @@ void fs_exec_DeleteLists(fs_context *c, GLuint list, GLsizei range)
 
 void fs_exec_ListBase(fs_context *c, GLuint base)
 {
-    fs_dlist_state *s = state(c);
-    if (s)
-        s->base = base;
+    c->list_base = base;
+    fs_state_mark(c, GL_LIST_BIT);
+}
+
+void fs_dlist_building(const fs_context *c, GLenum *mode, GLuint *index)
+{
+    const fs_dlist_state *s = c->lists;
+    bool on = s && s->building;
+    *mode = on ? s->mode : 0;
+    *index = on ? s->building->name : 0;
 }
 
 GLboolean fs_exec_IsList(fs_context *c, GLuint list)

@@ -7,6 +7,7 @@
 #include <string.h>
 #include "gl_call.h"
 #include "../pipeline/context.h"
+#include "display_list.h"
 #include "../units/occlusion_unit.h"
 #include "../units/texture_unit.h"
 #include "../glext/GL_FRAGSIM_occlusion_unit.h"
@@ -155,7 +156,16 @@ static bool get_computed(fs_context *c, GLenum pname, get_result *r)
     /* GL 1.5 spec table 6.30 and GL_FRAGSIM_occlusion_unit's New State. */
     /* GL_NUM_COMPRESSED_TEXTURE_FORMATS is 0: the list is empty. */
     case GL_COMPRESSED_TEXTURE_FORMATS: put(r, GET_ENUM, 0, v); return true;
-    case GL_RENDER_MODE: put1(r, GET_ENUM, fs_occlusion_render_mode(c)); return true;
+    case GL_LIST_MODE: case GL_LIST_INDEX: {
+        GLenum mode;
+        GLuint index;
+        fs_dlist_building(c, &mode, &index);
+        put1(r, pname == GL_LIST_MODE ? GET_ENUM : GET_NUM, pname == GL_LIST_MODE ? mode : index);
+        return true;
+    }
+    case GL_RENDER_MODE:
+        put1(r, GET_ENUM, fs_render_mode_diverts(&c->rmode) ? c->rmode.mode : fs_occlusion_render_mode(c));
+        return true;
     case GL_OCCLUSION_TEST_HP: put1(r, GET_BOOL, fs_occlusion_hp_enabled(c)); return true;
     /* Reading the result clears it (GL_HP_occlusion_test). */
     case GL_OCCLUSION_TEST_RESULT_HP: put1(r, GET_BOOL, fs_occlusion_hp_take_result(c)); return true;

@@ -446,6 +446,10 @@ static int convert(fs_replayer *r, const fs_tcall *tc, int cmd, fs_call *call)
             break;
         case FS_K_OV: case FS_K_OF: case FS_K_OD: case FS_K_OI: case FS_K_OU: case FS_K_OB: case FS_K_OP:
             a->out = NULL; /* the dispatcher provides scratch space */
+            /* ... except to the selection and feedback buffers, written
+             * after the call: the traced program's, never ours. */
+            if (info == &fs_cmd_table[FS_CMD_SelectBuffer] || info == &fs_cmd_table[FS_CMD_FeedbackBuffer])
+                a->is_data = FS_ARG_ADDR;
             break;
         default:
             if (to_array(r, tc, kind, v, a) != 0)

@@ -10,7 +10,8 @@
  * unfused, while unclipped vertices keep the transform's fused result)
  * follow Mesa's draw module so that clipped edges land on the same
  * sub-pixel positions.  Lines are clipped by z only; their x/y extent is
- * bounded by the window (guard band, as llvmpipe does).  Points are
+ * bounded by the window (guard band, as llvmpipe does), except in selection
+ * and feedback (pipeline/render_mode.c), whose lines are clipped by all six.  Points are
  * dropped when their vertex is outside any plane (primitive.c).
  * Non-finite distances drop the primitive.
  */
@@ -112,9 +113,18 @@ static void emit3(fs_context *c, const fs_vs_setup *s, const float *const win[3]
                   const float *const tc[3], const float *flat_col2)
 {
     int side = s->two_side ? back_side(c, win[0], win[1], win[2]) : 0;
+    /* Feedback reports each vertex's own colour also under flat shading
+     * (measured on OSMesa: Mesa's feedback stage comes before flat
+     * shading would apply). */
+    if (fs_render_mode_diverts(&c->rmode))
+        flat_col2 = NULL;
     fs_rvertex r[3];
     for (int i = 0; i < 3; i++)
         to_rvertex(&r[i], win[i], (flat_col2 ? flat_col2 : col[i]) + 4 * side, tc[i]);
+    if (fs_render_mode_diverts(&c->rmode)) {
+        fs_render_mode_triangle(c, &r[0], &r[1], &r[2]);
+        return;
+    }
     fs_vs_impl *vi = fs_vs(c);
     if (vi->tri_hook)
         vi->tri_hook(vi->hook_user, &r[0], &r[1], &r[2]);
@@ -231,10 +241,15 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
 
 static void emit_line2(fs_context *c, const cvert *a, const cvert *b, const float *flat)
 {
+    if (fs_render_mode_diverts(&c->rmode))
+        flat = NULL; /* as emit3 */
     fs_rvertex r[2];
     to_rvertex(&r[0], a->win, flat ? flat : a->col[0], a->tc);
     to_rvertex(&r[1], b->win, flat ? flat : b->col[0], b->tc);
-    fs_raster_line(c, &r[0], &r[1]);
+    if (fs_render_mode_diverts(&c->rmode))
+        fs_render_mode_line(c, &r[0], &r[1]);
+    else
+        fs_raster_line(c, &r[0], &r[1]);
 }
 
 void fs_emit_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1)
@@ -252,7 +267,11 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
         fs_emit_line(c, s, v0, v1);
         return;
     }
-    if ((m & ~0xfu) == 0) {
+    /* Selection and feedback see lines clipped against every plane: Mesa
+     * runs them through a draw context of its own, which has no guard band
+     * (measured: a line leaving the window ends on its edge). */
+    const bool all_planes = fs_render_mode_diverts(&c->rmode);
+    if ((m & ~0xfu) == 0 && !all_planes) {
         /* Only x/y planes: the guard band passes the line unclipped unless
          * it cannot be projected. */
         if ((v0->clip[3] <= 0.0f && v1->clip[3] <= 0.0f) || isnan(v0->clip[0]) || isnan(v0->clip[1]) ||
@@ -277,7 +296,7 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
     }
     if (v0->mask & v1->mask)
         return;
-    unsigned zm = m & 0x30u;
+    unsigned zm = all_planes ? m : m & 0x30u;
     float t0 = 0.0f, t1 = 0.0f;
     while (zm) {
         int plane = __builtin_ctz(zm);
@@ -324,5 +343,8 @@ void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)
     r.y_raster = v->win[4];
     memcpy(r.color, v->col[0], sizeof r.color);
     memcpy(r.tex, v->tc, sizeof r.tex);
-    fs_raster_point(c, &r);
+    if (fs_render_mode_diverts(&c->rmode))
+        fs_render_mode_point(c, &r);
+    else
+        fs_raster_point(c, &r);
 }

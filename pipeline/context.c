@@ -23,6 +23,7 @@ fs_context *fs_context_create(const fs_config *cfg, int width, int height)
     fs_raster_state_init(&c->raster, (int)c->cfg.raster_subpixel_bits);
     fs_fragment_state_init(&c->frag);
     fs_vertex_stage_init(c);
+    fs_render_mode_init(c);
     fs_state_init(c); /* the initial values of GL 1.5 spec tables 6.5-6.32 */
     if (fs_texture_init(c) != 0) {
         fs_context_destroy(c);

@@ -147,7 +147,10 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
     prim_ctx p = {c, s, pv, iv, idx, s->flat ? 2 : -1, m != NULL, m && !c->raster.reference_path && !fs_vs(c)->tri_hook,
                   m && m->quiet};
     /* Only quads and quad strips split by the route (see the top). */
-    bool pipeline = false;
+    /* Selection and feedback always take the draw pipeline's route (Mesa
+     * feeds them from its draw module; measured: a quad comes out as
+     * (0,1,3),(1,2,3)). */
+    bool pipeline = fs_render_mode_diverts(&c->rmode);
     for (size_t i = 0; i < count && !pipeline && (mode == GL_QUADS || mode == GL_QUAD_STRIP); i++)
         pipeline = V(&p, i)->mask != 0;
     size_t i;

@@ -618,7 +618,7 @@ const fs_tile_mask *fs_vs_tile_mask(const fs_context *c, GLenum mode)
     if (mode < GL_TRIANGLES || mode > GL_POLYGON)
         return NULL;
     const fs_tile_mask *t = fs_tile_mask_active(c);
-    if (!t || c->raster.polygon_mode[0] != GL_FILL || c->raster.polygon_mode[1] != GL_FILL)
+    if (!t || fs_render_mode_diverts(&c->rmode) || c->raster.polygon_mode[0] != GL_FILL || c->raster.polygon_mode[1] != GL_FILL)
         return NULL;
     return t;
 }
