@@ -10,19 +10,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "check.h"
-#include "osmesa_util.h"
+#include "seeded_scenes.h"
 #include "../pipeline/context.h"
 #include "../driver/gl_call.h"
 
-typedef struct rng { uint64_t s; } rng;
-static uint32_t rnd(rng *r)
-{
-    r->s = r->s * 6364136223846793005ull + 1442695040888963407ull;
-    return (uint32_t)(r->s >> 33);
-}
-static float rndf(rng *r) { return (float)(rnd(r) & 0xffffff) / 16777216.0f; }
-static float rnd_in(rng *r, float lo, float hi) { return lo + (hi - lo) * rndf(r); }
 
 typedef struct scene {
     unsigned seed;
@@ -35,18 +26,7 @@ static void draw_scene(fs_context *c, const void *user, int w, int h)
 {
     const scene *sc = user;
     rng r = {sc->seed * 2654435761u + 7};
-    G(Viewport, 0, 0, w, h);
-    G(ClearColor, 0.05f, 0.1f, 0.15f, 1);
-    G(Clear, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    G(MatrixMode, GL_PROJECTION);
-    G0(LoadIdentity);
-    if (sc->clipped)
-        G(Frustum, -1, 1, -1, 1, 1.5, 6);
-    G(MatrixMode, GL_MODELVIEW);
-    G0(LoadIdentity);
-    if (sc->clipped)
-        G(Translatef, 0, 0, -3);
-    G(Enable, GL_DEPTH_TEST);
+    scene_view(c, w, h, sc->clipped);
     if (sc->polygons)
         G(PolygonMode, GL_FRONT_AND_BACK, GL_LINE);
     const GLenum prims[3] = {GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP};
@@ -80,57 +60,18 @@ static void draw_scene(fs_context *c, const void *user, int w, int h)
     G0(Finish);
 }
 
-static int run_scenes(scene base, unsigned first, unsigned count, long *lit)
+/* The run of scenes like `base` from seed `first` on. */
+static void check_scenes(check_state *check_st_, scene base, unsigned first, unsigned count)
 {
-    int bad = 0;
-    for (unsigned k = 0; k < count; k++) {
-        scene sc = base;
-        sc.seed = first + k;
-        osm_pair p;
-        if (!osm_pair_render(&p, 61 + (int)(k % 3) * 6, 47 + (int)(k % 2) * 6, NULL, draw_scene, &sc))
-            return -1;
-        if (p.d.differ) {
-            bad++;
-            printf("  seed %u: %ld pixels differ (max %d)\n", sc.seed, p.d.differ, p.d.maxd);
-            if (getenv("FS_LINES_DUMP")) {
-                char fn[128];
-                snprintf(fn, sizeof fn, "/tmp/lines_%u.ppm", sc.seed);
-                img_dump_ppm(fn, p.ref.color, p.c->fb.color, p.ref.w, p.ref.h, 4, true);
-            }
-        }
-        for (long i = 0; i < (long)p.ref.w * p.ref.h; i++)
-            *lit += p.ref.color[i * 4] != 13 || p.ref.color[i * 4 + 2] != 38;
-        osm_pair_close(&p);
-    }
-    return bad;
+    seeded_run r = {draw_scene, &base, &base.seed, 61, 47, 6, 6, "lines"};
+    check_seeded_runs(check_st_, &r, first, count);
 }
 
-TEST(wide_lines_vs_osmesa)
-{
-    long lit = 0;
-    int bad = run_scenes((scene){0, 9.0f, false, false}, 1, 40, &lit);
-    REQUIRE(bad >= 0);
-    CHECK_EQ_INT(bad, 0);
-    CHECK(lit > 0);
-}
+TEST(wide_lines_vs_osmesa) { check_scenes(check_st_, (scene){0, 9.0f, false, false}, 1, 40); }
 
-TEST(wide_lines_clipped_vs_osmesa)
-{
-    long lit = 0;
-    int bad = run_scenes((scene){0, 12.0f, false, true}, 100, 30, &lit);
-    REQUIRE(bad >= 0);
-    CHECK_EQ_INT(bad, 0);
-    CHECK(lit > 0);
-}
+TEST(wide_lines_clipped_vs_osmesa) { check_scenes(check_st_, (scene){0, 12.0f, false, true}, 100, 30); }
 
-TEST(wide_polygon_edges_vs_osmesa)
-{
-    long lit = 0;
-    int bad = run_scenes((scene){0, 6.0f, true, true}, 200, 30, &lit);
-    REQUIRE(bad >= 0);
-    CHECK_EQ_INT(bad, 0);
-    CHECK(lit > 0);
-}
+TEST(wide_polygon_edges_vs_osmesa) { check_scenes(check_st_, (scene){0, 6.0f, true, true}, 200, 30); }
 
 TEST_LIST = {
     TEST_ENTRY(wide_lines_vs_osmesa),

@@ -10,19 +10,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "check.h"
-#include "osmesa_util.h"
+#include "seeded_scenes.h"
 #include "../pipeline/context.h"
 #include "../driver/gl_call.h"
 
-typedef struct rng { uint64_t s; } rng;
-static uint32_t rnd(rng *r)
-{
-    r->s = r->s * 6364136223846793005ull + 1442695040888963407ull;
-    return (uint32_t)(r->s >> 33);
-}
-static float rndf(rng *r) { return (float)(rnd(r) & 0xffffff) / 16777216.0f; }
-static float rnd_in(rng *r, float lo, float hi) { return lo + (hi - lo) * rndf(r); }
 
 /* What a scene varies. */
 typedef struct scene {
@@ -41,18 +32,7 @@ static void draw_scene(fs_context *c, const void *user, int w, int h)
 {
     const scene *sc = user;
     rng r = {sc->seed * 2654435761u + 1};
-    G(Viewport, 0, 0, w, h);
-    G(ClearColor, 0.05f, 0.1f, 0.15f, 1);
-    G(Clear, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    G(MatrixMode, GL_PROJECTION);
-    G0(LoadIdentity);
-    if (sc->perspective)
-        G(Frustum, -1, 1, -1, 1, 1.5, 6);
-    G(MatrixMode, GL_MODELVIEW);
-    G0(LoadIdentity);
-    if (sc->perspective)
-        G(Translatef, 0, 0, -3);
-    G(Enable, GL_DEPTH_TEST);
+    scene_view(c, w, h, sc->perspective);
     G(DepthFunc, GL_LEQUAL);
     float extent = sc->clipped ? 1.6f : 0.95f;
     /* FS_POLYMODE_DRAWS=N keeps only draw N of each scene (to look at one). */
@@ -117,42 +97,11 @@ static void draw_scene(fs_context *c, const void *user, int w, int h)
     G0(Finish);
 }
 
-/* Runs `count` scenes; returns the number that differ. */
-static int run_scenes(scene base, unsigned first, unsigned count, long *pixels)
-{
-    int bad = 0;
-    for (unsigned k = 0; k < count; k++) {
-        scene sc = base;
-        sc.seed = first + k;
-        osm_pair p;
-        if (!osm_pair_render(&p, 64 + (int)(k % 3) * 7, 48 + (int)(k % 2) * 5, NULL, draw_scene, &sc))
-            return -1;
-        if (p.d.differ) {
-            bad++;
-            printf("  seed %u: %ld pixels differ (max %d)\n", sc.seed, p.d.differ, p.d.maxd);
-            if (getenv("FS_POLYMODE_DUMP")) {
-                char fn[128];
-                snprintf(fn, sizeof fn, "/tmp/polymode_%u.ppm", sc.seed);
-                img_dump_ppm(fn, p.ref.color, p.c->fb.color, p.ref.w, p.ref.h, 4, true);
-            }
-        }
-        long lit = 0;
-        for (long i = 0; i < (long)p.ref.w * p.ref.h; i++)
-            lit += p.ref.color[i * 4] != 13 || p.ref.color[i * 4 + 2] != 38;
-        *pixels += lit;
-        osm_pair_close(&p);
-    }
-    return bad;
-}
-
-/* Every scene of the run equal to OSMesa's, and something drawn. */
+/* The run of scenes like `base` from seed `first` on. */
 static void check_scenes(check_state *check_st_, scene base, unsigned first, unsigned count)
 {
-    long px = 0;
-    int bad = run_scenes(base, first, count, &px);
-    REQUIRE(bad >= 0);
-    CHECK_EQ_INT(bad, 0);
-    CHECK(px > 0);
+    seeded_run r = {draw_scene, &base, &base.seed, 64, 48, 7, 5, "polymode"};
+    check_seeded_runs(check_st_, &r, first, count);
 }
 
 TEST(modes_and_culling_vs_osmesa) { check_scenes(check_st_, (scene){0, false, false, false, false}, 1, 40); }
