@@ -54,10 +54,12 @@ typedef struct cvert {
     float win[5];
     float col[2][4];
     float tc[4];
+    bool edge; /* the vertex's edge flag (GL 1.5 spec 2.6.2) */
 } cvert;
 
 static void from_pvert(cvert *d, const fs_pvert *v)
 {
+    d->edge = true;
     memcpy(d->clip, v->clip, sizeof d->clip);
     memcpy(d->win, v->win, sizeof d->win);
     memcpy(d->col, v->col, sizeof d->col);
@@ -110,7 +112,7 @@ static int back_side(const fs_context *c, const float *a, const float *b, const 
 /* One triangle to the rasterizer from each vertex's window position,
  * colours (front then back, 8 floats) and texture coordinates. */
 static void emit3(fs_context *c, const fs_vs_setup *s, const float *const win[3], const float *const col[3],
-                  const float *const tc[3], const float *flat_col2)
+                  const float *const tc[3], const float *flat_col2, unsigned edges)
 {
     int side = s->two_side ? back_side(c, win[0], win[1], win[2]) : 0;
     /* Feedback reports each vertex's own colour also under flat shading
@@ -128,46 +130,75 @@ static void emit3(fs_context *c, const fs_vs_setup *s, const float *const win[3]
     fs_vs_impl *vi = fs_vs(c);
     if (vi->tri_hook)
         vi->tri_hook(vi->hook_user, &r[0], &r[1], &r[2]);
-    fs_raster_triangle(c, &r[0], &r[1], &r[2]);
+    if (edges & FS_EDGES_ROUTE)
+        fs_raster_polygon(c, &r[0], &r[1], &r[2], edges & FS_EDGES_ALL);
+    else
+        fs_raster_triangle(c, &r[0], &r[1], &r[2]);
 }
 
 static void emit_cverts(fs_context *c, const fs_vs_setup *s, const cvert *a, const cvert *b, const cvert *d,
-                        const float *flat_col2)
+                        const float *flat_col2, unsigned edges)
 {
     const float *const win[3] = {a->win, b->win, d->win};
     const float *const col[3] = {a->col[0], b->col[0], d->col[0]};
     const float *const tc[3] = {a->tc, b->tc, d->tc};
-    emit3(c, s, win, col, tc, flat_col2);
+    emit3(c, s, win, col, tc, flat_col2, edges);
+}
+
+/* The drawn edges of a triangle from its boundary-edge bits (0-2) and its
+ * vertices' edge flags (3-5): edge i starts at vertex i. */
+static inline unsigned drawn_edges(unsigned edges)
+{
+    return (edges & (edges >> 3) & FS_EDGES_ALL) | (edges & FS_EDGES_ROUTE);
 }
 
 /* An unclipped triangle goes straight from its fs_pverts, without cvert
  * copies: under a tile mask most triangles are only snapped and their
  * areas reported. */
 void fs_emit_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
-                      const fs_pvert *v1, const fs_pvert *v2, int provoking)
+                      const fs_pvert *v1, const fs_pvert *v2, int provoking, unsigned edges)
 {
     const fs_pvert *pv[3] = {v0, v1, v2};
     const float *const win[3] = {v0->win, v1->win, v2->win};
     const float *const col[3] = {v0->col[0], v1->col[0], v2->col[0]};
     const float *const tc[3] = {v0->tc, v1->tc, v2->tc};
-    emit3(c, s, win, col, tc, provoking >= 0 ? pv[provoking]->col[0] : NULL);
+    emit3(c, s, win, col, tc, provoking >= 0 ? pv[provoking]->col[0] : NULL, drawn_edges(edges));
 }
 
 #define MAX_CLIPPED 16
 
+/* Emits the clipped polygon in[0..n-1] as a fan with the first vertex
+ * last, as Mesa's clipper does for the last-vertex convention.  Edge k
+ * (in[k] -> in[k+1]) is a boundary edge when bound[k]; each fan triangle
+ * (in[i-1], in[i], in[0]) carries edge i-1 as its edge 0, the closing edge
+ * n-1 as its edge 1 (last triangle) and edge 0 as its edge 2 (first). */
+static void emit_clipped(fs_context *c, const fs_vs_setup *s, cvert *const *in, const bool *bound, unsigned n,
+                         const float *flat, unsigned route)
+{
+    for (unsigned i = 2; i < n; i++) {
+        unsigned e = (bound[i - 1] ? 1u : 0u) | (i == n - 1 && bound[n - 1] ? 2u : 0u) | (i == 2 && bound[0] ? 4u : 0u);
+        unsigned v = (in[i - 1]->edge ? 1u : 0u) | (in[i]->edge ? 2u : 0u) | (in[0]->edge ? 4u : 0u);
+        emit_cverts(c, s, in[i - 1], in[i], in[0], flat, (e & v) | route);
+    }
+}
+
 void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
-                      const fs_pvert *v1, const fs_pvert *v2, int provoking)
+                      const fs_pvert *v1, const fs_pvert *v2, int provoking, unsigned edges)
 {
     cvert store[3 + MAX_CLIPPED];
     cvert *la[MAX_CLIPPED + 1], *lb[MAX_CLIPPED + 1];
+    bool ea[MAX_CLIPPED + 1], eb[MAX_CLIPPED + 1];
     cvert **in = la, **out = lb;
+    bool *ein = ea, *eout = eb;
     int nstore = 3;
     from_pvert(&store[0], v0);
     from_pvert(&store[1], v1);
     from_pvert(&store[2], v2);
-    in[0] = &store[0];
-    in[1] = &store[1];
-    in[2] = &store[2];
+    for (int k = 0; k < 3; k++) {
+        in[k] = &store[k];
+        store[k].edge = (edges >> (3 + k)) & 1u;
+        ein[k] = (edges >> k) & 1u;
+    }
     unsigned n = 3;
     unsigned mask = v0->mask | v1->mask | v2->mask;
     const bool two = s->two_side;
@@ -188,6 +219,7 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
         }
         unsigned outn = 0;
         in[n] = in[0];
+        ein[n] = ein[0];
         for (unsigned i = 1; i <= n; i++) {
             cvert *cur = in[i];
             float dp = dot4(cur->clip, pl);
@@ -198,6 +230,7 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
             bool different;
             if (dp_prev >= 0.0f) {
                 if (outn >= MAX_CLIPPED) return;
+                eout[outn] = ein[i - 1];
                 out[outn++] = prev;
                 different = dp < 0.0f;
             } else {
@@ -206,6 +239,12 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
             if (different) {
                 if (outn >= MAX_CLIPPED || nstore >= 3 + MAX_CLIPPED) return;
                 cvert *nv = &store[nstore++];
+                /* The edge along the view volume's plane is no polygon
+                 * edge (GL 1.5 spec 2.12 keeps edge flags on the original
+                 * edges only): the vertex going out starts it with its
+                 * flag clear; one coming back in continues the clipped
+                 * edge with the outside vertex's flag (Mesa's clipper). */
+                eout[outn] = ein[i - 1];
                 out[outn++] = nv;
                 float denom = dp - dp_prev;
                 if (dp < 0.0f) {
@@ -214,11 +253,13 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
                         interp(s, nv, dp / denom, cur, prev, two);
                     else
                         interp(s, nv, -dp_prev / denom, prev, cur, two);
+                    nv->edge = false;
                 } else {
                     if (-dp_prev < dp)
                         interp(s, nv, -dp_prev / denom, prev, cur, two);
                     else
                         interp(s, nv, dp / denom, cur, prev, two);
+                    nv->edge = prev->edge;
                 }
             }
             prev = cur;
@@ -227,16 +268,16 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
         cvert **t = in;
         in = out;
         out = t;
+        bool *et = ein;
+        ein = eout;
+        eout = et;
         n = outn;
     }
     if (n < 3) {
         c->stats.triangles_rejected++;
         return;
     }
-    /* Emitted as a fan with the first vertex last, as Mesa's clipper does
-     * for the last-vertex convention. */
-    for (unsigned i = 2; i < n; i++)
-        emit_cverts(c, s, in[i - 1], in[i], in[0], provoking >= 0 ? &flat[0][0] : NULL);
+    emit_clipped(c, s, in, ein, n, provoking >= 0 ? &flat[0][0] : NULL, edges & FS_EDGES_ROUTE);
 }
 
 static void emit_line2(fs_context *c, const cvert *a, const cvert *b, const float *flat)

@@ -79,6 +79,7 @@ void fs_vertex_stage_free(fs_context *c)
     fs_vs_impl *v = fs_vs(c);
     if (v) {
         free(v->iv);
+        free(v->iv_edge);
         free(v->pv);
         free(v->idx);
         free(v->mat_seg);
@@ -139,6 +140,7 @@ void fs_exec_Begin(fs_context *c, GLenum mode)
     if (fs_vs(c)) {
         fs_vs(c)->iv_n = 0;
         fs_vs(c)->mat_seg_n = 0;
+        fs_vs(c)->iv_edge_used = false;
     }
 }
 
@@ -193,6 +195,9 @@ void fs_exec_End(fs_context *c)
         return;
     }
     fs_vs_prepare(c, &v->setup);
+    if (v->iv_edge_used)
+        v->setup.edge = v->iv_edge;
+    v->iv_edge_used = false;
     bool lazy = false;
     if (v->mat_seg_n) {
         /* Materials changed within the primitive: each run of vertices is
@@ -210,6 +215,34 @@ void fs_exec_End(fs_context *c)
     fs_prim_draw(c, &v->setup, c->prim.mode, v->pv, lazy ? v->iv : NULL, NULL, n, c->prim.list_depth > 0);
 }
 
+/* The batch's vertices get edge flags of their own (GL 1.5 spec 2.6.2),
+ * those so far true.  False when out of memory. */
+static bool vertex_edge_flags_start(fs_vs_impl *v)
+{
+    if (!grow((void **)&v->iv_edge, &v->iv_edge_cap, v->iv_n + 1, 1))
+        return false;
+    memset(v->iv_edge, 1, v->iv_n);
+    v->iv_edge_used = true;
+    return true;
+}
+
+/* Records the edge flag of the batch's next vertex: nothing while the
+ * batch has none of its own and the current flag is true.  False only
+ * when out of memory. */
+static bool vertex_edge_flag(fs_context *c, fs_vs_impl *v)
+{
+    if (!v->iv_edge_used) {
+        if (c->st.edge_flag)
+            return true;
+        if (!vertex_edge_flags_start(v))
+            return false;
+    }
+    if (!grow((void **)&v->iv_edge, &v->iv_edge_cap, v->iv_n + 1, 1))
+        return false;
+    v->iv_edge[v->iv_n] = c->st.edge_flag;
+    return true;
+}
+
 /* Appends a vertex with the current attributes (GL 1.5 spec 2.7).  Outside
  * Begin/End a vertex has no effect. */
 static void vertex4(fs_context *c, float x, float y, float z, float w)
@@ -218,6 +251,10 @@ static void vertex4(fs_context *c, float x, float y, float z, float w)
         return;
     fs_vs_impl *v = fs_vs(c);
     if (!v || !fs_vs_reserve_iv(c, v->iv_n + 1)) {
+        fs_error(c, GL_OUT_OF_MEMORY);
+        return;
+    }
+    if (!vertex_edge_flag(c, v)) {
         fs_error(c, GL_OUT_OF_MEMORY);
         return;
     }
@@ -317,10 +354,19 @@ void fs_exec_Normal3s(fs_context *c, GLshort x, GLshort y, GLshort z) { normal3(
 void fs_exec_Normal3fv(fs_context *c, const GLfloat *v) { normal3(c, v[0], v[1], v[2]); }
 void fs_exec_Normal3dv(fs_context *c, const GLdouble *v) { normal3(c, (float)v[0], (float)v[1], (float)v[2]); }
 
-/* ---- the edge flag (2.6.2; stored: polygon edges matter only in the
- * GL_LINE and GL_POINT polygon modes, counted as unsupported) ---- */
-void fs_exec_EdgeFlag(fs_context *c, GLboolean flag) { c->st.edge_flag = flag != GL_FALSE; }
-void fs_exec_EdgeFlagv(fs_context *c, const GLubyte *flag) { c->st.edge_flag = flag[0] != GL_FALSE; }
+/* ---- the edge flag (2.6.2): each vertex carries the current one; it
+ * decides the edges drawn in the GL_LINE and GL_POINT polygon modes ---- */
+static void edge_flag(fs_context *c, bool flag)
+{
+    c->st.edge_flag = flag;
+    /* Given between Begin and End, the flag is per-vertex data of the
+     * batch (Mesa's vbo makes it a vertex attribute), whatever its values. */
+    if (c->prim.inside_begin && fs_vs(c) && !fs_vs(c)->iv_edge_used)
+        vertex_edge_flags_start(fs_vs(c));
+}
+
+void fs_exec_EdgeFlag(fs_context *c, GLboolean flag) { edge_flag(c, flag != GL_FALSE); }
+void fs_exec_EdgeFlagv(fs_context *c, const GLubyte *flag) { edge_flag(c, flag[0] != GL_FALSE); }
 
 /* ---- texture coordinates ---- */
 static void texcoord4(fs_context *c, float s, float t, float r, float q)

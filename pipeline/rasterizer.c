@@ -437,11 +437,6 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     const int *idx = t.idx;
     const int64_t *x = t.x, *y = t.y;
     tri_edges e = t.e;
-    GLenum mode = r->polygon_mode[front ? 0 : 1];
-    if (mode == GL_LINE)
-        fs_unsupported(c, "glPolygonMode(GL_LINE)");
-    else if (mode == GL_POINT)
-        fs_unsupported(c, "glPolygonMode(GL_POINT)");
 
     for (int i = 0; i < 3; i++) {
         int j = (i + 1) % 3;
@@ -504,7 +499,14 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     s.height = H;
     s.use_tex = r->interpolate_tex;
     s.zoffset = 0.0f;
-    if (r->offset_fill && mode == GL_FILL && (r->offset_factor != 0.0f || r->offset_units != 0.0f)) {
+    /* llvmpipe's triangle setup offsets by the factor and units whenever
+     * any of the three offset enables is on (Mesa's state tracker passes
+     * them on only then; lp_state_setup.c reads the values, not which
+     * enable: measured on OSMesa, GL_POLYGON_OFFSET_POINT alone moves
+     * filled triangles).  On the draw-module route the offset is already
+     * in the vertices' depth (polygon_mode.c) and the setup applies none. */
+    if ((r->offset_fill || r->offset_line || r->offset_point) && !fs_raster_draw_pipeline(r) &&
+        (r->offset_factor != 0.0f || r->offset_units != 0.0f)) {
         /* GL 1.5 spec 3.5.5: o = m*factor + r*units with m the max depth
          * slope; llvmpipe (lp_do_offset_tri) takes m = max(|dz/dx|, |dz/dy|)
          * from the plane and r = 2 / (2^bits - 1) (util_get_depth_format_mrd

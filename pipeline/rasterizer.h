@@ -64,6 +64,11 @@ typedef struct fs_raster_state {
     GLenum cull_mode;           /* GL_BACK */
     GLenum front_face;          /* GL_CCW */
     bool offset_fill;           /* GL_POLYGON_OFFSET_FILL */
+    bool offset_line, offset_point; /* GL_POLYGON_OFFSET_LINE, _POINT (3.5.5) */
+    /* The draw module's offset stage decides whether to offset from the
+     * first triangle it sees after a flush (per draw here): -1 undecided,
+     * else 0 or 1 for the rest of the draw (polygon_mode.c). */
+    signed char offset_latch;
     float offset_factor, offset_units;
     GLenum polygon_mode[2];     /* front, back: GL_FILL */
     float point_size, line_width;
@@ -109,6 +114,43 @@ static inline bool fs_raster_culled(const fs_raster_state *r, bool front)
 }
 
 void fs_raster_state_init(fs_raster_state *r, int subpixel_bits);
+
+/* Whether triangles take llvmpipe's draw-module route (Mesa's
+ * lp_state_rasterizer.c hands polygon modes POINT and LINE to the draw
+ * module's pipeline stages): polygon offset and the polygon mode are then
+ * applied to the clipped triangle's vertices (pipeline/polygon_mode.c),
+ * not by the triangle setup. */
+/* The polygon mode llvmpipe uses for a face: Mesa's state tracker gives a
+ * culled face the other face's mode (so culling the face whose mode is
+ * not GL_FILL leaves the triangle setup's route). */
+static inline GLenum fs_raster_face_mode(const fs_raster_state *r, bool back)
+{
+    GLenum front_mode = r->polygon_mode[0], back_mode = r->polygon_mode[1];
+    if (r->cull_enabled && r->cull_mode != GL_BACK)
+        front_mode = back_mode;
+    if (r->cull_enabled && r->cull_mode != GL_FRONT)
+        back_mode = front_mode;
+    return back ? back_mode : front_mode;
+}
+
+static inline bool fs_raster_draw_pipeline(const fs_raster_state *r)
+{
+    return fs_raster_face_mode(r, false) != GL_FILL || fs_raster_face_mode(r, true) != GL_FILL;
+}
+
+/* Edge bits of a triangle handed to fs_raster_polygon: bit i draws edge
+ * v[i] -> v[i+1 mod 3] in GL_LINE mode and vertex v[i] in GL_POINT mode
+ * (the decomposition's boundary edges and the vertices' edge flags, GL 1.5
+ * spec 2.6.2 and 3.5.4, already combined). */
+#define FS_EDGES_ALL 7u
+/* Set in the edges the vertex stage hands on (clip.c) when the triangle
+ * takes the draw module's route to fs_raster_polygon. */
+#define FS_EDGES_ROUTE 0x40u
+/* The draw module's post-clip stages for one triangle (polygon_mode.c):
+ * facing and culling, polygon offset, then the face's polygon mode:
+ * filled, its flagged edges as lines, or its flagged vertices as points. */
+void fs_raster_polygon(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2,
+                       unsigned edges);
 
 /* Decides facing, culls, applies polygon offset and rasterizes.  Vertices are
  * in the order the primitive gave them (their winding decides facing). */

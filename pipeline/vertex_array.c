@@ -283,6 +283,7 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     fs_viewport_xform(c, s->vp_scale, s->vp_trans);
     s->has_fma = c->raster.has_fma;
     s->has_avx2 = c->raster.has_avx2;
+    s->edge = NULL;
     /* llvmpipe draws OSMesa's buffer y-down: Mesa's state tracker negates the
      * y scale and takes the translation from the framebuffer height. */
     s->yr_scale = -s->vp_scale[1];

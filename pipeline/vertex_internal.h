@@ -79,6 +79,10 @@ typedef struct fs_vs_setup {
     int cm_face_mask;   /* bit 0 front, bit 1 back: faces tracking the colour */
     GLenum cm_mode;
     bool flat;
+    /* Per-draw input: the batch vertices' edge flags (GL 1.5 spec 2.6.2),
+     * or NULL when every vertex has the current edge flag.  Reset by
+     * fs_vs_prepare. */
+    const uint8_t *edge;
 } fs_vs_setup;
 
 /* The material from batch vertex `start` on, after a glMaterial between
@@ -92,6 +96,11 @@ typedef struct fs_mat_seg {
 typedef struct fs_vs_impl {
     fs_ivert *iv;
     size_t iv_n, iv_cap;
+    /* Immediate mode: each batch vertex's edge flag, kept only once one
+     * of them is false (NULL edges until then: all true). */
+    uint8_t *iv_edge;
+    size_t iv_edge_cap;
+    bool iv_edge_used;
     /* glMaterial between Begin and End (GL 1.5 spec 2.6.3) applies to the
      * vertices that follow: the materials of the batch, in order (none
      * when the primitive changed no material). */
@@ -175,13 +184,18 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
 bool fs_prim_mode_valid(GLenum mode);
 /* clip.c */
 unsigned fs_clip_mask(const float clip[4]);
+/* edges: 0 for the triangle setup's route; on the draw module's
+ * (FS_EDGES_ROUTE set, rasterizer.h) bits 0-2 the triangle's boundary
+ * edges (edge i from vertex i to vertex i+1 mod 3, as the primitive's
+ * decomposition gives them) and bits 3-5 the three vertices' edge flags
+ * (GL 1.5 spec 2.6.2). */
 void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
-                      const fs_pvert *v1, const fs_pvert *v2, int provoking);
+                      const fs_pvert *v1, const fs_pvert *v2, int provoking, unsigned edges);
 void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1);
 /* Emits an unclipped triangle (all masks zero). provoking: index 0..2 of the
  * vertex whose colour flat shading uses, or -1 for smooth shading. */
 void fs_emit_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
-                      const fs_pvert *v1, const fs_pvert *v2, int provoking);
+                      const fs_pvert *v1, const fs_pvert *v2, int provoking, unsigned edges);
 void fs_emit_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1);
 void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v);
 /* The executors of the current attributes (immediate.c; prototypes as the
