@@ -52,15 +52,15 @@ typedef struct cvert {
     float clip[4];
     float win[5];
     float col[2][4];
-    float tc[4];
+    float tc[FS_MAX_TEXTURE_UNITS][4]; /* the first fs_vs_setup.ntex units */
 } cvert;
 
-static void from_pvert(cvert *d, const fs_pvert *v)
+static void from_pvert(const fs_vs_setup *s, cvert *d, const fs_pvert *v)
 {
     memcpy(d->clip, v->clip, sizeof d->clip);
     memcpy(d->win, v->win, sizeof d->win);
     memcpy(d->col, v->col, sizeof d->col);
-    memcpy(d->tc, v->tc, sizeof d->tc);
+    memcpy(d->tc, v->tc, (size_t)s->ntex * sizeof d->tc[0]);
 }
 
 #define LERP(t, out, in) ((out) + (t) * ((in) - (out)))
@@ -76,16 +76,17 @@ static void interp(const fs_vs_setup *s, cvert *d, float t, const cvert *out, co
     d->win[2] = d->clip[2] * oow * s->vp_scale[2] + s->vp_trans[2];
     d->win[3] = oow;
     d->win[4] = d->clip[1] * oow * s->yr_scale + s->yr_trans;
-    for (int k = 0; k < 4; k++) {
+    for (int k = 0; k < 4; k++)
         d->col[0][k] = LERP(t, out->col[0][k], in->col[0][k]);
-        d->tc[k] = LERP(t, out->tc[k], in->tc[k]);
-    }
+    for (int u = 0; u < s->ntex; u++)
+        for (int k = 0; k < 4; k++)
+            d->tc[u][k] = LERP(t, out->tc[u][k], in->tc[u][k]);
     if (two)
         for (int k = 0; k < 4; k++)
             d->col[1][k] = LERP(t, out->col[1][k], in->col[1][k]);
 }
 
-static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const float *tc)
+static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const float (*tc)[4], int ntex)
 {
     r->x = win[0];
     r->y = win[1];
@@ -93,7 +94,7 @@ static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const 
     r->inv_w = win[3];
     r->y_raster = win[4];
     memcpy(r->color, col, sizeof r->color);
-    memcpy(r->tex, tc, sizeof r->tex);
+    memcpy(r->tex, tc, (size_t)ntex * sizeof r->tex[0]);
 }
 
 /* Facing decides which colour two-sided lighting uses (2.14.1); the
@@ -109,12 +110,12 @@ static int back_side(const fs_context *c, const float *a, const float *b, const 
 /* One triangle to the rasterizer from each vertex's window position,
  * colours (front then back, 8 floats) and texture coordinates. */
 static void emit3(fs_context *c, const fs_vs_setup *s, const float *const win[3], const float *const col[3],
-                  const float *const tc[3], const float *flat_col2)
+                  const float (*const tc[3])[4], const float *flat_col2)
 {
     int side = s->two_side ? back_side(c, win[0], win[1], win[2]) : 0;
     fs_rvertex r[3];
     for (int i = 0; i < 3; i++)
-        to_rvertex(&r[i], win[i], (flat_col2 ? flat_col2 : col[i]) + 4 * side, tc[i]);
+        to_rvertex(&r[i], win[i], (flat_col2 ? flat_col2 : col[i]) + 4 * side, tc[i], s->ntex);
     fs_vs_impl *vi = fs_vs(c);
     if (vi->tri_hook)
         vi->tri_hook(vi->hook_user, &r[0], &r[1], &r[2]);
@@ -126,7 +127,7 @@ static void emit_cverts(fs_context *c, const fs_vs_setup *s, const cvert *a, con
 {
     const float *const win[3] = {a->win, b->win, d->win};
     const float *const col[3] = {a->col[0], b->col[0], d->col[0]};
-    const float *const tc[3] = {a->tc, b->tc, d->tc};
+    const float (*const tc[3])[4] = {a->tc, b->tc, d->tc};
     emit3(c, s, win, col, tc, flat_col2);
 }
 
@@ -139,7 +140,7 @@ void fs_emit_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
     const fs_pvert *pv[3] = {v0, v1, v2};
     const float *const win[3] = {v0->win, v1->win, v2->win};
     const float *const col[3] = {v0->col[0], v1->col[0], v2->col[0]};
-    const float *const tc[3] = {v0->tc, v1->tc, v2->tc};
+    const float (*const tc[3])[4] = {v0->tc, v1->tc, v2->tc};
     emit3(c, s, win, col, tc, provoking >= 0 ? pv[provoking]->col[0] : NULL);
 }
 
@@ -152,9 +153,9 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
     cvert *la[MAX_CLIPPED + 1], *lb[MAX_CLIPPED + 1];
     cvert **in = la, **out = lb;
     int nstore = 3;
-    from_pvert(&store[0], v0);
-    from_pvert(&store[1], v1);
-    from_pvert(&store[2], v2);
+    from_pvert(s, &store[0], v0);
+    from_pvert(s, &store[1], v1);
+    from_pvert(s, &store[2], v2);
     in[0] = &store[0];
     in[1] = &store[1];
     in[2] = &store[2];
@@ -229,20 +230,20 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
         emit_cverts(c, s, in[i - 1], in[i], in[0], provoking >= 0 ? &flat[0][0] : NULL);
 }
 
-static void emit_line2(fs_context *c, const cvert *a, const cvert *b, const float *flat)
+static void emit_line2(fs_context *c, const fs_vs_setup *s, const cvert *a, const cvert *b, const float *flat)
 {
     fs_rvertex r[2];
-    to_rvertex(&r[0], a->win, flat ? flat : a->col[0], a->tc);
-    to_rvertex(&r[1], b->win, flat ? flat : b->col[0], b->tc);
+    to_rvertex(&r[0], a->win, flat ? flat : a->col[0], a->tc, s->ntex);
+    to_rvertex(&r[1], b->win, flat ? flat : b->col[0], b->tc, s->ntex);
     fs_raster_line(c, &r[0], &r[1]);
 }
 
 void fs_emit_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1)
 {
     cvert a, b;
-    from_pvert(&a, v0);
-    from_pvert(&b, v1);
-    emit_line2(c, &a, &b, s->flat ? v1->col[0] : NULL);
+    from_pvert(s, &a, v0);
+    from_pvert(s, &b, v1);
+    emit_line2(c, s, &a, &b, s->flat ? v1->col[0] : NULL);
 }
 
 void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1)
@@ -261,8 +262,8 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
         if (!(v0->clip[3] > 0.0f) || !(v1->clip[3] > 0.0f))
             return; /* fragsim cannot project a w <= 0 end point */
         cvert a, b;
-        from_pvert(&a, v0);
-        from_pvert(&b, v1);
+        from_pvert(s, &a, v0);
+        from_pvert(s, &b, v1);
         for (int k = 0; k < 2; k++) {
             cvert *d = k ? &b : &a;
             float oow = 1.0f / d->clip[3];
@@ -272,7 +273,7 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
             d->win[3] = oow;
             d->win[4] = fmaf(d->clip[1] * oow, s->yr_scale, s->yr_trans);
         }
-        emit_line2(c, &a, &b, s->flat ? v1->col[0] : NULL);
+        emit_line2(c, s, &a, &b, s->flat ? v1->col[0] : NULL);
         return;
     }
     if (v0->mask & v1->mask)
@@ -297,8 +298,8 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
             return;
     }
     cvert a, b, ca, cb;
-    from_pvert(&a, v0);
-    from_pvert(&b, v1);
+    from_pvert(s, &a, v0);
+    from_pvert(s, &b, v1);
     cvert *pa = &a, *pb = &b;
     if (v0->mask) {
         interp(s, &ca, t0, &a, &b, false);
@@ -310,12 +311,11 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
     }
     if (!(pa->clip[3] > 0.0f) || !(pb->clip[3] > 0.0f))
         return;
-    emit_line2(c, pa, pb, s->flat ? v1->col[0] : NULL);
+    emit_line2(c, s, pa, pb, s->flat ? v1->col[0] : NULL);
 }
 
 void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)
 {
-    (void)s;
     fs_rvertex r;
     r.x = v->win[0];
     r.y = v->win[1];
@@ -323,6 +323,6 @@ void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)
     r.inv_w = v->win[3];
     r.y_raster = v->win[4];
     memcpy(r.color, v->col[0], sizeof r.color);
-    memcpy(r.tex, v->tc, sizeof r.tex);
+    memcpy(r.tex, v->tc, (size_t)s->ntex * sizeof r.tex[0]);
     fs_raster_point(c, &r);
 }
