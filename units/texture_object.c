@@ -45,8 +45,7 @@ int fs_texture_init(fs_context *c)
     for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
         for (int t = 0; t < FS_TEX_TARGETS; t++)
             s->unit[u].bound[t] = &s->default_obj[t];
-        /* Table 6.19: MODULATE, environment colour (0,0,0,0). */
-        s->unit[u].env.mode = GL_MODULATE;
+        fs_tex_env_init(&s->unit[u].env); /* table 6.19 */
     }
     s->next_name = 1;
     c->texture = s;
@@ -791,11 +790,8 @@ static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *val
     if (pname == GL_TEXTURE_ENV_MODE) {
         GLenum m = float_to_enum(vals[0]);
         switch (m) {
-        case GL_MODULATE: case GL_DECAL: case GL_BLEND: case GL_REPLACE: case GL_ADD:
+        case GL_MODULATE: case GL_DECAL: case GL_BLEND: case GL_REPLACE: case GL_ADD: case GL_COMBINE:
             s->mode = m;
-            return;
-        case GL_COMBINE:
-            fs_unsupported(c, "glTexEnv(GL_COMBINE)");
             return;
         default:
             fs_error(c, GL_INVALID_ENUM);
@@ -807,7 +803,11 @@ static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *val
             s->color[k] = clamp01_param(vals[k]);
         return;
     }
-    fs_error(c, GL_INVALID_ENUM);
+    GLenum err;
+    if (!fs_tex_combine_set(s, pname, vals[0], &err))
+        err = GL_INVALID_ENUM;
+    if (err != GL_NO_ERROR)
+        fs_error(c, err);
 }
 
 void fs_exec_TexEnvi(fs_context *c, GLenum target, GLenum pname, GLint param)
@@ -867,8 +867,7 @@ void fs_texture_attrib_save(const fs_context *c, fs_texture_attrib *a)
         const fs_tex_unit *tu = &s->unit[u];
         a->unit[u].binding_2d = tu->bound[FS_TEX_2D]->name;
         params_save(tu->bound[FS_TEX_2D], &a->unit[u].bound);
-        a->unit[u].env_mode = tu->env.mode;
-        memcpy(a->unit[u].env_color, tu->env.color, sizeof a->unit[u].env_color);
+        a->unit[u].env = tu->env;
     }
     params_save(&s->default_obj[FS_TEX_2D], &a->default_2d);
 }
@@ -882,8 +881,7 @@ void fs_texture_attrib_restore(fs_context *c, const fs_texture_attrib *a)
         bind_2d(c, u, a->unit[u].binding_2d);
         if (tu->bound[FS_TEX_2D] != def)
             params_restore(tu->bound[FS_TEX_2D], &a->unit[u].bound);
-        tu->env.mode = a->unit[u].env_mode;
-        memcpy(tu->env.color, a->unit[u].env_color, sizeof tu->env.color);
+        tu->env = a->unit[u].env;
     }
     params_restore(def, &a->default_2d);
     fs_texture_enables_changed(c); /* the restored parameters decide tex_pair_lod */
@@ -1062,6 +1060,8 @@ static int get_tex_env(fs_context *c, GLenum target, GLenum pname, float v[4])
         memcpy(v, s->color, 4 * sizeof *v);
         return 4;
     }
+    if (fs_tex_combine_get(s, pname, v))
+        return 1;
     fs_error(c, GL_INVALID_ENUM);
     return 0;
 }

@@ -45,11 +45,23 @@ typedef struct fs_tex_object {
  * 0).  A new target is one more name here. */
 enum fs_tex_target { FS_TEX_2D, FS_TEX_TARGETS };
 
-/* A texture unit's environment (3.8.13, table 6.19). */
-typedef struct fs_tex_env {
-    GLenum mode;
-    float color[4];
-} fs_tex_env;
+/* units/texture_combine.c: the initial environment; glTexEnv of a
+ * GL_COMBINE parameter (false: pname is none; *error GL_NO_ERROR or the
+ * error, which leaves the parameter as it was) and glGetTexEnv of one
+ * (false: pname is none). */
+void fs_tex_env_init(fs_tex_env *e);
+bool fs_tex_combine_set(fs_tex_env *e, GLenum pname, float value, GLenum *error);
+bool fs_tex_combine_get(const fs_tex_env *e, GLenum pname, float *value);
+/* What GL_COMBINE reads at one pixel: the combining unit, the units with a
+ * texel (enabled, complete) and their texels, the fragment's colour before
+ * texturing and the previous unit's result. */
+typedef struct fs_combine_inputs {
+    int unit;
+    unsigned valid;
+    const float (*texel)[4];
+    const float *primary, *previous;
+} fs_combine_inputs;
+void fs_tex_combine(const fs_tex_env *e, const fs_combine_inputs *in, float out[4]);
 
 /* One texture unit (2.7, 3.8.13): per target its enable and binding, its
  * environment.  Its coordinates and matrix stack are the vertex stage's

@@ -61,12 +61,22 @@ typedef struct fs_tex_params {
     int footprint_budget;         /* GL_FRAGSIM_footprint_filter's parameters */
     GLenum footprint_snap;
 } fs_tex_params;
+/* A texture unit's environment (3.8.13, table 6.19): the mode, the
+ * constant colour and GL_COMBINE's parameters, [0] for the RGB function,
+ * [1] for the alpha one (units/texture_combine.c). */
+typedef struct fs_tex_env {
+    GLenum mode;
+    float color[4];
+    GLenum combine[2];          /* GL_COMBINE_RGB, GL_COMBINE_ALPHA */
+    GLenum source[2][3];        /* GL_SOURCEn_RGB, GL_SOURCEn_ALPHA */
+    GLenum operand[2][3];       /* GL_OPERANDn_RGB, GL_OPERANDn_ALPHA */
+    float scale[2];             /* GL_RGB_SCALE, GL_ALPHA_SCALE */
+} fs_tex_env;
 typedef struct fs_texture_attrib {
     struct {
         GLuint binding_2d;
         fs_tex_params bound;
-        GLenum env_mode;
-        float env_color[4];
+        fs_tex_env env;
     } unit[FS_MAX_TEXTURE_UNITS];
     fs_tex_params default_2d;
 } fs_texture_attrib;
