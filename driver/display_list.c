@@ -190,7 +190,8 @@ void fs_dlist_compile(fs_context *c, const fs_call *call)
             snapshot_array(s, l, &snap->vertex, &c->arrays.vertex, c->arrays.vertex.size, lo, hi);
             snapshot_array(s, l, &snap->normal, &c->arrays.normal, 3, lo, hi);
             snapshot_array(s, l, &snap->color, &c->arrays.color, c->arrays.color.size, lo, hi);
-            snapshot_array(s, l, &snap->texcoord, &c->arrays.texcoord, c->arrays.texcoord.size, lo, hi);
+            for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
+                snapshot_array(s, l, &snap->texcoord[u], &c->arrays.texcoord[u], c->arrays.texcoord[u].size, lo, hi);
         } else {
             memset(snap, 0, sizeof *snap);
         }

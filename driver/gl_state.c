@@ -120,7 +120,10 @@ static const fs_matrix *top_matrix(const fs_context *c, GLenum which)
     switch (which) {
     case GL_MODELVIEW_MATRIX: return &c->xf.modelview[c->xf.modelview_top];
     case GL_PROJECTION_MATRIX: return &c->xf.projection[c->xf.projection_top];
-    default: return &c->xf.texture[c->xf.texture_top];
+    default: { /* the active unit's (GL 1.5 spec 2.10.2) */
+        int u = fs_active_unit(c);
+        return &c->xf.texture[u][c->xf.texture_top[u]];
+    }
     }
 }
 
@@ -149,7 +152,7 @@ static bool get_computed(fs_context *c, GLenum pname, get_result *r)
     }
     case GL_MODELVIEW_STACK_DEPTH: put1(r, GET_NUM, c->xf.modelview_top + 1); return true;
     case GL_PROJECTION_STACK_DEPTH: put1(r, GET_NUM, c->xf.projection_top + 1); return true;
-    case GL_TEXTURE_STACK_DEPTH: put1(r, GET_NUM, c->xf.texture_top + 1); return true;
+    case GL_TEXTURE_STACK_DEPTH: put1(r, GET_NUM, c->xf.texture_top[fs_active_unit(c)] + 1); return true;
     /* GL 1.5 spec table 6.15 and 6.26 (texture unit, units/texture_object.c). */
     case GL_TEXTURE_2D: put1(r, GET_BOOL, *fs_texture_enable_flag(c, pname)); return true;
     case GL_TEXTURE_BINDING_2D: put1(r, GET_NUM, fs_texture_binding_2d(c)); return true;

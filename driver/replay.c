@@ -18,6 +18,7 @@
 #include "trace.h"
 #include "callset.h"
 #include "json_text.h"
+#include "../pipeline/rasterizer.h"
 
 enum skip_kind { SKIP_UNKNOWN, SKIP_UNSAFE, SKIP_WINSYS };
 
@@ -42,8 +43,10 @@ typedef struct array_track {
     size_t bytes; /* of the last pointer call's data */
 } array_track;
 
-/* In fs_pointer_slot's order. */
-enum { ARR_VERTEX, ARR_NORMAL, ARR_COLOR, ARR_TEXCOORD, ARR_COUNT };
+/* In fs_pointer_slot's order, then one texture coordinate array per unit
+ * (GL 1.5 spec 2.8: glClientActiveTexture selects the one the pointer and
+ * client-state calls name). */
+enum { ARR_VERTEX, ARR_NORMAL, ARR_COLOR, ARR_TEXCOORD, ARR_COUNT = ARR_TEXCOORD + FS_MAX_TEXTURE_UNITS };
 
 /* What the replayer knows of buffer objects (GL 1.5 spec 2.9), to turn
  * apitrace's memcpy(dest, src, n) pseudo-calls (writes through a mapping,
@@ -73,6 +76,7 @@ struct fs_replayer {
     size_t nskips, skips_cap;
     arena_chunk *arena;
     array_track arr[ARR_COUNT];
+    int client_unit; /* glClientActiveTexture's unit */
     buffer_track buf;
     /* name -> command id, open addressing */
     struct { const char *name; int cmd; } *names;
@@ -553,13 +557,13 @@ static int convert_memcpy(fs_replayer *r, const fs_tcall *tc, fs_call *call)
 
 /* ---- client-array safety ---- */
 
-static int client_state_slot(GLenum array)
+static int client_state_slot(const fs_replayer *r, GLenum array)
 {
     switch (array) {
     case GL_VERTEX_ARRAY: return ARR_VERTEX;
     case GL_NORMAL_ARRAY: return ARR_NORMAL;
     case GL_COLOR_ARRAY: return ARR_COLOR;
-    case GL_TEXTURE_COORD_ARRAY: return ARR_TEXCOORD;
+    case GL_TEXTURE_COORD_ARRAY: return ARR_TEXCOORD + r->client_unit;
     default: return -1;
     }
 }
@@ -568,7 +572,7 @@ static int client_state_slot(GLenum array)
  * call has it: the dispatcher copies it into the context (dispatch.c). */
 static void track_pointer(fs_replayer *r, const fs_call *call, int slot, int pk)
 {
-    array_track *t = &r->arr[slot];
+    array_track *t = &r->arr[slot == ARR_TEXCOORD ? ARR_TEXCOORD + r->client_unit : slot];
     const fs_arg *p = &call->a[pk];
     t->size = slot == ARR_NORMAL ? 3 : (GLint)call->a[0].i;
     t->type = (GLenum)call->a[pk - 2].i;
@@ -817,8 +821,11 @@ static int decode_next(fs_replayer *r, fs_call *call, bool pass1, const name_inf
     int pk, slot = fs_pointer_slot(cmd, &pk);
     if (slot >= 0)
         track_pointer(r, call, slot, pk);
+    if (cmd == FS_CMD_ClientActiveTexture && call->a[0].i >= GL_TEXTURE0 &&
+        call->a[0].i < GL_TEXTURE0 + FS_MAX_TEXTURE_UNITS)
+        r->client_unit = (int)(call->a[0].i - GL_TEXTURE0); /* another unit is an error, no change */
     if (cmd == FS_CMD_EnableClientState || cmd == FS_CMD_DisableClientState) {
-        int s = client_state_slot((GLenum)call->a[0].i);
+        int s = client_state_slot(r, (GLenum)call->a[0].i);
         if (s >= 0)
             r->arr[s].enabled = cmd == FS_CMD_EnableClientState;
     }

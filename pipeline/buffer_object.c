@@ -107,11 +107,11 @@ static void unbind_everywhere(fs_context *c, GLuint name)
         A->array_buffer = 0;
     if (A->element_buffer == name)
         A->element_buffer = 0;
-    fs_client_array *arr[4] = {&A->vertex, &A->normal, &A->color, &A->texcoord};
-    for (int k = 0; k < 4; k++) {
-        if (arr[k]->buffer == name) {
-            arr[k]->buffer = 0;
-            arr[k]->bytes = 0;
+    for (int k = 0; k < FS_CLIENT_ARRAYS; k++) {
+        fs_client_array *a = fs_client_array_at(A, k);
+        if (a->buffer == name) {
+            a->buffer = 0;
+            a->bytes = 0;
         }
     }
 }
@@ -349,10 +349,9 @@ void fs_buffer_resolve_arrays(const fs_context *c, fs_array_state *out)
 {
     *out = c->arrays;
     out->element_buffer = 0; /* the indices were resolved before */
-    fs_client_array *arr[4] = {&out->vertex, &out->normal, &out->color, &out->texcoord};
-    for (int k = 0; k < 4; k++)
-        if (arr[k]->buffer)
-            resolve_array(c, arr[k]);
+    for (int k = 0; k < FS_CLIENT_ARRAYS; k++)
+        if (fs_client_array_at(out, k)->buffer)
+            resolve_array(c, fs_client_array_at(out, k));
 }
 
 const void *fs_buffer_element_data(const fs_context *c, uint64_t offset, size_t *bytes)

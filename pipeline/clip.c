@@ -53,17 +53,17 @@ typedef struct cvert {
     float clip[4];
     float win[5];
     float col[2][4];
-    float tc[4];
+    float tc[FS_MAX_TEXTURE_UNITS][4]; /* the first fs_vs_setup.ntex units */
     bool edge; /* the vertex's edge flag (GL 1.5 spec 2.6.2) */
 } cvert;
 
-static void from_pvert(cvert *d, const fs_pvert *v)
+static void from_pvert(const fs_vs_setup *s, cvert *d, const fs_pvert *v)
 {
     d->edge = true;
     memcpy(d->clip, v->clip, sizeof d->clip);
     memcpy(d->win, v->win, sizeof d->win);
     memcpy(d->col, v->col, sizeof d->col);
-    memcpy(d->tc, v->tc, sizeof d->tc);
+    memcpy(d->tc, v->tc, (size_t)s->ntex * sizeof d->tc[0]);
 }
 
 #define LERP(t, out, in) ((out) + (t) * ((in) - (out)))
@@ -79,16 +79,17 @@ static void interp(const fs_vs_setup *s, cvert *d, float t, const cvert *out, co
     d->win[2] = d->clip[2] * oow * s->vp_scale[2] + s->vp_trans[2];
     d->win[3] = oow;
     d->win[4] = d->clip[1] * oow * s->yr_scale + s->yr_trans;
-    for (int k = 0; k < 4; k++) {
+    for (int k = 0; k < 4; k++)
         d->col[0][k] = LERP(t, out->col[0][k], in->col[0][k]);
-        d->tc[k] = LERP(t, out->tc[k], in->tc[k]);
-    }
+    for (int u = 0; u < s->ntex; u++)
+        for (int k = 0; k < 4; k++)
+            d->tc[u][k] = LERP(t, out->tc[u][k], in->tc[u][k]);
     if (two)
         for (int k = 0; k < 4; k++)
             d->col[1][k] = LERP(t, out->col[1][k], in->col[1][k]);
 }
 
-static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const float *tc)
+static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const float (*tc)[4], int ntex)
 {
     r->x = win[0];
     r->y = win[1];
@@ -96,7 +97,7 @@ static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const 
     r->inv_w = win[3];
     r->y_raster = win[4];
     memcpy(r->color, col, sizeof r->color);
-    memcpy(r->tex, tc, sizeof r->tex);
+    memcpy(r->tex, tc, (size_t)ntex * sizeof r->tex[0]);
 }
 
 /* Facing decides which colour two-sided lighting uses (2.14.1); the
@@ -112,7 +113,7 @@ static int back_side(const fs_context *c, const float *a, const float *b, const 
 /* One triangle to the rasterizer from each vertex's window position,
  * colours (front then back, 8 floats) and texture coordinates. */
 static void emit3(fs_context *c, const fs_vs_setup *s, const float *const win[3], const float *const col[3],
-                  const float *const tc[3], const float *flat_col2, unsigned edges)
+                  const float (*const tc[3])[4], const float *flat_col2, unsigned edges)
 {
     int side = s->two_side ? back_side(c, win[0], win[1], win[2]) : 0;
     /* Feedback reports each vertex's own colour also under flat shading
@@ -122,7 +123,7 @@ static void emit3(fs_context *c, const fs_vs_setup *s, const float *const win[3]
         flat_col2 = NULL;
     fs_rvertex r[3];
     for (int i = 0; i < 3; i++)
-        to_rvertex(&r[i], win[i], (flat_col2 ? flat_col2 : col[i]) + 4 * side, tc[i]);
+        to_rvertex(&r[i], win[i], (flat_col2 ? flat_col2 : col[i]) + 4 * side, tc[i], s->ntex);
     if (fs_render_mode_diverts(&c->rmode)) {
         fs_render_mode_triangle(c, &r[0], &r[1], &r[2]);
         return;
@@ -141,7 +142,7 @@ static void emit_cverts(fs_context *c, const fs_vs_setup *s, const cvert *a, con
 {
     const float *const win[3] = {a->win, b->win, d->win};
     const float *const col[3] = {a->col[0], b->col[0], d->col[0]};
-    const float *const tc[3] = {a->tc, b->tc, d->tc};
+    const float (*const tc[3])[4] = {a->tc, b->tc, d->tc};
     emit3(c, s, win, col, tc, flat_col2, edges);
 }
 
@@ -161,7 +162,7 @@ void fs_emit_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
     const fs_pvert *pv[3] = {v0, v1, v2};
     const float *const win[3] = {v0->win, v1->win, v2->win};
     const float *const col[3] = {v0->col[0], v1->col[0], v2->col[0]};
-    const float *const tc[3] = {v0->tc, v1->tc, v2->tc};
+    const float (*const tc[3])[4] = {v0->tc, v1->tc, v2->tc};
     emit3(c, s, win, col, tc, provoking >= 0 ? pv[provoking]->col[0] : NULL, drawn_edges(edges));
 }
 
@@ -191,9 +192,9 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
     cvert **in = la, **out = lb;
     bool *ein = ea, *eout = eb;
     int nstore = 3;
-    from_pvert(&store[0], v0);
-    from_pvert(&store[1], v1);
-    from_pvert(&store[2], v2);
+    from_pvert(s, &store[0], v0);
+    from_pvert(s, &store[1], v1);
+    from_pvert(s, &store[2], v2);
     for (int k = 0; k < 3; k++) {
         in[k] = &store[k];
         store[k].edge = (edges >> (3 + k)) & 1u;
@@ -280,13 +281,13 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
     emit_clipped(c, s, in, ein, n, provoking >= 0 ? &flat[0][0] : NULL, edges & FS_EDGES_ROUTE);
 }
 
-static void emit_line2(fs_context *c, const cvert *a, const cvert *b, const float *flat)
+static void emit_line2(fs_context *c, const fs_vs_setup *s, const cvert *a, const cvert *b, const float *flat)
 {
     if (fs_render_mode_diverts(&c->rmode))
         flat = NULL; /* as emit3 */
     fs_rvertex r[2];
-    to_rvertex(&r[0], a->win, flat ? flat : a->col[0], a->tc);
-    to_rvertex(&r[1], b->win, flat ? flat : b->col[0], b->tc);
+    to_rvertex(&r[0], a->win, flat ? flat : a->col[0], a->tc, s->ntex);
+    to_rvertex(&r[1], b->win, flat ? flat : b->col[0], b->tc, s->ntex);
     if (fs_render_mode_diverts(&c->rmode))
         fs_render_mode_line(c, &r[0], &r[1]);
     else
@@ -296,9 +297,9 @@ static void emit_line2(fs_context *c, const cvert *a, const cvert *b, const floa
 void fs_emit_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1)
 {
     cvert a, b;
-    from_pvert(&a, v0);
-    from_pvert(&b, v1);
-    emit_line2(c, &a, &b, s->flat ? v1->col[0] : NULL);
+    from_pvert(s, &a, v0);
+    from_pvert(s, &b, v1);
+    emit_line2(c, s, &a, &b, s->flat ? v1->col[0] : NULL);
 }
 
 void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1)
@@ -321,8 +322,8 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
         if (!(v0->clip[3] > 0.0f) || !(v1->clip[3] > 0.0f))
             return; /* fragsim cannot project a w <= 0 end point */
         cvert a, b;
-        from_pvert(&a, v0);
-        from_pvert(&b, v1);
+        from_pvert(s, &a, v0);
+        from_pvert(s, &b, v1);
         for (int k = 0; k < 2; k++) {
             cvert *d = k ? &b : &a;
             float oow = 1.0f / d->clip[3];
@@ -332,7 +333,7 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
             d->win[3] = oow;
             d->win[4] = fmaf(d->clip[1] * oow, s->yr_scale, s->yr_trans);
         }
-        emit_line2(c, &a, &b, s->flat ? v1->col[0] : NULL);
+        emit_line2(c, s, &a, &b, s->flat ? v1->col[0] : NULL);
         return;
     }
     if (v0->mask & v1->mask)
@@ -357,8 +358,8 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
             return;
     }
     cvert a, b, ca, cb;
-    from_pvert(&a, v0);
-    from_pvert(&b, v1);
+    from_pvert(s, &a, v0);
+    from_pvert(s, &b, v1);
     cvert *pa = &a, *pb = &b;
     if (v0->mask) {
         interp(s, &ca, t0, &a, &b, false);
@@ -370,12 +371,11 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
     }
     if (!(pa->clip[3] > 0.0f) || !(pb->clip[3] > 0.0f))
         return;
-    emit_line2(c, pa, pb, s->flat ? v1->col[0] : NULL);
+    emit_line2(c, s, pa, pb, s->flat ? v1->col[0] : NULL);
 }
 
 void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)
 {
-    (void)s;
     fs_rvertex r;
     r.x = v->win[0];
     r.y = v->win[1];
@@ -383,7 +383,7 @@ void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)
     r.inv_w = v->win[3];
     r.y_raster = v->win[4];
     memcpy(r.color, v->col[0], sizeof r.color);
-    memcpy(r.tex, v->tc, sizeof r.tex);
+    memcpy(r.tex, v->tc, (size_t)s->ntex * sizeof r.tex[0]);
     if (fs_render_mode_diverts(&c->rmode))
         fs_render_mode_point(c, &r);
     else

@@ -61,7 +61,7 @@ void fs_context_destroy(fs_context *c)
     fs_vertex_stage_free(c);
     fs_framebuffer_free(&c->fb);
     free(c->scratch);
-    for (int i = 0; i < 4; i++)
+    for (size_t i = 0; i < sizeof c->array_copy / sizeof c->array_copy[0]; i++)
         for (int k = 0; k < 2; k++)
             free(c->array_copy[i].buf[k]);
     free(c);

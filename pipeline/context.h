@@ -112,9 +112,10 @@ struct fs_context {
     void *scratch;                /* output buffer for replayed glGet and glReadPixels */
     size_t scratch_size;
     /* Copies of the array data replayed pointer calls carry, two per array
-     * (vertex, normal, colour, texcoord): a call GL rejects must not
-     * overwrite the copy the array still points at (driver/dispatch.c). */
-    struct { void *buf[2]; size_t cap[2]; } array_copy[4];
+     * (vertex, normal, colour, the texcoord array of each texture unit): a
+     * call GL rejects must not overwrite the copy the array still points
+     * at (driver/dispatch.c). */
+    struct { void *buf[2]; size_t cap[2]; } array_copy[3 + FS_MAX_TEXTURE_UNITS];
 };
 
 /* Creates a context with a width x height framebuffer (cfg may be NULL for

@@ -18,7 +18,8 @@ void fs_vertex_stage_init(fs_context *c)
     x->matrix_mode = GL_MODELVIEW;
     fs_mat_identity(x->modelview[0].m);
     fs_mat_identity(x->projection[0].m);
-    fs_mat_identity(x->texture[0].m);
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
+        fs_mat_identity(x->texture[u][0].m);
     /* The viewport becomes the framebuffer size at the first draw unless
      * glViewport comes first (viewport.c). */
     x->depth_range[0] = 0.0;
@@ -57,7 +58,8 @@ void fs_vertex_stage_init(fs_context *c)
     memset(&c->current, 0, sizeof c->current);
     c->current.color[0] = c->current.color[1] = c->current.color[2] = c->current.color[3] = 1.0f;
     c->current.normal[2] = 1.0f;
-    c->current.texcoord[3] = 1.0f;
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
+        c->current.texcoord[u][3] = 1.0f;
 
     memset(&c->arrays, 0, sizeof c->arrays);
     c->arrays.vertex.size = 4;
@@ -66,8 +68,10 @@ void fs_vertex_stage_init(fs_context *c)
     c->arrays.normal.type = GL_FLOAT;
     c->arrays.color.size = 4;
     c->arrays.color.type = GL_FLOAT;
-    c->arrays.texcoord.size = 4;
-    c->arrays.texcoord.type = GL_FLOAT;
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
+        c->arrays.texcoord[u].size = 4;
+        c->arrays.texcoord[u].type = GL_FLOAT;
+    }
 
     free(c->prim.impl);
     memset(&c->prim, 0, sizeof c->prim);
@@ -262,7 +266,9 @@ static void vertex4(fs_context *c, float x, float y, float z, float w)
     o->obj[0] = x; o->obj[1] = y; o->obj[2] = z; o->obj[3] = w;
     memcpy(o->col, c->current.color, sizeof o->col);
     memcpy(o->nrm, c->current.normal, sizeof o->nrm);
-    memcpy(o->tc, c->current.texcoord, sizeof o->tc);
+    /* The units the draw reads (fs_raster_state.tex_units; enables do not
+     * change between Begin and End, 2.6.3). */
+    memcpy(o->tc, c->current.texcoord, (size_t)c->raster.tex_units * sizeof o->tc[0]);
     c->prim.count++;
 }
 
@@ -368,14 +374,18 @@ static void edge_flag(fs_context *c, bool flag)
 void fs_exec_EdgeFlag(fs_context *c, GLboolean flag) { edge_flag(c, flag != GL_FALSE); }
 void fs_exec_EdgeFlagv(fs_context *c, const GLubyte *flag) { edge_flag(c, flag[0] != GL_FALSE); }
 
-/* ---- texture coordinates ---- */
-static void texcoord4(fs_context *c, float s, float t, float r, float q)
+/* ---- texture coordinates (2.7): glTexCoord sets unit 0's, glMultiTexCoord
+ * (texture_coords.c) those of any unit ---- */
+void fs_current_texcoord(fs_context *c, int unit, float s, float t, float r, float q)
 {
-    c->current.texcoord[0] = s;
-    c->current.texcoord[1] = t;
-    c->current.texcoord[2] = r;
-    c->current.texcoord[3] = q;
+    float *v = c->current.texcoord[unit];
+    v[0] = s;
+    v[1] = t;
+    v[2] = r;
+    v[3] = q;
 }
+
+static void texcoord4(fs_context *c, float s, float t, float r, float q) { fs_current_texcoord(c, 0, s, t, r, q); }
 
 void fs_exec_TexCoord1f(fs_context *c, GLfloat s) { texcoord4(c, s, 0.0f, 0.0f, 1.0f); }
 void fs_exec_TexCoord2f(fs_context *c, GLfloat s, GLfloat t) { texcoord4(c, s, t, 0.0f, 1.0f); }

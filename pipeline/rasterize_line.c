@@ -230,6 +230,7 @@ void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
     s.front = true;
     s.height = H;
     s.use_tex = r->interpolate_tex;
+    s.tex_mask = r->tex_mask;
     s.zoffset = 0.0f;
     line_coef(&s.z, &li, va->z, vb->z);
     s.perspective = !(va->inv_w == 1.0f && vb->inv_w == 1.0f);
@@ -244,12 +245,13 @@ void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
             line_coef(&s.color[k], &li, va->color[k] * va->inv_w, vb->color[k] * vb->inv_w);
         else
             line_coef(&s.color[k], &li, va->color[k], vb->color[k]);
-        if (s.use_tex) {
-            if (s.perspective)
-                line_coef(&s.tex[k], &li, va->tex[k] * va->inv_w, vb->tex[k] * vb->inv_w);
-            else
-                line_coef(&s.tex[k], &li, va->tex[k], vb->tex[k]);
-        }
+        if (s.use_tex)
+            FS_FOR_EACH_UNIT(u, s.tex_mask) {
+                if (s.perspective)
+                    line_coef(&s.tex[u][k], &li, va->tex[u][k] * va->inv_w, vb->tex[u][k] * vb->inv_w);
+                else
+                    line_coef(&s.tex[u][k], &li, va->tex[u][k], vb->tex[u][k]);
+            }
     }
     fs_raster_planes(c, &s, &e);
 }

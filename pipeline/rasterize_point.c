@@ -63,6 +63,7 @@ void fs_raster_point(fs_context *c, const fs_rvertex *v)
     s.front = true;
     s.height = H;
     s.use_tex = r->interpolate_tex;
+    s.tex_mask = r->tex_mask;
     s.zoffset = 0.0f;
     fs_plane_constant(&s.z, v->z);
     /* Perspective-correct constants are stored premultiplied by 1/w and
@@ -74,7 +75,8 @@ void fs_raster_point(fs_context *c, const fs_rvertex *v)
     for (int k = 0; k < 4; k++) {
         fs_plane_constant(&s.color[k], s.perspective && !s.color_constant ? v->color[k] * v->inv_w : v->color[k]);
         if (s.use_tex)
-            fs_plane_constant(&s.tex[k], s.perspective ? v->tex[k] * v->inv_w : v->tex[k]);
+            FS_FOR_EACH_UNIT(u, s.tex_mask)
+                fs_plane_constant(&s.tex[u][k], s.perspective ? v->tex[u][k] * v->inv_w : v->tex[u][k]);
     }
     fs_raster_planes(c, &s, &e);
 }

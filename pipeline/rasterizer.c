@@ -54,6 +54,8 @@ void fs_raster_state_init(fs_raster_state *r, int subpixel_bits)
     r->line_width = 1.0f;
     r->subpixel_bits = subpixel_bits < 1 ? 8 : subpixel_bits > 12 ? 12 : subpixel_bits;
     r->interpolate_tex = false;
+    r->tex_mask = 0;
+    r->tex_units = 1;
     r->reference_path = false;
     r->use_y_raster = false;
 #if FS_RASTER_HAVE_FMA
@@ -134,10 +136,10 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
         if (s->perspective) {                                                     \
             float oow_ = 1.0f / PLANE_AT(&s->w, px, py);                          \
             for (int k_ = 0; k_ < 4; k_++)                                        \
-                out_[k_] = PLANE_AT(&s->tex[k_], px, py) * oow_;                  \
+                out_[k_] = PLANE_AT(&s->tex[u][k_], px, py) * oow_;               \
         } else {                                                                  \
             for (int k_ = 0; k_ < 4; k_++)                                        \
-                out_[k_] = PLANE_AT(&s->tex[k_], px, py);                         \
+                out_[k_] = PLANE_AT(&s->tex[u][k_], px, py);                      \
         }                                                                         \
     } while (0)
 
@@ -164,29 +166,32 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
     }                                                                             \
     /* Texture coordinates of all four pixels, covered or not: lambda comes \
      * from the quad's differences (GL 1.5 spec 3.8.8; llvmpipe shades   \
-     * whole quads). */                                                          \
+     * whole quads), for each enabled unit. */                                   \
     if (s->use_tex)                                                               \
-        for (int i = 0; i < 4; i++) {                                             \
-            float px = (float)(q->x + (i & 1));                                   \
-            float py = (float)fs_raster_row_to_gl(s->height, q->y + (i >> 1));    \
-            FS_TEX_AT(PLANE_AT, px, py, q->tex[i]);                               \
-        }                                                                         \
-    /* Odd heights: the rows that complete llvmpipe's quads (fs_quad). */     \
-    if (s->use_tex && (s->height & 1))                                            \
-        for (int i = 0; i < 4; i++) {                                             \
-            float px = (float)(q->x + (i & 1));                                   \
-            int gy = i < 2 ? q->y - 1 : q->y + 2;                                 \
-            float py = (float)fs_raster_row_to_gl(s->height, gy);                 \
-            FS_TEX_AT(PLANE_AT, px, py, i < 2 ? q->tex_below[i & 1] : q->tex_above[i & 1]); \
-        }                                                                         \
-    /* The quad sharing llvmpipe's vector, when texturing asks (fs_quad). */  \
-    if (s->use_tex && tex_pair)                                                   \
-        for (int r = (s->height & 1) ? 0 : 1; r < ((s->height & 1) ? 4 : 3); r++) \
-            for (int j = 0; j < 2; j++) {                                         \
-                float px = (float)((q->x ^ 2) + j);                               \
-                float py = (float)fs_raster_row_to_gl(s->height, q->y - 1 + r);   \
-                FS_TEX_AT(PLANE_AT, px, py, q->tex_pair[r][j]);                   \
-            }
+        FS_FOR_EACH_UNIT(u, s->tex_mask) {                                        \
+            fs_quad_tex *qt = &q->unit[u];                                        \
+            for (int i = 0; i < 4; i++) {                                         \
+                float px = (float)(q->x + (i & 1));                               \
+                float py = (float)fs_raster_row_to_gl(s->height, q->y + (i >> 1)); \
+                FS_TEX_AT(PLANE_AT, px, py, qt->tex[i]);                          \
+            }                                                                     \
+            /* Odd heights: the rows that complete llvmpipe's quads (fs_quad). */ \
+            if (s->height & 1)                                                    \
+                for (int i = 0; i < 4; i++) {                                     \
+                    float px = (float)(q->x + (i & 1));                           \
+                    int gy = i < 2 ? q->y - 1 : q->y + 2;                         \
+                    float py = (float)fs_raster_row_to_gl(s->height, gy);         \
+                    FS_TEX_AT(PLANE_AT, px, py, i < 2 ? qt->tex_below[i & 1] : qt->tex_above[i & 1]); \
+                }                                                                 \
+            /* The quad sharing llvmpipe's vector, when texturing asks (fs_quad). */ \
+            if (tex_pair)                                                         \
+                for (int r = (s->height & 1) ? 0 : 1; r < ((s->height & 1) ? 4 : 3); r++) \
+                    for (int j = 0; j < 2; j++) {                                 \
+                        float px = (float)((q->x ^ 2) + j);                       \
+                        float py = (float)fs_raster_row_to_gl(s->height, q->y - 1 + r); \
+                        FS_TEX_AT(PLANE_AT, px, py, qt->tex_pair[r][j]);          \
+                    }                                                             \
+        }
 
 static void emit_pixels(const fs_prim_setup *s, fs_quad *q, unsigned m, int depth_bits, bool tex_pair)
 {
@@ -498,6 +503,7 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     s.front = front;
     s.height = H;
     s.use_tex = r->interpolate_tex;
+    s.tex_mask = r->tex_mask;
     s.zoffset = 0.0f;
     /* llvmpipe's triangle setup offsets by the factor and units whenever
      * any of the three offset enables is on (Mesa's state tracker passes
@@ -538,18 +544,21 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
             calc_coef(&s.color[k], &g, ca, cb, cd);
         }
         if (s.use_tex)
-            for (int k = 0; k < 4; k++) {
-                float ta = a->tex[k] * a->inv_w, tb = b->tex[k] * b->inv_w, td = d->tex[k] * d->inv_w;
-                calc_coef(&s.tex[k], &g, ta, tb, td);
-            }
+            FS_FOR_EACH_UNIT(u, s.tex_mask)
+                for (int k = 0; k < 4; k++) {
+                    float ta = a->tex[u][k] * a->inv_w, tb = b->tex[u][k] * b->inv_w;
+                    float td = d->tex[u][k] * d->inv_w;
+                    calc_coef(&s.tex[u][k], &g, ta, tb, td);
+                }
     } else {
         /* With every 1/w equal to 1, llvmpipe's multiply by 1/w and divide by
          * the interpolated 1/w (exactly 1) change nothing. */
         for (int k = 0; k < 4 && !s.color_constant; k++)
             calc_coef(&s.color[k], &g, a->color[k], b->color[k], d->color[k]);
         if (s.use_tex)
-            for (int k = 0; k < 4; k++)
-                calc_coef(&s.tex[k], &g, a->tex[k], b->tex[k], d->tex[k]);
+            FS_FOR_EACH_UNIT(u, s.tex_mask)
+                for (int k = 0; k < 4; k++)
+                    calc_coef(&s.tex[u][k], &g, a->tex[u][k], b->tex[u][k], d->tex[u][k]);
     }
 
     c->stats.triangles_rasterized++;

@@ -19,12 +19,25 @@
 
 typedef struct fs_context fs_context;
 
+/* GL_MAX_TEXTURE_UNITS: the fixed-function texture units, as llvmpipe's
+ * compatibility context reports them (measured on OSMesa: GL_MAX_TEXTURE_UNITS
+ * and GL_MAX_TEXTURE_COORDS 8).  Each has its own coordinates, matrix
+ * stack, binding and environment (GL 1.5 spec 2.7, 2.10.2, 3.8.13). */
+#define FS_MAX_TEXTURE_UNITS 8
+/* Runs the statement after it with u = each set bit of mask, lowest first
+ * (texturing applies unit after unit, 3.8.13). */
+#define FS_FOR_EACH_UNIT(u, mask)                                                   \
+    for (unsigned u##_left_ = (mask), u = 0; u##_left_ && ((u = (unsigned)__builtin_ctz(u##_left_)), 1); \
+         u##_left_ &= u##_left_ - 1)
+
 typedef struct fs_rvertex {
     float x, y;     /* window coordinates in pixels, GL y-up */
     float z;        /* window depth in [0,1] (after glDepthRange) */
     float inv_w;    /* 1 / clip w, for perspective-correct interpolation */
     float color[4]; /* RGBA, clamped to [0,1] */
-    float tex[4];   /* s, t, r, q of texture unit 0 (after the texture matrix) */
+    /* s, t, r, q of each texture unit (after its texture matrix); only the
+     * units below fs_raster_state.tex_units are set. */
+    float tex[FS_MAX_TEXTURE_UNITS][4];
     /* Optional, read only when fs_raster_state.use_y_raster is set: the
      * window y in llvmpipe's y-down frame exactly as llvmpipe computes it,
      * fma(y_ndc, -height/2, fb_height - (viewport_y + height/2)).  Deriving
@@ -34,13 +47,8 @@ typedef struct fs_rvertex {
     float y_raster;
 } fs_rvertex;
 
-/* Pixel i of a quad: 0 = (x,y), 1 = (x+1,y), 2 = (x,y+1), 3 = (x+1,y+1). */
-typedef struct fs_quad {
-    int x, y;           /* lower-left pixel; both even */
-    unsigned mask;      /* bit i set: pixel i is covered */
-    bool front_facing;
-    uint32_t z[4];      /* depth in the depth buffer's fixed-point units */
-    float color[4][4];  /* [pixel][rgba] in [0,1] */
+/* One texture unit's coordinates in a quad. */
+typedef struct fs_quad_tex {
     float tex[4][4];    /* [pixel][strq], interpolated perspective-correctly (not divided by q) */
     /* Only when the framebuffer height is odd: strq of the two pixels of
      * the row below the quad (y - 1) and above it (y + 2).  llvmpipe's 2x2
@@ -55,6 +63,18 @@ typedef struct fs_quad {
      * y + 2 only for odd heights).  Its lambda decides how llvmpipe's
      * float path samples this quad (units/texture_sample.c). */
     float tex_pair[4][2][4];
+} fs_quad_tex;
+
+/* Pixel i of a quad: 0 = (x,y), 1 = (x+1,y), 2 = (x,y+1), 3 = (x+1,y+1). */
+typedef struct fs_quad {
+    int x, y;           /* lower-left pixel; both even */
+    unsigned mask;      /* bit i set: pixel i is covered */
+    bool front_facing;
+    uint32_t z[4];      /* depth in the depth buffer's fixed-point units */
+    float color[4][4];  /* [pixel][rgba] in [0,1] */
+    /* The coordinates of the texture units in fs_raster_state.tex_mask
+     * (the others are left unset). */
+    fs_quad_tex unit[FS_MAX_TEXTURE_UNITS];
 } fs_quad;
 
 /* Rasterizer state set by glCullFace, glFrontFace, glPolygonOffset,
@@ -75,8 +95,13 @@ typedef struct fs_raster_state {
     int subpixel_bits;          /* from the config, default 8 */
     /* Set by texturing when a texture unit is enabled: interpolating the four
      * texture coordinates costs as much as the colour, so it is skipped
-     * while nothing reads them (fs_quad.tex is then left unset). */
+     * while nothing reads them (fs_quad.unit is then left unset).
+     * tex_mask: bit u for each enabled unit u, whose coordinates the
+     * rasterizer interpolates; tex_units: 1 + the highest enabled unit (at
+     * least 1), the units whose coordinates the vertex stage carries. */
     bool interpolate_tex;
+    unsigned tex_mask;
+    int tex_units;
     /* Set by texturing when fs_quad.tex_pair is needed (see there). */
     bool tex_pair_lod;
     /* Selects the plain per-pixel reference rasterizer instead of the

@@ -24,11 +24,13 @@ typedef struct fs_plane {
 } fs_plane;
 
 typedef struct fs_prim_setup {
-    fs_plane z, w, color[4], tex[4];
+    fs_plane z, w, color[4];
+    fs_plane tex[FS_MAX_TEXTURE_UNITS][4]; /* the units in tex_mask */
     float zoffset;       /* polygon offset, added after interpolation */
     bool perspective;    /* false when every 1/w is 1: the division is exact then */
     bool color_constant; /* flat shading: colour planes constant, not divided by 1/w */
     bool use_tex;        /* interpolate texture coordinates */
+    unsigned tex_mask;   /* of these units (fs_raster_state.tex_mask) */
     bool front;
     int height;          /* framebuffer height, for the y flip */
 } fs_prim_setup;

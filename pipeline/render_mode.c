@@ -180,7 +180,7 @@ static void feedback_vertex(const fs_context *c, fs_render_mode_state *s, const 
             feedback_value(s, v->color[k]);
     if (t == GL_3D_COLOR_TEXTURE || t == GL_4D_COLOR_TEXTURE)
         for (int k = 0; k < 4; k++)
-            feedback_value(s, v->tex[k]);
+            feedback_value(s, v->tex[0][k]); /* unit 0's (GL 1.5 spec 5.3) */
 }
 
 void fs_render_mode_feedback_buffer(fs_context *c, GLsizei size, GLenum type, GLfloat *buffer, bool untracked)

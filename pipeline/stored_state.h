@@ -1,8 +1,7 @@
 /*
  * State fragsim stores for glGet and glPushAttrib (pipeline/state.def) but
  * does not model yet: what uses it (fog, stippled lines, the accumulation
- * buffer, colour index mode, glDrawPixels' zoom, multisampling, several
- * texture units) is absent or counted as unsupported where it would change
+ * buffer, colour index mode, glDrawPixels' zoom, multisampling) is absent or counted as unsupported where it would change
  * the image.  Each part has the file of its commands.
  */
 #ifndef FS_STORED_STATE_H
@@ -44,7 +43,9 @@ typedef struct fs_stored_state {
     bool sample_coverage_invert; /* false */
     /* 3.9, table 6.10: GL_COLOR_SUM, with a secondary colour of zero. */
     bool color_sum;
-    /* 2.7, table 6.5 (pipeline/texture_select.c): the one texture unit. */
+    /* 2.7, table 6.5 (pipeline/texture_select.c): the units glActiveTexture
+     * and glClientActiveTexture select (read as indices through
+     * fs_active_unit and fs_client_active_unit, vertex_stage.h). */
     GLenum active_texture, client_active_texture; /* GL_TEXTURE0 */
     /* 2.6.2, table 6.5: polygon edges are drawn only in GL_LINE/GL_POINT
      * polygon mode, which is counted as unsupported. */

@@ -101,7 +101,7 @@ void fs_exec_TexCoordPointer(fs_context *c, GLint size, GLenum type, GLsizei str
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    set_array(c, &c->arrays.texcoord, size, type, stride, pointer);
+    set_array(c, &c->arrays.texcoord[fs_client_active_unit(c)], size, type, stride, pointer);
 }
 
 static fs_client_array *array_of(fs_context *c, GLenum array)
@@ -110,7 +110,7 @@ static fs_client_array *array_of(fs_context *c, GLenum array)
     case GL_VERTEX_ARRAY: return &c->arrays.vertex;
     case GL_NORMAL_ARRAY: return &c->arrays.normal;
     case GL_COLOR_ARRAY: return &c->arrays.color;
-    case GL_TEXTURE_COORD_ARRAY: return &c->arrays.texcoord;
+    case GL_TEXTURE_COORD_ARRAY: return &c->arrays.texcoord[fs_client_active_unit(c)];
     default: return NULL;
     }
 }
@@ -238,7 +238,7 @@ static void fetch_positions(const fs_context *c, size_t first, size_t n, fs_iver
 
 /* Its other attributes from the enabled arrays, the current values
  * elsewhere. */
-static void fetch_attributes(const fs_context *c, size_t i, fs_ivert *o)
+static void fetch_attributes(const fs_context *c, size_t i, fs_ivert *o, int ntex)
 {
     const fs_array_state *A = &c->arrays;
     if (A->color.enabled) {
@@ -254,19 +254,21 @@ static void fetch_attributes(const fs_context *c, size_t i, fs_ivert *o)
     } else {
         memcpy(o->nrm, c->current.normal, sizeof o->nrm);
     }
-    if (A->texcoord.enabled) {
-        o->tc[0] = o->tc[1] = o->tc[2] = 0.0f;
-        o->tc[3] = 1.0f;
-        fetch(&A->texcoord, i, o->tc, false);
-    } else {
-        memcpy(o->tc, c->current.texcoord, sizeof o->tc);
+    for (int u = 0; u < ntex; u++) {
+        if (A->texcoord[u].enabled) {
+            o->tc[u][0] = o->tc[u][1] = o->tc[u][2] = 0.0f;
+            o->tc[u][3] = 1.0f;
+            fetch(&A->texcoord[u], i, o->tc[u], false);
+        } else {
+            memcpy(o->tc[u], c->current.texcoord[u], sizeof o->tc[u]);
+        }
     }
 }
 
 static void fetch_vertex(const fs_context *c, size_t i, fs_ivert *o)
 {
     fetch_position(c, i, o);
-    fetch_attributes(c, i, o);
+    fetch_attributes(c, i, o, c->raster.tex_units);
 }
 
 /* ---- transformation ---- */
@@ -276,10 +278,13 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     const float *mv = x->modelview[x->modelview_top].m;
     memcpy(s->mv, mv, sizeof s->mv);
     fs_mat_mul(s->mvp, x->projection[x->projection_top].m, mv);
-    memcpy(s->tex, x->texture[x->texture_top].m, sizeof s->tex);
     float id[16];
     fs_mat_identity(id);
-    s->tex_identity = memcmp(s->tex, id, sizeof id) == 0;
+    s->ntex = c->raster.tex_units;
+    for (int u = 0; u < s->ntex; u++) {
+        memcpy(s->tex[u], x->texture[u][x->texture_top[u]].m, sizeof s->tex[u]);
+        s->tex_identity[u] = memcmp(s->tex[u], id, sizeof id) == 0;
+    }
     fs_viewport_xform(c, s->vp_scale, s->vp_trans);
     s->has_fma = c->raster.has_fma;
     s->has_avx2 = c->raster.has_avx2;
@@ -351,10 +356,12 @@ static inline void vs_attributes(const fs_vs_setup *s, const fs_ivert *v, fs_pve
         for (int k = 0; k < 4; k++)
             o->col[0][k] = clamp01(v->col[k]);
     }
-    if (s->tex_identity)
-        memcpy(o->tc, v->tc, sizeof o->tc);
-    else
-        fs_mat_xform4(o->tc, s->tex, v->tc);
+    for (int u = 0; u < s->ntex; u++) {
+        if (s->tex_identity[u])
+            memcpy(o->tc[u], v->tc[u], sizeof o->tc[u]);
+        else
+            fs_mat_xform4(o->tc[u], s->tex[u], v->tc[u]);
+    }
 }
 
 /* A box edge as a pixel within [0, 65536] (compares, not fminf/fmaxf,
@@ -381,7 +388,7 @@ void fs_vs_attributes(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pver
 {
     const fs_vs_impl *v = fs_vs(c);
     if (v->deferred)
-        fetch_attributes(c, v->src_indices ? index_at(v->src_indices, v->src_type, k) : v->src_first + k, &iv[k]);
+        fetch_attributes(c, v->src_indices ? index_at(v->src_indices, v->src_type, k) : v->src_first + k, &iv[k], s->ntex);
     vs_attributes(s, &iv[k], &pv[k]);
     pv[k].lazy = false;
 }
@@ -588,7 +595,7 @@ static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *
          * away outside the mask. */
         if (!need) {
             memset(out[i].col, 0, sizeof out[i].col);
-            memset(out[i].tc, 0, sizeof out[i].tc);
+            memset(out[i].tc, 0, (size_t)s->ntex * sizeof out[i].tc[0]);
         }
         out[i].lazy = need;
     }
@@ -637,10 +644,12 @@ void fs_exec_ArrayElement(fs_context *c, GLint i)
     fs_ivert v;
     if (c->arrays.vertex.enabled)
         fetch_position(c, (size_t)i, &v);
-    fetch_attributes(c, (size_t)i, &v);
+    fetch_attributes(c, (size_t)i, &v, FS_MAX_TEXTURE_UNITS);
     if (c->arrays.color.enabled) fs_exec_Color4fv(c, v.col);
     if (c->arrays.normal.enabled) fs_exec_Normal3fv(c, v.nrm);
-    if (c->arrays.texcoord.enabled) memcpy(c->current.texcoord, v.tc, sizeof v.tc);
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
+        if (c->arrays.texcoord[u].enabled)
+            memcpy(c->current.texcoord[u], v.tc[u], sizeof v.tc[u]);
     if (c->arrays.vertex.enabled) fs_exec_Vertex4fv(c, v.obj);
 }
 

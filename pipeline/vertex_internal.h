@@ -32,7 +32,7 @@ typedef struct fs_ivert {
     float obj[4];
     float col[4];
     float nrm[3];
-    float tc[4];
+    float tc[FS_MAX_TEXTURE_UNITS][4]; /* the first fs_vs_setup.ntex units are set */
 } fs_ivert;
 
 /* A vertex after transformation and lighting. */
@@ -41,7 +41,7 @@ typedef struct fs_pvert {
     float win[5];     /* x, y, z in window space, 1/w, and y in llvmpipe's y-down frame
                          (fs_rvertex.y_raster); valid when mask == 0 */
     float col[2][4];  /* front and back colour, clamped */
-    float tc[4];
+    float tc[FS_MAX_TEXTURE_UNITS][4]; /* the first fs_vs_setup.ntex units */
     unsigned mask;    /* bit i: outside clip plane i (clip.c's order) */
     bool lazy;        /* col and tc not computed yet (fs_vs_process under a tile mask) */
 } fs_pvert;
@@ -66,8 +66,12 @@ typedef struct fs_vs_setup {
     bool has_fma;       /* the CPU has FMA: fs_vs_process's FMA variant */
     bool has_avx2;      /* ... and AVX2: positions 8 at a time */
     bool nmat_valid;
-    float tex[16];
-    bool tex_identity;
+    /* The texture units whose coordinates are carried: 1 + the highest
+     * enabled unit, at least 1 (fs_raster_state.tex_units), and each one's
+     * texture matrix (2.10.2). */
+    int ntex;
+    float tex[FS_MAX_TEXTURE_UNITS][16];
+    bool tex_identity[FS_MAX_TEXTURE_UNITS];
     float vp_scale[3], vp_trans[3];
     float yr_scale, yr_trans; /* viewport y in llvmpipe's y-down frame */
     /* lighting */
@@ -204,4 +208,6 @@ void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v);
 void fs_exec_Color4fv(fs_context *c, const GLfloat *v);
 void fs_exec_Normal3fv(fs_context *c, const GLfloat *v);
 void fs_exec_Vertex4fv(fs_context *c, const GLfloat *v);
+/* Sets the current texture coordinates of a unit (immediate.c). */
+void fs_current_texcoord(fs_context *c, int unit, float s, float t, float r, float q);
 #endif

@@ -27,8 +27,11 @@ typedef struct fs_transform_state {
     GLenum matrix_mode;
     fs_matrix modelview[FS_MODELVIEW_STACK_DEPTH];
     fs_matrix projection[FS_PROJECTION_STACK_DEPTH];
-    fs_matrix texture[FS_TEXTURE_STACK_DEPTH];
-    int modelview_top, projection_top, texture_top; /* index of the current matrix */
+    /* One texture matrix stack per texture unit (GL 1.5 spec 2.10.2);
+     * glMatrixMode(GL_TEXTURE) selects the active unit's. */
+    fs_matrix texture[FS_MAX_TEXTURE_UNITS][FS_TEXTURE_STACK_DEPTH];
+    int modelview_top, projection_top; /* index of the current matrix */
+    int texture_top[FS_MAX_TEXTURE_UNITS];
     GLint viewport[4];       /* the framebuffer size until glViewport (see viewport_set) */
     bool viewport_set;       /* glViewport called; before that the first draw
                               * takes the framebuffer size, as OSMesa's first
@@ -64,7 +67,8 @@ typedef struct fs_lighting_state {
 } fs_lighting_state;
 
 typedef struct fs_current_state {
-    float color[4], normal[3], texcoord[4];
+    float color[4], normal[3];
+    float texcoord[FS_MAX_TEXTURE_UNITS][4]; /* per texture unit (2.7) */
 } fs_current_state;
 
 typedef struct fs_client_array {
@@ -83,11 +87,22 @@ typedef struct fs_client_array {
 } fs_client_array;
 
 typedef struct fs_array_state {
-    fs_client_array vertex, normal, color, texcoord;
+    fs_client_array vertex, normal, color;
+    /* One texture coordinate array per texture unit, the one
+     * glClientActiveTexture selects taking glTexCoordPointer (2.8). */
+    fs_client_array texcoord[FS_MAX_TEXTURE_UNITS];
     /* GL_ARRAY_BUFFER_BINDING, GL_ELEMENT_ARRAY_BUFFER_BINDING (2.9),
      * client state as the arrays are (pipeline/buffer_object.c). */
     GLuint array_buffer, element_buffer;
 } fs_array_state;
+
+/* The arrays fs_array_state holds, by index: vertex, normal, colour, then
+ * each unit's texture coordinates. */
+#define FS_CLIENT_ARRAYS (3 + FS_MAX_TEXTURE_UNITS)
+static inline fs_client_array *fs_client_array_at(fs_array_state *A, int k)
+{
+    return k == 0 ? &A->vertex : k == 1 ? &A->normal : k == 2 ? &A->color : &A->texcoord[k - 3];
+}
 
 /* Immediate-mode primitive assembly state; the vertex agent owns its fields. */
 typedef struct fs_prim_state {
@@ -110,6 +125,11 @@ void fs_vertex_stage_free(fs_context *c);
 
 /* Helpers shared with the driver (glGet, glEnable(GL_COLOR_MATERIAL)). */
 const fs_matrix *fs_current_matrix(const fs_context *c, GLenum mode);
+/* The active texture unit (glActiveTexture) and the client one
+ * (glClientActiveTexture) as indices 0 .. FS_MAX_TEXTURE_UNITS - 1
+ * (pipeline/texture_select.c). */
+int fs_active_unit(const fs_context *c);
+int fs_client_active_unit(const fs_context *c);
 /* Copies the current colour into the material properties that track it
  * (GL 1.5 spec 2.14.3); called on glColor and on enabling GL_COLOR_MATERIAL. */
 void fs_color_material_update(fs_context *c);

@@ -40,11 +40,14 @@ int fs_texture_init(fs_context *c)
     struct fs_texture_state *s = calloc(1, sizeof *s);
     if (!s)
         return -1;
-    object_defaults(&s->default_2d, 0);
-    s->bound = &s->default_2d;
+    for (int t = 0; t < FS_TEX_TARGETS; t++)
+        object_defaults(&s->default_obj[t], 0);
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
+        for (int t = 0; t < FS_TEX_TARGETS; t++)
+            s->unit[u].bound[t] = &s->default_obj[t];
+        fs_tex_env_init(&s->unit[u].env); /* table 6.19 */
+    }
     s->next_name = 1;
-    /* Table 6.19: MODULATE, environment colour (0,0,0,0). */
-    s->env_mode = GL_MODULATE;
     c->texture = s;
     return 0;
 }
@@ -54,7 +57,8 @@ void fs_texture_free(fs_context *c)
     struct fs_texture_state *s = c->texture;
     if (!s)
         return;
-    object_release(&s->default_2d);
+    for (int t = 0; t < FS_TEX_TARGETS; t++)
+        object_release(&s->default_obj[t]);
     for (size_t i = 0; i < s->count; i++) {
         object_release(s->objects[i]);
         free(s->objects[i]);
@@ -69,16 +73,46 @@ void fs_texture_free(fs_context *c)
 
 bool *fs_texture_enable_flag(fs_context *c, GLenum cap)
 {
-    return cap == GL_TEXTURE_2D ? &c->texture->enabled_2d : NULL;
+    return cap == GL_TEXTURE_2D ? &fs_tex_active(c)->enabled[FS_TEX_2D] : NULL;
 }
 
 void fs_texture_enables_changed(fs_context *c)
 {
-    /* The rasterizer interpolates texture coordinates only while a unit
-     * reads them (rasterizer.h), and those of the quad sharing llvmpipe's
-     * vector only while the bound texture's sampling depends on it. */
-    c->raster.interpolate_tex = c->texture->enabled_2d;
-    c->raster.tex_pair_lod = c->texture->enabled_2d && fs_tex_pair_decides(c->texture->bound);
+    /* The rasterizer interpolates texture coordinates only of the units
+     * that read them (rasterizer.h), and those of the quad sharing
+     * llvmpipe's vector only while some bound texture's sampling depends
+     * on it. */
+    unsigned mask = 0;
+    bool pair = false;
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
+        const fs_tex_unit *tu = &c->texture->unit[u];
+        if (!tu->enabled[FS_TEX_2D])
+            continue;
+        mask |= 1u << u;
+        pair = pair || fs_tex_pair_decides(tu->bound[FS_TEX_2D]);
+    }
+    c->raster.tex_mask = mask;
+    c->raster.tex_units = mask ? 32 - __builtin_clz(mask) : 1;
+    c->raster.interpolate_tex = mask != 0;
+    c->raster.tex_pair_lod = pair;
+}
+
+uint64_t fs_texture_enables(const fs_context *c)
+{
+    uint64_t bits = 0;
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
+        for (int t = 0; t < FS_TEX_TARGETS; t++)
+            bits |= (uint64_t)c->texture->unit[u].enabled[t] << (u * FS_TEX_TARGETS + t);
+    return bits;
+}
+
+void fs_texture_set_enables(fs_context *c, uint64_t bits)
+{
+    _Static_assert(FS_MAX_TEXTURE_UNITS * FS_TEX_TARGETS <= 64, "the enables fit the bits");
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
+        for (int t = 0; t < FS_TEX_TARGETS; t++)
+            c->texture->unit[u].enabled[t] = (bits >> (u * FS_TEX_TARGETS + t)) & 1u;
+    fs_texture_enables_changed(c);
 }
 
 bool fs_tex_pair_decides(const fs_tex_object *t)
@@ -173,31 +207,27 @@ void fs_exec_DeleteTextures(fs_context *c, GLsizei n, const GLuint *textures)
         fs_tex_object *t = textures[i] ? lookup(s, textures[i], &idx) : NULL;
         if (!t)
             continue; /* 0 and unused names are silently ignored */
-        /* A bound texture that is deleted reverts to texture 0. */
-        if (s->bound == t) {
-            s->bound = &s->default_2d;
-            fs_texture_enables_changed(c); /* the rasterizer's tex_pair_lod */
-        }
+        /* A bound texture that is deleted reverts to texture 0, on every
+         * unit it is bound to (3.8.12). */
+        for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
+            for (int k = 0; k < FS_TEX_TARGETS; k++)
+                if (s->unit[u].bound[k] == t) {
+                    s->unit[u].bound[k] = &s->default_obj[k];
+                    fs_texture_enables_changed(c); /* the rasterizer's tex_pair_lod */
+                }
         object_release(t);
         free(t);
         s->objects[idx] = s->objects[--s->count];
     }
 }
 
-void fs_exec_BindTexture(fs_context *c, GLenum target, GLuint texture)
+/* Binds texture (0: the default object) to the 2D target of unit u. */
+static void bind_2d(fs_context *c, int u, GLuint texture)
 {
     struct fs_texture_state *s = c->texture;
-    if (target == GL_TEXTURE_1D || target == GL_TEXTURE_3D) {
-        fs_unsupported(c, target == GL_TEXTURE_1D ? "glBindTexture(GL_TEXTURE_1D)" : "glBindTexture(GL_TEXTURE_3D)");
-        return;
-    }
-    if (target != GL_TEXTURE_2D) {
-        fs_error(c, GL_INVALID_ENUM);
-        return;
-    }
     fs_state_mark(c, GL_TEXTURE_BIT);
     if (texture == 0) {
-        s->bound = &s->default_2d;
+        s->unit[u].bound[FS_TEX_2D] = &s->default_obj[FS_TEX_2D];
         fs_texture_enables_changed(c); /* the rasterizer's tex_pair_lod */
         return;
     }
@@ -209,8 +239,21 @@ void fs_exec_BindTexture(fs_context *c, GLenum target, GLuint texture)
         return;
     }
     t->bound_once = true;
-    s->bound = t;
+    s->unit[u].bound[FS_TEX_2D] = t;
     fs_texture_enables_changed(c); /* the rasterizer's tex_pair_lod */
+}
+
+void fs_exec_BindTexture(fs_context *c, GLenum target, GLuint texture)
+{
+    if (target == GL_TEXTURE_1D || target == GL_TEXTURE_3D) {
+        fs_unsupported(c, target == GL_TEXTURE_1D ? "glBindTexture(GL_TEXTURE_1D)" : "glBindTexture(GL_TEXTURE_3D)");
+        return;
+    }
+    if (target != GL_TEXTURE_2D) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    bind_2d(c, fs_active_unit(c), texture);
 }
 
 GLboolean fs_exec_IsTexture(fs_context *c, GLuint texture)
@@ -392,7 +435,7 @@ static GLenum check_image_args(GLint level, GLint internalformat, GLsizei width,
  * width x height image.  Returns it, or NULL (GL_OUT_OF_MEMORY set). */
 static fs_tex_image *define_level(fs_context *c, GLint level, GLint internalformat, GLsizei width, GLsizei height)
 {
-    fs_tex_object *t = c->texture->bound;
+    fs_tex_object *t = fs_tex_bound_2d(c);
     fs_tex_image *img = &t->level[level];
     uint8_t *texels = NULL;
     if (width > 0 && height > 0) {
@@ -457,7 +500,7 @@ static fs_tex_image *subimage_target(fs_context *c, GLint level, GLint xoffset, 
         fs_error(c, GL_INVALID_VALUE);
         return NULL;
     }
-    fs_tex_image *img = &c->texture->bound->level[level];
+    fs_tex_image *img = &fs_tex_bound_2d(c)->level[level];
     if (!img->texels) {
         fs_error(c, GL_INVALID_OPERATION);
         return NULL;
@@ -599,7 +642,7 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
         return;
     }
     fs_state_mark(c, GL_TEXTURE_BIT);
-    fs_tex_object *t = c->texture->bound;
+    fs_tex_object *t = fs_tex_bound_2d(c);
     GLenum e = float_to_enum(vals[0]);
     switch (pname) {
     case GL_TEXTURE_MIN_FILTER:
@@ -738,7 +781,7 @@ bool fs_tex_complete(fs_tex_object *t)
 
 static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *vals, bool vector)
 {
-    struct fs_texture_state *s = c->texture;
+    fs_tex_env *s = &fs_tex_active(c)->env;
     if (target != GL_TEXTURE_ENV) {
         fs_error(c, GL_INVALID_ENUM);
         return;
@@ -747,11 +790,8 @@ static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *val
     if (pname == GL_TEXTURE_ENV_MODE) {
         GLenum m = float_to_enum(vals[0]);
         switch (m) {
-        case GL_MODULATE: case GL_DECAL: case GL_BLEND: case GL_REPLACE: case GL_ADD:
-            s->env_mode = m;
-            return;
-        case GL_COMBINE:
-            fs_unsupported(c, "glTexEnv(GL_COMBINE)");
+        case GL_MODULATE: case GL_DECAL: case GL_BLEND: case GL_REPLACE: case GL_ADD: case GL_COMBINE:
+            s->mode = m;
             return;
         default:
             fs_error(c, GL_INVALID_ENUM);
@@ -760,10 +800,14 @@ static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *val
     }
     if (pname == GL_TEXTURE_ENV_COLOR && vector) {
         for (int k = 0; k < 4; k++)
-            s->env_color[k] = clamp01_param(vals[k]);
+            s->color[k] = clamp01_param(vals[k]);
         return;
     }
-    fs_error(c, GL_INVALID_ENUM);
+    GLenum err;
+    if (!fs_tex_combine_set(s, pname, vals[0], &err))
+        err = GL_INVALID_ENUM;
+    if (err != GL_NO_ERROR)
+        fs_error(c, err);
 }
 
 void fs_exec_TexEnvi(fs_context *c, GLenum target, GLenum pname, GLint param)
@@ -819,22 +863,28 @@ static void params_restore(fs_tex_object *t, const fs_tex_params *p)
 void fs_texture_attrib_save(const fs_context *c, fs_texture_attrib *a)
 {
     const struct fs_texture_state *s = c->texture;
-    a->binding_2d = s->bound->name;
-    params_save(s->bound, &a->bound);
-    params_save(&s->default_2d, &a->default_2d);
-    a->env_mode = s->env_mode;
-    memcpy(a->env_color, s->env_color, sizeof a->env_color);
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
+        const fs_tex_unit *tu = &s->unit[u];
+        a->unit[u].binding_2d = tu->bound[FS_TEX_2D]->name;
+        params_save(tu->bound[FS_TEX_2D], &a->unit[u].bound);
+        a->unit[u].env = tu->env;
+    }
+    params_save(&s->default_obj[FS_TEX_2D], &a->default_2d);
 }
 
 void fs_texture_attrib_restore(fs_context *c, const fs_texture_attrib *a)
 {
-    fs_exec_BindTexture(c, GL_TEXTURE_2D, a->binding_2d);
     struct fs_texture_state *s = c->texture;
-    if (s->bound != &s->default_2d)
-        params_restore(s->bound, &a->bound);
-    params_restore(&s->default_2d, &a->default_2d);
-    s->env_mode = a->env_mode;
-    memcpy(s->env_color, a->env_color, sizeof s->env_color);
+    fs_tex_object *def = &s->default_obj[FS_TEX_2D];
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
+        fs_tex_unit *tu = &s->unit[u];
+        bind_2d(c, u, a->unit[u].binding_2d);
+        if (tu->bound[FS_TEX_2D] != def)
+            params_restore(tu->bound[FS_TEX_2D], &a->unit[u].bound);
+        tu->env = a->unit[u].env;
+    }
+    params_restore(def, &a->default_2d);
+    fs_texture_enables_changed(c); /* the restored parameters decide tex_pair_lod */
 }
 
 /* ---- queries (GL 1.5 spec 6.1.3 texture queries, 6.1.4 GetTexImage) ----
@@ -843,7 +893,7 @@ void fs_texture_attrib_restore(fs_context *c, const fs_texture_attrib *a)
  * initial values (table 6.17).  Colours and the priority come out of the
  * integer forms as normalized integers (6.1.2), as Mesa returns them. */
 
-GLuint fs_texture_binding_2d(const fs_context *c) { return c->texture->bound->name; }
+GLuint fs_texture_binding_2d(const fs_context *c) { return fs_tex_bound_2d(c)->name; }
 
 GLuint fs_tex_object_name(const fs_tex_object *t) { return t->name; }
 
@@ -898,7 +948,7 @@ static int get_tex_parameter(fs_context *c, GLenum target, GLenum pname, float v
 {
     if (!query_target_ok(c, target, false, "glGetTexParameter on a 1D/3D texture"))
         return 0;
-    int n = tex_parameter_value(c->texture->bound, pname, v, norm);
+    int n = tex_parameter_value(fs_tex_bound_2d(c), pname, v, norm);
     if (n == 0)
         fs_error(c, GL_INVALID_ENUM);
     return n;
@@ -973,7 +1023,7 @@ static bool get_tex_level(fs_context *c, GLenum target, GLint level, GLenum pnam
     }
     /* The model keeps no proxy images (glTexImage2D on the proxy target is
      * unsupported), so every proxy level reads as undefined. */
-    const fs_tex_image *img = target == GL_TEXTURE_2D ? &c->texture->bound->level[level] : NULL;
+    const fs_tex_image *img = target == GL_TEXTURE_2D ? &fs_tex_bound_2d(c)->level[level] : NULL;
     if (!tex_level_value(img, pname, v)) {
         fs_error(c, GL_INVALID_ENUM);
         return false;
@@ -997,19 +1047,21 @@ void fs_exec_GetTexLevelParameterfv(fs_context *c, GLenum target, GLint level, G
 
 static int get_tex_env(fs_context *c, GLenum target, GLenum pname, float v[4])
 {
-    const struct fs_texture_state *s = c->texture;
+    const fs_tex_env *s = &fs_tex_active(c)->env;
     if (target != GL_TEXTURE_ENV) {
         fs_error(c, GL_INVALID_ENUM);
         return 0;
     }
     if (pname == GL_TEXTURE_ENV_MODE) {
-        v[0] = (float)s->env_mode;
+        v[0] = (float)s->mode;
         return 1;
     }
     if (pname == GL_TEXTURE_ENV_COLOR) {
-        memcpy(v, s->env_color, 4 * sizeof *v);
+        memcpy(v, s->color, 4 * sizeof *v);
         return 4;
     }
+    if (fs_tex_combine_get(s, pname, v))
+        return 1;
     fs_error(c, GL_INVALID_ENUM);
     return 0;
 }
@@ -1081,7 +1133,7 @@ int64_t fs_gettexImage_bytes(fs_context *c, GLenum target, GLint level, GLenum f
     if (target != GL_TEXTURE_2D || level < 0 || level >= FS_TEX_MAX_LEVELS ||
         get_image_format_error(format, type) != GL_NO_ERROR)
         return 0;
-    const fs_tex_image *img = &c->texture->bound->level[level];
+    const fs_tex_image *img = &fs_tex_bound_2d(c)->level[level];
     if (!img->texels)
         return 0;
     /* The pack layout is glReadPixels' (4.3.2, 6.1.4). */
@@ -1118,7 +1170,7 @@ void fs_exec_GetTexImage(fs_context *c, GLenum target, GLint level, GLenum forma
         fs_error(c, err);
         return;
     }
-    const fs_tex_image *img = &c->texture->bound->level[level];
+    const fs_tex_image *img = &fs_tex_bound_2d(c)->level[level];
     if (!img->texels || !pixels)
         return; /* an undefined level writes nothing */
     fs_pixel_store ps = fs_pixel_store_pack(c);

@@ -6,6 +6,7 @@
 #define FS_TEXTURE_PRIV_H
 #include <stddef.h>
 #include "texture_unit.h"
+#include "../pipeline/context.h"
 
 /* One image (a MIPmap level).  Texels are stored as RGBA8 already expanded
  * the way the sampler reads them (llvmpipe's sampler-view swizzle, GL 1.5
@@ -39,22 +40,54 @@ typedef struct fs_tex_object {
     struct fs_mpgrid_tex *mpgrid;
 } fs_tex_object;
 
+/* The texture targets as indices into a unit's bindings and enables and
+ * the default objects (GL 1.5 spec 3.8.12: each target has its own texture
+ * 0).  A new target is one more name here. */
+enum fs_tex_target { FS_TEX_2D, FS_TEX_TARGETS };
+
+/* units/texture_combine.c: the initial environment; glTexEnv of a
+ * GL_COMBINE parameter (false: pname is none; *error GL_NO_ERROR or the
+ * error, which leaves the parameter as it was) and glGetTexEnv of one
+ * (false: pname is none). */
+void fs_tex_env_init(fs_tex_env *e);
+bool fs_tex_combine_set(fs_tex_env *e, GLenum pname, float value, GLenum *error);
+bool fs_tex_combine_get(const fs_tex_env *e, GLenum pname, float *value);
+/* What GL_COMBINE reads at one pixel: the combining unit, the units with a
+ * texel (enabled, complete) and their texels, the fragment's colour before
+ * texturing and the previous unit's result. */
+typedef struct fs_combine_inputs {
+    int unit;
+    unsigned valid;
+    const float (*texel)[4];
+    const float *primary, *previous;
+} fs_combine_inputs;
+void fs_tex_combine(const fs_tex_env *e, const fs_combine_inputs *in, float out[4]);
+
+/* One texture unit (2.7, 3.8.13): per target its enable and binding, its
+ * environment.  Its coordinates and matrix stack are the vertex stage's
+ * (pipeline/vertex_stage.h). */
+typedef struct fs_tex_unit {
+    bool enabled[FS_TEX_TARGETS];    /* glEnable(GL_TEXTURE_2D) on this unit */
+    fs_tex_object *bound[FS_TEX_TARGETS];
+    fs_tex_env env;
+} fs_tex_unit;
+
 struct fs_texture_state {
-    bool enabled_2d;            /* glEnable(GL_TEXTURE_2D) */
-    fs_tex_object default_2d;   /* texture object 0 (3.8.12) */
-    fs_tex_object *bound;       /* the current 2D texture */
+    fs_tex_object default_obj[FS_TEX_TARGETS]; /* texture object 0 of each target (3.8.12) */
+    fs_tex_unit unit[FS_MAX_TEXTURE_UNITS];
     fs_tex_object **objects;    /* named objects, unordered */
     size_t count, cap;
     GLuint next_name;           /* where glGenTextures starts looking */
-    /* texture environment (3.8.13) */
-    GLenum env_mode;
-    float env_color[4];
     uint64_t quads_sampled, quads_incomplete;
     /* Footprint filters (units/footprint.h) by M (8, 16, 32, 64), snapping
      * (integer, mid-point) and hybrid, created on first use: each holds
      * its weighting ROMs. */
     struct fs_footprint_filter *footprint[4][2][2];
 };
+
+/* The active texture unit (glActiveTexture, 2.7), and its 2D texture. */
+static inline fs_tex_unit *fs_tex_active(const fs_context *c) { return &c->texture->unit[fs_active_unit(c)]; }
+static inline fs_tex_object *fs_tex_bound_2d(const fs_context *c) { return fs_tex_active(c)->bound[FS_TEX_2D]; }
 
 /* Completeness of an object, cached (3.8.10). */
 bool fs_tex_complete(fs_tex_object *t);

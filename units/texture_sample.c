@@ -30,6 +30,7 @@
  *   model's; each row takes lambda from the quad llvmpipe puts it in.
  * - The texel becomes a float c/255 and the environment is computed in
  *   float; the colour buffer conversion rounds it (fragment_stages.h).
+ *   GL_COMBINE's arithmetic is texture_combine.c's.
  */
 #include <math.h>
 #include <string.h>
@@ -355,11 +356,11 @@ static void sample_level_fv(tex_fetch *f, int level, GLenum filter, bool via_lin
 
 static inline float clamp01(float v) { return v < 0.0f ? 0.0f : v > 1.0f ? 1.0f : v; }
 
-static void apply_env(const struct fs_texture_state *st, GLenum base, const float tex[4], float col[4])
+static void apply_env(const fs_tex_env *env, GLenum base, const float tex[4], float col[4])
 {
-    const float *cc = st->env_color;
+    const float *cc = env->color;
     float lt = tex[0], at = tex[3];
-    switch (st->env_mode) {
+    switch (env->mode) {
     case GL_REPLACE:
         switch (base) {
         case GL_ALPHA: col[3] = at; break;
@@ -442,7 +443,8 @@ void fs_tex_footprint_texel(const fs_tex_object *t, int level, int *x, int *y)
 /* Samples the covered pixels of a minified quad with the footprint filter:
  * each pixel's footprint is the parallelogram of the quad's differences
  * along its own row and column (the affine footprint, texture_filter.h). */
-static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const float s[4], const float tt[4])
+static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const float s[4], const float tt[4],
+                           float (*texel)[4])
 {
     struct fs_texture_state *st = c->texture;
     int mi = t->footprint_budget == 8 ? 0 : t->footprint_budget == 16 ? 1 : t->footprint_budget == 32 ? 2 : 3;
@@ -457,7 +459,6 @@ static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const fl
     fs_mip_view mv;
     tex_mip_view(t, &mv);
     double w = t->level[0].width, h = t->level[0].height;
-    GLenum base = t->level[0].base_format;
     fs_filter_out fo[4]; /* what each pixel read, for the observer */
     for (int i = 0; i < 4; i++) {
         if (!(q->mask & (1u << i)))
@@ -487,7 +488,7 @@ static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const fl
         }
         c->stats.tex_fp_texels += (uint64_t)o.texels;
         c->stats.tex_fp_rom_lookups += (uint64_t)lookups;
-        apply_env(st, base, o.rgba, q->color[i]);
+        memcpy(texel[i], o.rgba, sizeof o.rgba);
         if (c->observer)
             fo[i] = o;
     }
@@ -496,30 +497,35 @@ static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const fl
 
 /* ---- per quad ---- */
 
-static void texture_quad_aligned(fs_context *c, fs_quad *q)
+/* The texels of enabled unit u for the covered pixels of a quad whose
+ * coordinates for the unit are qt, into texel[pixel][u] (RGBA in [0, 1]);
+ * false when the unit's texture is incomplete. */
+static bool sample_unit(fs_context *c, fs_quad *q, int u, const fs_quad_tex *qt,
+                        float (*texel)[FS_MAX_TEXTURE_UNITS][4])
 {
     struct fs_texture_state *st = c->texture;
-    fs_tex_object *t = st->bound;
-    if (!st->enabled_2d)
-        return;
+    fs_tex_object *t = st->unit[u].bound[FS_TEX_2D];
     if (!fs_tex_complete(t)) {
         /* 3.8.10: texturing is as if disabled for the unit. */
         st->quads_incomplete++;
-        return;
+        return false;
     }
     st->quads_sampled++;
     float s[4], tt[4];
     for (int i = 0; i < 4; i++) {
-        float oq = 1.0f / q->tex[i][3];
-        s[i] = q->tex[i][0] * oq;
-        tt[i] = q->tex[i][1] * oq;
+        float oq = 1.0f / qt->tex[i][3];
+        s[i] = qt->tex[i][0] * oq;
+        tt[i] = qt->tex[i][1] * oq;
     }
     lod_result lr;
     select_lod(t, s, tt, &lr);
     GLenum mf = t->min_filter;
     if ((mf == GL_FOOTPRINT_FRAGSIM || mf == GL_FOOTPRINT_HYBRID_FRAGSIM) && lr.minified) {
-        footprint_quad(c, t, q, s, tt);
-        return;
+        float fp[4][4];
+        footprint_quad(c, t, q, s, tt, fp);
+        for (int i = 0; i < 4; i++)
+            memcpy(texel[i][u], fp[i], sizeof fp[i]);
+        return true;
     }
     GLenum img_filter = (mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR)
                             ? GL_LINEAR : GL_NEAREST;
@@ -543,7 +549,7 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
          * uses LINEAR, i.e. takes the image filter that is LINEAR. */
         float ps[4], pt[4];
         for (int i = 0; i < 4; i++) {
-            const float *v = q->tex_pair[1 + (i >> 1)][i & 1];
+            const float *v = qt->tex_pair[1 + (i >> 1)][i & 1];
             float oq = 1.0f / v[3];
             ps[i] = v[0] * oq;
             pt[i] = v[1] * oq;
@@ -553,7 +559,6 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
         bool min_linear = mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR;
         via_linear = other.minified == min_linear;
     }
-    GLenum base = t->level[0].base_format;
     fs_tex_reads reads;
     tex_fetch f = {t, t->mpgrid, {0, 0, 0}, c->observer ? &reads : NULL, 0};
     if (c->observer)
@@ -561,7 +566,7 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
     for (int i = 0; i < 4; i++) {
         if (!(q->mask & (1u << i)))
             continue;
-        float tex[4];
+        float *tex = texel[i][u];
         f.pixel = i;
         if (float_path) {
             sample_level_fv(&f, lr.level0, img_filter, via_linear, s[i], tt[i], tex);
@@ -583,13 +588,46 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
             for (int k = 0; k < 4; k++)
                 tex[k] = (float)v[k] * (1.0f / 255.0f);
         }
-        apply_env(st, base, tex, q->color[i]);
     }
     if (f.mpgrid)
         fs_mpgrid_gl_work_done(f.mpgrid, &f.work);
     FS_OBSERVE(c, texture, t, q, &reads);
     if (f.work.reloads)
         FS_OBSERVE(c, ctr_reloads, f.work.reloads);
+    return true;
+}
+
+/* 3.8.13: every enabled unit's texel first (a GL_COMBINE source may name
+ * another unit's, the crossbar), then the environments unit after unit,
+ * each on the previous one's result; tc[u] holds unit u's coordinates. */
+static void texture_units(fs_context *c, fs_quad *q, const fs_quad_tex *tc)
+{
+    float texel[4][FS_MAX_TEXTURE_UNITS][4];
+    unsigned valid = 0;
+    FS_FOR_EACH_UNIT(u, c->raster.tex_mask)
+        if (sample_unit(c, q, (int)u, &tc[u], texel))
+            valid |= 1u << u;
+    if (!valid)
+        return;
+    const struct fs_texture_state *st = c->texture;
+    float primary[4][4]; /* GL_PRIMARY_COLOR: the colour before texturing */
+    memcpy(primary, q->color, sizeof primary);
+    FS_FOR_EACH_UNIT(u, valid) {
+        const fs_tex_env *env = &st->unit[u].env;
+        GLenum base = st->unit[u].bound[FS_TEX_2D]->level[0].base_format;
+        for (int i = 0; i < 4; i++) {
+            if (!(q->mask & (1u << i)))
+                continue;
+            if (env->mode == GL_COMBINE) {
+                fs_combine_inputs in = {(int)u, valid, (const float(*)[4])texel[i], primary[i], q->color[i]};
+                float out[4];
+                fs_tex_combine(env, &in, out);
+                memcpy(q->color[i], out, sizeof out);
+            } else {
+                apply_env(env, base, texel[i][u], q->color[i]);
+            }
+        }
+    }
 }
 
 /* llvmpipe's 2x2 quads are aligned in its y-down frame (rasterizer_priv.h):
@@ -600,8 +638,9 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
  * differences.  quads_sampled then counts llvmpipe's quads. */
 void fs_texture_quad(fs_context *c, fs_quad *q)
 {
-    if (!(c->fb.height & 1) || !c->texture->enabled_2d) {
-        texture_quad_aligned(c, q);
+    /* 3.8.13: each enabled unit's result is the next one's fragment colour. */
+    if (!(c->fb.height & 1)) {
+        texture_units(c, q, q->unit);
         return;
     }
     for (int half = 0; half < 2; half++) {
@@ -611,19 +650,29 @@ void fs_texture_quad(fs_context *c, fs_quad *q)
         if (!row_mask)
             continue;
         int own = half ? 0 : 2, other = half ? 2 : 0, src = half ? 2 : 0;
-        fs_quad h = *q;
+        /* The quad llvmpipe shades: its colours, depths and position (its
+         * coordinates are built per unit below, not copied). */
+        fs_quad h;
+        h.x = q->x;
+        h.y = half ? q->y + 1 : q->y - 1;
+        h.mask = row_mask << own;
+        h.front_facing = q->front_facing;
         for (int j = 0; j < 2; j++) {
-            memcpy(h.tex[own + j], q->tex[src + j], sizeof h.tex[0]);
-            memcpy(h.tex[other + j], half ? q->tex_above[j] : q->tex_below[j], sizeof h.tex[0]);
             memcpy(h.color[own + j], q->color[src + j], sizeof h.color[0]);
             h.z[own + j] = q->z[src + j];
         }
-        /* The partner quad's rows move with the quad (fs_quad.tex_pair). */
-        memcpy(h.tex_pair[1], q->tex_pair[half ? 2 : 0], sizeof h.tex_pair[0]);
-        memcpy(h.tex_pair[2], q->tex_pair[half ? 3 : 1], sizeof h.tex_pair[0]);
-        h.y = half ? q->y + 1 : q->y - 1;
-        h.mask = row_mask << own;
-        texture_quad_aligned(c, &h);
+        fs_quad_tex ht[FS_MAX_TEXTURE_UNITS];
+        FS_FOR_EACH_UNIT(u, c->raster.tex_mask) {
+            const fs_quad_tex *qt = &q->unit[u];
+            for (int j = 0; j < 2; j++) {
+                memcpy(ht[u].tex[own + j], qt->tex[src + j], sizeof ht[u].tex[0]);
+                memcpy(ht[u].tex[other + j], half ? qt->tex_above[j] : qt->tex_below[j], sizeof ht[u].tex[0]);
+            }
+            /* The partner quad's rows move with the quad (fs_quad_tex.tex_pair). */
+            memcpy(ht[u].tex_pair[1], qt->tex_pair[half ? 2 : 0], sizeof ht[u].tex_pair[0]);
+            memcpy(ht[u].tex_pair[2], qt->tex_pair[half ? 3 : 1], sizeof ht[u].tex_pair[0]);
+        }
+        texture_units(c, &h, ht);
         for (int j = 0; j < 2; j++)
             memcpy(q->color[src + j], h.color[own + j], sizeof h.color[0]);
     }
