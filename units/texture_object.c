@@ -25,6 +25,7 @@ static void object_defaults(fs_tex_object *t, GLuint name)
     t->priority = 1.0f;
     t->footprint_budget = 16;
     t->footprint_snap = GL_FOOTPRINT_SNAP_INTEGER_FRAGSIM;
+    fs_tex_lod_defaults(t);
     t->complete = -1;
 }
 
@@ -445,6 +446,8 @@ void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint interna
         fs_unsupported(c, "16/10-bit texels, unsized internal format (stored at 8 bits)");
     if (img && img->texels && pixels)
         unpack_image(c, img, 0, 0, width, height, format, type, pixels);
+    if (img)
+        fs_tex_image_changed(c, c->texture->bound, level);
 }
 
 /* The level a TexSubImage2D or CopyTexSubImage2D writes into, after the
@@ -491,6 +494,7 @@ void fs_exec_TexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoff
     }
     if (width > 0 && height > 0 && pixels)
         unpack_image(c, img, xoffset, yoffset, width, height, format, type, pixels);
+    fs_tex_image_changed(c, c->texture->bound, level);
 }
 
 /* Copies a framebuffer rectangle into img at (dx, dy) (3.8.2: the pixels
@@ -537,6 +541,8 @@ void fs_exec_CopyTexImage2D(fs_context *c, GLenum target, GLint level, GLenum in
     fs_tex_image *img = define_level(c, level, (GLint)internalformat, width, height);
     if (img && img->texels)
         copy_from_framebuffer(c, img, 0, 0, x, y, width, height);
+    if (img)
+        fs_tex_image_changed(c, c->texture->bound, level);
 }
 
 void fs_exec_CopyTexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x,
@@ -550,6 +556,7 @@ void fs_exec_CopyTexSubImage2D(fs_context *c, GLenum target, GLint level, GLint 
     if (!img)
         return;
     copy_from_framebuffer(c, img, xoffset, yoffset, x, y, width, height);
+    fs_tex_image_changed(c, c->texture->bound, level);
 }
 
 /* ---- parameters (3.8.4) ---- */
@@ -643,12 +650,14 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
             break;
         t->footprint_snap = e;
         return;
-    case GL_TEXTURE_MIN_LOD: case GL_TEXTURE_MAX_LOD: case GL_TEXTURE_BASE_LEVEL: case GL_TEXTURE_MAX_LEVEL:
-    case GL_GENERATE_MIPMAP:
-        fs_unsupported(c, "glTexParameter LOD/level range or GL_GENERATE_MIPMAP");
+    default: {
+        GLenum lod_err;
+        if (!fs_tex_lod_parameter(t, pname, vals[0], &lod_err))
+            break;
+        if (lod_err != GL_NO_ERROR)
+            fs_error(c, lod_err);
         return;
-    default:
-        break;
+    }
     }
     fs_error(c, GL_INVALID_ENUM);
 }
@@ -701,6 +710,7 @@ void fs_exec_TexParameterfv(fs_context *c, GLenum target, GLenum pname, const GL
 {
     float v[4];
     vector_from_fv(v, params, pname == GL_TEXTURE_BORDER_COLOR);
+    fs_tex_lod_vector_form(pname, v);
     tex_parameter(c, target, pname, v, true);
     fs_texture_enables_changed(c);
 }
@@ -709,26 +719,34 @@ void fs_exec_TexParameterfv(fs_context *c, GLenum target, GLenum pname, const GL
 
 bool fs_tex_complete(fs_tex_object *t)
 {
-    if (t->mpgrid)
+    if (t->mpgrid) {
+        t->first_level = 0;
         return fs_mpgrid_gl_complete(t);
+    }
     if (t->complete >= 0)
         return t->complete != 0;
-    const fs_tex_image *b = &t->level[0];
-    bool ok = b->texels != NULL;
-    int last = 0;
+    /* 3.8.10: the image of the base level must exist (a base level past
+     * the last level leaves none); a MIPmap filter also needs the levels
+     * from the base to q = min(p, MAX_LEVEL), each half the previous size
+     * (at least 1), all of the base's internal format, and MAX_LEVEL not
+     * below the base (Mesa; measured: white, i.e. untextured, on OSMesa). */
+    int base = t->base_level;
+    const fs_tex_image *b = base < FS_TEX_MAX_LEVELS ? &t->level[base] : NULL;
+    bool ok = b && b->texels != NULL;
+    int last = base;
     bool mip = t->min_filter != GL_NEAREST && t->min_filter != GL_LINEAR;
     if (ok && mip) {
-        /* Levels 1..p down to 1x1, each half the previous size (at least
-         * 1), all of the same internal format. */
+        ok = t->max_level >= base;
         int w = b->width, h = b->height;
-        while (ok && (w > 1 || h > 1)) {
+        while (ok && (w > 1 || h > 1) && last < t->max_level) {
             w = w > 1 ? w / 2 : 1;
             h = h > 1 ? h / 2 : 1;
             last++;
-            const fs_tex_image *l = &t->level[last];
-            ok = l->texels && l->width == w && l->height == h && l->internal_format == b->internal_format;
+            const fs_tex_image *l = last < FS_TEX_MAX_LEVELS ? &t->level[last] : NULL;
+            ok = l && l->texels && l->width == w && l->height == h && l->internal_format == b->internal_format;
         }
     }
+    t->first_level = ok ? base : 0;
     t->last_level = ok ? last : 0;
     t->complete = ok ? 1 : 0;
     return ok;
@@ -739,6 +757,12 @@ bool fs_tex_complete(fs_tex_object *t)
 static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *vals, bool vector)
 {
     struct fs_texture_state *s = c->texture;
+    if (target == GL_TEXTURE_FILTER_CONTROL) {
+        /* GL 1.4's unit LOD bias (3.8.13; texture_lod.c). */
+        if (fs_tex_filter_control(c, pname, vals[0]))
+            fs_state_mark(c, GL_TEXTURE_BIT);
+        return;
+    }
     if (target != GL_TEXTURE_ENV) {
         fs_error(c, GL_INVALID_ENUM);
         return;
@@ -795,7 +819,8 @@ void fs_exec_TexEnvfv(fs_context *c, GLenum target, GLenum pname, const GLfloat 
 
 /* The scalar fields fs_tex_params shares with fs_tex_object, by name. */
 #define FS_TEX_PARAM_FIELDS(X) \
-    X(min_filter) X(mag_filter) X(wrap_s) X(wrap_t) X(priority) X(footprint_budget) X(footprint_snap)
+    X(min_filter) X(mag_filter) X(wrap_s) X(wrap_t) X(priority) X(footprint_budget) X(footprint_snap) \
+    X(base_level) X(max_level) X(min_lod) X(max_lod) X(lod_bias) X(generate_mipmap)
 
 static void params_save(const fs_tex_object *t, fs_tex_params *p)
 {
@@ -824,6 +849,7 @@ void fs_texture_attrib_save(const fs_context *c, fs_texture_attrib *a)
     params_save(&s->default_2d, &a->default_2d);
     a->env_mode = s->env_mode;
     memcpy(a->env_color, s->env_color, sizeof a->env_color);
+    a->env_lod_bias = s->env_lod_bias;
 }
 
 void fs_texture_attrib_restore(fs_context *c, const fs_texture_attrib *a)
@@ -835,13 +861,12 @@ void fs_texture_attrib_restore(fs_context *c, const fs_texture_attrib *a)
     params_restore(&s->default_2d, &a->default_2d);
     s->env_mode = a->env_mode;
     memcpy(s->env_color, a->env_color, sizeof s->env_color);
+    s->env_lod_bias = a->env_lod_bias;
 }
 
 /* ---- queries (GL 1.5 spec 6.1.3 texture queries, 6.1.4 GetTexImage) ----
- * Values the model does not store (the GL 1.2-1.4 LOD and level range,
- * GENERATE_MIPMAP: setting them is counted unsupported) read as their
- * initial values (table 6.17).  Colours and the priority come out of the
- * integer forms as normalized integers (6.1.2), as Mesa returns them. */
+ * Colours and the priority come out of the integer forms as normalized
+ * integers (6.1.2), as Mesa returns them. */
 
 GLuint fs_texture_binding_2d(const fs_context *c) { return c->texture->bound->name; }
 
@@ -852,7 +877,7 @@ bool fs_tex_level_size(const fs_tex_object *t, int level, int *width, int *heigh
     bool stored = level >= 0 && level < FS_TEX_MAX_LEVELS;
     *width = stored ? t->level[level].width : 0;
     *height = stored ? t->level[level].height : 0;
-    return stored && level <= t->last_level && *width > 0 && *height > 0;
+    return stored && level >= t->first_level && level <= t->last_level && *width > 0 && *height > 0;
 }
 
 /* A texture target the queries accept; sets the error (or counts the
@@ -868,37 +893,43 @@ static bool query_target_ok(fs_context *c, GLenum target, bool proxy_ok, const c
     return false;
 }
 
-/* One texture parameter: returns how many values (1 or 4) were written to
- * v, 0 for an unknown name; *norm tells whether they are normalized. */
-static int tex_parameter_value(const fs_tex_object *t, GLenum pname, float v[4], bool *norm)
+/* One texture parameter as the queries return it: up to 4 values, whether
+ * they are normalized (colours, the priority), and for the level-of-detail
+ * values their integer form, which is not a truncation (texture_lod.c). */
+typedef struct tex_param_value {
+    float v[4];
+    bool norm, has_int;
+    GLint i;
+} tex_param_value;
+
+/* Returns how many values (1 or 4) were written, 0 for an unknown name. */
+static int tex_parameter_value(const fs_tex_object *t, GLenum pname, tex_param_value *p)
 {
-    *norm = false;
+    float *v = p->v;
+    p->norm = p->has_int = false;
     switch (pname) {
     case GL_TEXTURE_MIN_FILTER: v[0] = (float)t->min_filter; return 1;
     case GL_TEXTURE_MAG_FILTER: v[0] = (float)t->mag_filter; return 1;
     case GL_TEXTURE_WRAP_S: v[0] = (float)t->wrap_s; return 1;
     case GL_TEXTURE_WRAP_T: v[0] = (float)t->wrap_t; return 1;
-    case GL_TEXTURE_BORDER_COLOR: memcpy(v, t->border, 4 * sizeof *v); *norm = true; return 4;
-    case GL_TEXTURE_PRIORITY: v[0] = t->priority; *norm = true; return 1;
+    case GL_TEXTURE_BORDER_COLOR: memcpy(v, t->border, 4 * sizeof *v); p->norm = true; return 4;
+    case GL_TEXTURE_PRIORITY: v[0] = t->priority; p->norm = true; return 1;
     /* 3.8.12: a texture of the model is always resident. */
     case GL_TEXTURE_RESIDENT: v[0] = 1.0f; return 1;
-    case GL_TEXTURE_MIN_LOD: v[0] = -1000.0f; return 1;
-    case GL_TEXTURE_MAX_LOD: v[0] = 1000.0f; return 1;
-    case GL_TEXTURE_BASE_LEVEL: v[0] = 0.0f; return 1;
-    case GL_TEXTURE_MAX_LEVEL: v[0] = 1000.0f; return 1;
-    case GL_GENERATE_MIPMAP: v[0] = 0.0f; return 1;
     /* GL_FRAGSIM_footprint_filter */
     case GL_TEXTURE_FOOTPRINT_BUDGET_FRAGSIM: v[0] = (float)t->footprint_budget; return 1;
     case GL_TEXTURE_FOOTPRINT_SNAP_FRAGSIM: v[0] = (float)t->footprint_snap; return 1;
-    default: return 0;
+    default:
+        p->has_int = fs_tex_lod_value(t, pname, v, &p->i) != 0;
+        return p->has_int ? 1 : 0;
     }
 }
 
-static int get_tex_parameter(fs_context *c, GLenum target, GLenum pname, float v[4], bool *norm)
+static int get_tex_parameter(fs_context *c, GLenum target, GLenum pname, tex_param_value *p)
 {
     if (!query_target_ok(c, target, false, "glGetTexParameter on a 1D/3D texture"))
         return 0;
-    int n = tex_parameter_value(c->texture->bound, pname, v, norm);
+    int n = tex_parameter_value(c->texture->bound, pname, p);
     if (n == 0)
         fs_error(c, GL_INVALID_ENUM);
     return n;
@@ -906,19 +937,17 @@ static int get_tex_parameter(fs_context *c, GLenum target, GLenum pname, float v
 
 void fs_exec_GetTexParameterfv(fs_context *c, GLenum target, GLenum pname, GLfloat *params)
 {
-    float v[4];
-    bool norm;
-    int n = get_tex_parameter(c, target, pname, v, &norm);
-    memcpy(params, v, (size_t)n * sizeof *v);
+    tex_param_value p;
+    int n = get_tex_parameter(c, target, pname, &p);
+    memcpy(params, p.v, (size_t)n * sizeof *p.v);
 }
 
 void fs_exec_GetTexParameteriv(fs_context *c, GLenum target, GLenum pname, GLint *params)
 {
-    float v[4];
-    bool norm;
-    int n = get_tex_parameter(c, target, pname, v, &norm);
+    tex_param_value p;
+    int n = get_tex_parameter(c, target, pname, &p);
     for (int k = 0; k < n; k++)
-        params[k] = norm ? fs_norm_to_int(v[k]) : (GLint)v[k];
+        params[k] = p.has_int ? p.i : p.norm ? fs_norm_to_int(p.v[k]) : (GLint)p.v[k];
 }
 
 /* Bits the model stores of a component pname for an image (8 for every
@@ -1017,6 +1046,12 @@ static int get_tex_env(fs_context *c, GLenum target, GLenum pname, float v[4])
 void fs_exec_GetTexEnvfv(fs_context *c, GLenum target, GLenum pname, GLfloat *params)
 {
     float v[4];
+    GLint iv;
+    if (target == GL_TEXTURE_FILTER_CONTROL) {
+        if (fs_tex_filter_control_value(c, pname, v, &iv))
+            params[0] = v[0];
+        return;
+    }
     int n = get_tex_env(c, target, pname, v);
     memcpy(params, v, (size_t)n * sizeof *v);
 }
@@ -1024,6 +1059,12 @@ void fs_exec_GetTexEnvfv(fs_context *c, GLenum target, GLenum pname, GLfloat *pa
 void fs_exec_GetTexEnviv(fs_context *c, GLenum target, GLenum pname, GLint *params)
 {
     float v[4];
+    GLint iv;
+    if (target == GL_TEXTURE_FILTER_CONTROL) {
+        if (fs_tex_filter_control_value(c, pname, v, &iv))
+            params[0] = iv;
+        return;
+    }
     int n = get_tex_env(c, target, pname, v);
     for (int k = 0; k < n; k++)
         params[k] = n == 4 ? fs_norm_to_int(v[k]) : (GLint)v[k];

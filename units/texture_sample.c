@@ -99,9 +99,46 @@ static float fast_log2(float x)
     return ipart + fpart;
 }
 
-static void select_lod(const fs_tex_object *t, const float s[4], const float tt[4], lod_result *r)
+/* The levels of a MIPmap filter from lambda (3.8.9): d = base + lambda,
+ * rounded for MIPMAP_NEAREST (ip from the caller), floor and fraction
+ * for MIPMAP_LINEAR, clamped to [first_level, last_level] with the
+ * fraction zeroed at either end (gallivm's order). */
+static void lod_levels(const fs_tex_object *t, bool linear, float lod, int ip, lod_result *r)
 {
-    const fs_tex_image *b = &t->level[0];
+    int first = t->first_level, last = t->last_level;
+    if (!linear) {
+        int l = ip < 0 ? first : ip > last - first ? last : first + ip;
+        r->level0 = r->level1 = l;
+        return;
+    }
+    float fl = floorf(lod);
+    float fpart = lod - fl;
+    if (!(fl >= 0.0f)) { /* below the base level (or NaN) */
+        r->level0 = r->level1 = first;
+        fpart = 0.0f;
+    } else if (fl >= (float)(last - first)) {
+        r->level0 = r->level1 = last;
+        fpart = 0.0f;
+    } else {
+        r->level0 = first + (int)fl;
+        r->level1 = r->level0 + 1;
+    }
+    r->weightf = fpart;
+    r->weight8 = (int)(fpart * 256.0f);
+}
+
+/* lambda (3.8.8) and the levels it selects, as llvmpipe computes them
+ * (gallivm lp_build_lod_selector): with no bias and no clamp that can
+ * apply, MIPMAP_NEAREST takes its level from the float exponent of rho^2
+ * and the min/mag decision is rho^2 > 1; otherwise lambda =
+ * 0.5 * fast_log2(rho^2) + bias, clamped to MAX_LOD then MIN_LOD (equal
+ * limits replace lambda), and MIPMAP_NEAREST rounds it to even.  rho is
+ * scaled by the base level's size (3.8.9: level_base is level 0 of the
+ * pyramid lambda describes). */
+static void select_lod(const fs_tex_object *t, const fs_tex_lod *lp, const float s[4], const float tt[4],
+                       lod_result *r)
+{
+    const fs_tex_image *b = &t->level[t->first_level];
     /* llvmpipe's quad is (upper-left, upper-right, lower-left, lower-right)
      * in its y-down frame, i.e. fs_quad pixels 2, 3, 0, 1. */
     float fw = (float)b->width, fh = (float)b->height;
@@ -111,38 +148,31 @@ static void select_lod(const fs_tex_object *t, const float s[4], const float tt[
     float ry = dsdy * dsdy + dtdy * dtdy;
     float rho2 = rx > ry ? rx : ry;
     GLenum mf = t->min_filter;
-    r->level0 = r->level1 = 0;
+    bool mip_none = mf == GL_NEAREST || mf == GL_LINEAR;
+    bool mip_nearest = mf == GL_NEAREST_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_NEAREST;
+    r->level0 = r->level1 = t->first_level;
     r->weight8 = 0;
     r->weightf = 0.0f;
-    if (mf == GL_NEAREST || mf == GL_LINEAR) {
+    bool plain = lp->bias == 0.0f && !lp->apply_min && !lp->apply_max;
+    if (plain && (mip_none || mip_nearest)) {
         r->minified = rho2 > 1.0f;
+        if (mip_nearest) /* iround(log2(sqrt(rho2))) = (floor(log2(rho2)) + 1) >> 1 */
+            lod_levels(t, false, 0.0f, exponent_of(rho2, 1) >> 1, r);
         return;
     }
-    if (mf == GL_NEAREST_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_NEAREST) {
-        /* iround(log2(sqrt(rho2))) = (floor(log2(rho2)) + 1) >> 1 */
-        int ip = exponent_of(rho2, 1) >> 1;
-        r->minified = rho2 > 1.0f;
-        r->level0 = ip < 0 ? 0 : ip > t->last_level ? t->last_level : ip;
-        r->level1 = r->level0;
-        return;
-    }
-    float lod = fast_log2(rho2) * 0.5f;
-    r->minified = lod > 0.0f;
-    float fl = floorf(lod);
-    float fpart = lod - fl;
-    int ip = (int)fl;
-    if (fl < 0.0f) {
-        r->level0 = r->level1 = 0;
-        fpart = 0.0f;
-    } else if (fl >= (float)t->last_level) {
-        r->level0 = r->level1 = t->last_level;
-        fpart = 0.0f;
+    float lod;
+    if (lp->fixed) {
+        lod = lp->min_lod;
     } else {
-        r->level0 = ip;
-        r->level1 = ip + 1;
+        lod = fast_log2(rho2) * 0.5f + lp->bias;
+        if (lp->apply_max)
+            lod = lod < lp->max_lod ? lod : lp->max_lod;
+        if (lp->apply_min)
+            lod = lod > lp->min_lod ? lod : lp->min_lod;
     }
-    r->weightf = fpart;
-    r->weight8 = (int)(fpart * 256.0f);
+    r->minified = lod > 0.0f;
+    if (!mip_none)
+        lod_levels(t, !mip_nearest, lod, mip_nearest ? to_int_round_even(lod) : 0, r);
 }
 
 /* ---- fixed-point filtering (llvmpipe's AoS path) ---- */
@@ -409,15 +439,17 @@ static void apply_env(const struct fs_texture_state *st, GLenum base, const floa
 
 /* ---- GL_FRAGSIM_footprint_filter (units/footprint.h) ---- */
 
-/* The bound object's complete pyramid, read-only (texture_filter.h). */
+/* The bound object's complete pyramid, read-only (texture_filter.h): its
+ * level 0 is the base level (3.8.9). */
 static void tex_mip_view(const fs_tex_object *t, fs_mip_view *v)
 {
     memset(v, 0, sizeof *v);
-    v->levels = t->last_level + 1;
+    v->levels = t->last_level - t->first_level + 1;
     for (int l = 0; l < v->levels; l++) {
-        v->width[l] = t->level[l].width;
-        v->height[l] = t->level[l].height;
-        v->texels[l] = t->level[l].texels;
+        const fs_tex_image *img = &t->level[t->first_level + l];
+        v->width[l] = img->width;
+        v->height[l] = img->height;
+        v->texels[l] = img->texels;
     }
     /* GL_CLAMP has no border colour in the footprint filters (edge texels,
      * see the extension's Issues). */
@@ -456,8 +488,9 @@ static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const fl
     }
     fs_mip_view mv;
     tex_mip_view(t, &mv);
-    double w = t->level[0].width, h = t->level[0].height;
-    GLenum base = t->level[0].base_format;
+    const fs_tex_image *b = &t->level[t->first_level];
+    double w = b->width, h = b->height;
+    GLenum base = b->base_format;
     fs_filter_out fo[4]; /* what each pixel read, for the observer */
     for (int i = 0; i < 4; i++) {
         if (!(q->mask & (1u << i)))
@@ -479,6 +512,8 @@ static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const fl
             fs_footprint_filter_run(*fp, &mv, &f, &o, &lookups);
         else
             fs_filter_footprint(&mv, &f, NULL, &o);
+        for (int r = 0; r < o.nrects && r < 2; r++)
+            o.rect[r].level += t->first_level; /* the object's level numbers */
         switch (o.cls) {
         case FS_FP_CLASS_BILINEAR0: c->stats.tex_fp_bilinear0++; break;
         case FS_FP_CLASS_TRILINEAR: c->stats.tex_fp_trilinear++; break;
@@ -514,8 +549,10 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
         s[i] = q->tex[i][0] * oq;
         tt[i] = q->tex[i][1] * oq;
     }
+    fs_tex_lod lp;
+    fs_tex_lod_params(t, fs_tex_unit_lod_bias(c), &lp);
     lod_result lr;
-    select_lod(t, s, tt, &lr);
+    select_lod(t, &lp, s, tt, &lr);
     GLenum mf = t->min_filter;
     if ((mf == GL_FOOTPRINT_FRAGSIM || mf == GL_FOOTPRINT_HYBRID_FRAGSIM) && lr.minified) {
         footprint_quad(c, t, q, s, tt);
@@ -525,11 +562,11 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
                             ? GL_LINEAR : GL_NEAREST;
     bool mip_linear = mf == GL_NEAREST_MIPMAP_LINEAR || mf == GL_LINEAR_MIPMAP_LINEAR;
     if (!lr.minified && t->mag_filter != img_filter) {
-        /* Magnification: level 0 (lambda <= 0 selects the base level),
-         * one image, mag filter. */
+        /* Magnification: lambda <= 0 selects the base level, one image,
+         * mag filter (3.8.9). */
         img_filter = t->mag_filter;
         mip_linear = false;
-        lr.level0 = lr.level1 = 0;
+        lr.level0 = lr.level1 = t->first_level;
     }
     /* llvmpipe filters in 8-bit fixed point only with the "simple" wraps
      * REPEAT and CLAMP_TO_EDGE (gallivm lp_is_simple_wrap_mode); GL_CLAMP
@@ -549,11 +586,11 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
             pt[i] = v[1] * oq;
         }
         lod_result other;
-        select_lod(t, ps, pt, &other);
+        select_lod(t, &lp, ps, pt, &other);
         bool min_linear = mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR;
         via_linear = other.minified == min_linear;
     }
-    GLenum base = t->level[0].base_format;
+    GLenum base = t->level[t->first_level].base_format;
     fs_tex_reads reads;
     tex_fetch f = {t, t->mpgrid, {0, 0, 0}, c->observer ? &reads : NULL, 0};
     if (c->observer)

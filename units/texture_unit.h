@@ -53,12 +53,16 @@ typedef struct fs_tex_params {
     float border[4], priority;
     int footprint_budget;         /* GL_FRAGSIM_footprint_filter's parameters */
     GLenum footprint_snap;
+    int base_level, max_level;    /* GL 1.2-1.4 level of detail (texture_lod.c) */
+    float min_lod, max_lod, lod_bias;
+    bool generate_mipmap;
 } fs_tex_params;
 typedef struct fs_texture_attrib {
     GLuint binding_2d;
     fs_tex_params bound, default_2d;
     GLenum env_mode;
     float env_color[4];
+    float env_lod_bias;           /* GL_TEXTURE_FILTER_CONTROL's bias */
 } fs_texture_attrib;
 void fs_texture_attrib_save(const fs_context *c, fs_texture_attrib *a);
 /* 6.1.14: the binding is restored first, then the parameters of the
