@@ -4,6 +4,7 @@
  * environment (3.8.13).  Every command checks its arguments first: a call
  * that sets a GL error changes nothing (2.5).
  */
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -84,14 +85,15 @@ void fs_texture_enables_changed(fs_context *c)
 
 bool fs_tex_pair_decides(const fs_tex_object *t)
 {
-    /* llvmpipe's float path (GL_CLAMP on an axis) with min and mag image
+    /* llvmpipe's float path (a wrap other than REPEAT and CLAMP_TO_EDGE
+     * on an axis) with min and mag image
      * filters that differ samples the NEAREST pixels of a vector (8
      * pixels, two quads) through its LINEAR code whenever any pixel of the
      * vector needs LINEAR (gallivm lp_bld_sample_soa.c,
      * lp_build_sample_mipmap_both). */
     GLenum mf = t->min_filter;
     bool min_linear = mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR;
-    return (t->wrap_s == GL_CLAMP || t->wrap_t == GL_CLAMP) &&
+    return (!fs_tex_simple_wrap(t->wrap_s) || !fs_tex_simple_wrap(t->wrap_t)) &&
            (GLenum)(min_linear ? GL_LINEAR : GL_NEAREST) != t->mag_filter;
 }
 
@@ -325,6 +327,28 @@ static void unpack_image(fs_context *c, fs_tex_image *img, int x0, int y0, int w
     }
 }
 
+/* Unpacks a client image of width x height into img, which is that image
+ * without `border` texels on each side. */
+static void unpack_inner(fs_context *c, fs_tex_image *img, int border, int width, int height, GLenum format,
+                         GLenum type, const uint8_t *pixels)
+{
+    if (!border) {
+        unpack_image(c, img, 0, 0, width, height, format, type, pixels);
+        return;
+    }
+    fs_tex_image whole = {.width = width, .height = height, .base_format = img->base_format};
+    whole.texels = malloc((size_t)width * (size_t)height * 4);
+    if (!whole.texels) {
+        fs_error(c, GL_OUT_OF_MEMORY);
+        return;
+    }
+    unpack_image(c, &whole, 0, 0, width, height, format, type, pixels);
+    for (int y = 0; y < img->height; y++)
+        memcpy(img->texels + (size_t)y * (size_t)img->width * 4,
+               whole.texels + ((size_t)(y + border) * (size_t)width + (size_t)border) * 4, (size_t)img->width * 4);
+    free(whole.texels);
+}
+
 GLenum fs_tex_base_format(GLint internalformat) { return base_format(internalformat); }
 
 GLenum fs_tex_unpack_rgba8(fs_context *c, uint8_t *dst, int w, int h, GLenum base, GLenum format, GLenum type,
@@ -366,8 +390,8 @@ static bool keeps_wide_texels(GLint internalformat, GLenum format, GLenum type)
 static bool is_pow2_or_zero(GLsizei v) { return (v & (v - 1)) == 0; }
 
 /* Checks shared by glTexImage2D and glCopyTexImage2D (3.8.1): returns the
- * GL error or GL_NO_ERROR.  Border 1 images are valid GL but fragsim does
- * not model borders (neither does gallium). */
+ * GL error or GL_NO_ERROR.  Border 1 images are valid GL; the model keeps
+ * their inner image, as Mesa does for gallium (fs_exec_TexImage2D). */
 static GLenum check_image_args(GLint level, GLint internalformat, GLsizei width, GLsizei height, GLint border)
 {
     if (level < 0 || level > FS_TEX_MAX_LOG2)
@@ -433,19 +457,18 @@ void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint interna
         fs_unsupported(c, "glTexImage2D(GL_PROXY_TEXTURE_2D)");
         return;
     }
-    if (border != 0) {
-        fs_unsupported(c, "glTexImage2D with a border");
-        return;
-    }
     if (format == GL_COLOR_INDEX) {
         fs_unsupported(c, "glTexImage2D(GL_COLOR_INDEX)");
         return;
     }
-    fs_tex_image *img = define_level(c, level, internalformat, width, height);
+    /* A border (3.8.1) is dropped, as Mesa does for gallium, which has no
+     * texture borders: the level is the inner image (measured on OSMesa:
+     * TEXTURE_WIDTH w - 2, TEXTURE_BORDER 0, sampling never reads it). */
+    fs_tex_image *img = define_level(c, level, internalformat, width - 2 * border, height - 2 * border);
     if (img && keeps_wide_texels(internalformat, format, type))
         fs_unsupported(c, "16/10-bit texels, unsized internal format (stored at 8 bits)");
     if (img && img->texels && pixels)
-        unpack_image(c, img, 0, 0, width, height, format, type, pixels);
+        unpack_inner(c, img, border, width, height, format, type, pixels);
     if (img)
         fs_tex_image_changed(c, c->texture->bound, level);
 }
@@ -534,13 +557,14 @@ void fs_exec_CopyTexImage2D(fs_context *c, GLenum target, GLint level, GLenum in
         fs_error(c, err);
         return;
     }
-    if (border != 0) {
-        fs_unsupported(c, "glCopyTexImage2D with a border");
-        return;
-    }
-    fs_tex_image *img = define_level(c, level, (GLint)internalformat, width, height);
+    /* The border is dropped as by glTexImage2D: the inner rectangle is
+     * copied. */
+    fs_tex_image *img =
+        define_level(c, level, (GLint)internalformat, width - 2 * border, height - 2 * border);
     if (img && img->texels)
-        copy_from_framebuffer(c, img, 0, 0, x, y, width, height);
+        /* (at x or y = INT_MAX everything read is outside the window anyway) */
+        copy_from_framebuffer(c, img, 0, 0, x < INT_MAX ? x + border : x, y < INT_MAX ? y + border : y, img->width,
+                              img->height);
     if (img)
         fs_tex_image_changed(c, c->texture->bound, level);
 }
@@ -624,8 +648,6 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
     case GL_TEXTURE_WRAP_T:
         if (!is_wrap(e))
             break;
-        if (e == GL_CLAMP_TO_BORDER || e == GL_MIRRORED_REPEAT)
-            fs_unsupported(c, "texture wrap mode GL_CLAMP_TO_BORDER/GL_MIRRORED_REPEAT (sampled as GL_CLAMP_TO_EDGE)");
         *(pname == GL_TEXTURE_WRAP_S ? &t->wrap_s : &t->wrap_t) = e;
         return;
     case GL_TEXTURE_BORDER_COLOR:

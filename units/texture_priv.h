@@ -92,6 +92,9 @@ void fs_tex_lod_params(const fs_tex_object *t, float unit_bias, fs_tex_lod *p);
 /* After an image of `level` of t was specified or changed: GENERATE_MIPMAP's
  * regeneration of the levels below the base level. */
 void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int level);
+/* The wraps llvmpipe filters in 8-bit fixed point (gallivm
+ * lp_is_simple_wrap_mode); the others take its float path. */
+static inline bool fs_tex_simple_wrap(GLenum w) { return w == GL_REPEAT || w == GL_CLAMP_TO_EDGE; }
 /* Completeness of an object, cached (3.8.10). */
 bool fs_tex_complete(fs_tex_object *t);
 /* Whether sampling a quad with this texture depends on the quad sharing

@@ -21,9 +21,10 @@
  *   round(s * w * 256) - 128 as a 24.8 fixed-point texel position, whose 8
  *   fraction bits are the bilinear weights; lerps are 8-bit with rounding;
  *   the two MIPmap levels are blended with weight trunc(frac(lambda)*256).
- * - GL_CLAMP on either axis (with any filter) is filtered in float, as
- *   llvmpipe's "SoA" path does; LINEAR then reaches the border colour,
- *   taken as a texel of the image's base format.  With min and mag image
+ * - GL_CLAMP, CLAMP_TO_BORDER or MIRRORED_REPEAT on either axis (with any
+ *   filter) is filtered in float, as llvmpipe's "SoA" path does; LINEAR
+ *   with CLAMP and CLAMP_TO_BORDER then reaches the border colour (NEAREST
+ *   too with CLAMP_TO_BORDER), taken as a texel of the image's base format.  With min and mag image
  *   filters that differ, a quad's NEAREST pixels go through the LINEAR code
  *   (rounded weights) when the quad sharing its 8-wide vector uses LINEAR.
  * - With an odd framebuffer height llvmpipe's quads are one row off the
@@ -295,10 +296,67 @@ static void fetch_f(tex_fetch *f, const fs_tex_image *img, int x, int y, float o
         out[k] = (float)p[k] * (1.0f / 255.0f);
 }
 
+/* MIRRORED_REPEAT's fold of s into [0, 1] (GL 1.5 spec 3.8.7, mirror(a)
+ * of table 3.19 before scaling), as gallivm lp_build_coord_mirror computes
+ * it: |2 * (s/2 - round_even(s/2))|, NaN giving 0. */
+static float mirror_coord(float s)
+{
+    float h = s * 0.5f;
+    float fr = h - nearbyintf(h);
+    float m = fabsf(fr + fr);
+    return m > 0.0f ? m : 0.0f;
+}
+
+/* The texel NEAREST takes on one axis in the float path (3.8.7); outside
+ * [0, len) for CLAMP_TO_BORDER, which fetch_f answers with the border. */
+static int nearest_coord_f(float s, int len, GLenum wrap)
+{
+    float lf = (float)len;
+    switch (wrap) {
+    case GL_REPEAT:
+        return to_int_floor(s * lf) & (len - 1);
+    case GL_MIRRORED_REPEAT: {
+        int x = to_int_floor(mirror_coord(s) * lf); /* truncation: the fold is >= 0 */
+        return x < len - 1 ? x : len - 1;
+    }
+    case GL_CLAMP_TO_BORDER: {
+        int x = to_int_floor(s * lf);
+        return x < -1 ? -1 : x > len ? len : x;
+    }
+    default: { /* CLAMP, CLAMP_TO_EDGE */
+        int x = to_int_floor(s * lf);
+        return x < 0 ? 0 : x >= len ? len - 1 : x;
+    }
+    }
+}
+
+/* The texel pair and weight of LINEAR on one axis in the float path
+ * (3.8.8, eq. 3.22), by gallivm's rules for each wrap mode. */
 static void linear_coord_f(float s, int len, GLenum wrap, int *i0, int *i1, float *frac)
 {
     float lf = (float)len;
     float u = s * lf;
+    if (wrap == GL_MIRRORED_REPEAT) {
+        /* Folded, scaled, then the pair clamped into the image. */
+        u = mirror_coord(s) * lf - 0.5f;
+        float fl = floorf(u);
+        *frac = u - fl;
+        int x0 = to_int_floor(fl);
+        *i0 = x0 > 0 ? x0 : 0;
+        *i1 = x0 + 1 < len - 1 ? x0 + 1 : len - 1;
+        return;
+    }
+    if (wrap == GL_CLAMP_TO_BORDER) {
+        /* Clamped to [-1, len + 1] in texel space after the half-texel
+         * shift: a pair outside the image reads the border colour. */
+        u = u - 0.5f;
+        u = u < -1.0f ? -1.0f : u > lf + 1.0f ? lf + 1.0f : u;
+        float fl = floorf(u);
+        *frac = u - fl;
+        *i0 = to_int_floor(fl);
+        *i1 = *i0 + 1;
+        return;
+    }
     if (wrap == GL_REPEAT) {
         /* The float path also filters a REPEAT axis when the other one
          * clamps. */
@@ -321,7 +379,7 @@ static void linear_coord_f(float s, int len, GLenum wrap, int *i0, int *i1, floa
         *i1 = *i0 + 1;
         return;
     }
-    /* CLAMP_TO_EDGE (and the unmodelled modes) */
+    /* CLAMP_TO_EDGE */
     u = u < 0.5f ? 0.5f : u > lf - 0.5f ? lf - 0.5f : u;
     u = u - 0.5f;
     float fl = floorf(u);
@@ -338,10 +396,8 @@ static void sample_level_f(tex_fetch *f, int level, GLenum filter, float s, floa
     const fs_tex_object *t = f->t;
     const fs_tex_image *img = &t->level[level];
     if (filter == GL_NEAREST) {
-        int x = to_int_floor(s * (float)img->width), y = to_int_floor(tt * (float)img->height);
-        x = t->wrap_s == GL_REPEAT ? x & (img->width - 1) : x < 0 ? 0 : x >= img->width ? img->width - 1 : x;
-        y = t->wrap_t == GL_REPEAT ? y & (img->height - 1) : y < 0 ? 0 : y >= img->height ? img->height - 1 : y;
-        fetch_f(f, img, x, y, out);
+        fetch_f(f, img, nearest_coord_f(s, img->width, t->wrap_s), nearest_coord_f(tt, img->height, t->wrap_t),
+                out);
         return;
     }
     int x0, x1, y0, y1;
@@ -569,10 +625,11 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
         lr.level0 = lr.level1 = t->first_level;
     }
     /* llvmpipe filters in 8-bit fixed point only with the "simple" wraps
-     * REPEAT and CLAMP_TO_EDGE (gallivm lp_is_simple_wrap_mode); GL_CLAMP
-     * on either axis takes the float path, whatever the filter (its MIPmap
-     * blend then rounds differently, and LINEAR reaches the border). */
-    bool float_path = t->wrap_s == GL_CLAMP || t->wrap_t == GL_CLAMP;
+     * REPEAT and CLAMP_TO_EDGE (gallivm lp_is_simple_wrap_mode); another
+     * wrap (CLAMP, CLAMP_TO_BORDER, MIRRORED_REPEAT) on either axis takes
+     * the float path, whatever the filter (its MIPmap blend then rounds
+     * differently, and LINEAR may reach the border). */
+    bool float_path = !fs_tex_simple_wrap(t->wrap_s) || !fs_tex_simple_wrap(t->wrap_t);
     bool via_linear = false;
     if (float_path && img_filter == GL_NEAREST && c->raster.tex_pair_lod && fs_tex_pair_decides(t)) {
         /* This quad samples NEAREST; it goes through the LINEAR code when
