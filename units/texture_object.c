@@ -439,6 +439,31 @@ static fs_tex_image *define_level(fs_context *c, GLint level, GLint internalform
     return img;
 }
 
+/* glTexImage2D on GL_PROXY_TEXTURE_2D (3.8.11): the level's state as the
+ * image would set it (its border kept, as Mesa keeps it for a proxy), or
+ * all zero when only the size is refused (too large, not 2^n + 2 border),
+ * which raises no error.  err is the image's error; false when it is an
+ * error to raise (a bad level, format, border or negative size). */
+static bool proxy_image(fs_context *c, GLenum err, GLint level, GLint internalformat, GLsizei width, GLsizei height,
+                        GLint border)
+{
+    bool size_only = level >= 0 && level <= FS_TEX_MAX_LOG2 && base_format(internalformat) &&
+                     (border == 0 || border == 1) && width >= 0 && height >= 0;
+    if (err != GL_NO_ERROR && !(err == GL_INVALID_VALUE && size_only))
+        return false;
+    fs_tex_image *img = &c->texture->proxy_2d[level];
+    memset(img, 0, sizeof *img);
+    if (err != GL_NO_ERROR)
+        return true;
+    img->width = width;
+    img->height = height;
+    img->border = border;
+    img->internal_format = internalformat;
+    img->base_format = base_format(internalformat);
+    img->described = true;
+    return true;
+}
+
 void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint internalformat, GLsizei width,
                         GLsizei height, GLint border, GLenum format, GLenum type, const GLvoid *pixels)
 {
@@ -449,12 +474,10 @@ void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint interna
     GLenum err = tex_format_error(format, type);
     if (err == GL_NO_ERROR)
         err = check_image_args(level, internalformat, width, height, border);
+    if (target == GL_PROXY_TEXTURE_2D && proxy_image(c, err, level, internalformat, width, height, border))
+        return;
     if (err != GL_NO_ERROR) {
         fs_error(c, err);
-        return;
-    }
-    if (target == GL_PROXY_TEXTURE_2D) {
-        fs_unsupported(c, "glTexImage2D(GL_PROXY_TEXTURE_2D)");
         return;
     }
     if (format == GL_COLOR_INDEX) {
@@ -989,20 +1012,20 @@ static int component_bits(const fs_tex_image *img, GLenum pname)
     case GL_TEXTURE_DEPTH_SIZE: has = false; break;
     default: return -1;
     }
-    return has && img->texels ? 8 : 0;
+    return has && (img->texels || img->described) ? 8 : 0;
 }
 
 /* One level parameter (table 6.18); false for an unknown name.  An
  * undefined level reads as zero size with Mesa's internal format RGBA. */
 static bool tex_level_value(const fs_tex_image *img, GLenum pname, GLint *v)
 {
-    bool defined = img && img->texels;
+    bool defined = img && (img->texels || img->described);
     switch (pname) {
     case GL_TEXTURE_WIDTH: *v = defined ? img->width : 0; return true;
     case GL_TEXTURE_HEIGHT: *v = defined ? img->height : 0; return true;
     case GL_TEXTURE_DEPTH: *v = defined ? 1 : 0; return true;
     case GL_TEXTURE_INTERNAL_FORMAT: *v = defined ? img->internal_format : GL_RGBA; return true;
-    case GL_TEXTURE_BORDER: *v = 0; return true;
+    case GL_TEXTURE_BORDER: *v = defined ? img->border : 0; return true;
     case GL_TEXTURE_COMPRESSED: *v = GL_FALSE; return true;
     default: break;
     }
@@ -1022,9 +1045,8 @@ static bool get_tex_level(fs_context *c, GLenum target, GLint level, GLenum pnam
         fs_error(c, GL_INVALID_VALUE);
         return false;
     }
-    /* The model keeps no proxy images (glTexImage2D on the proxy target is
-     * unsupported), so every proxy level reads as undefined. */
-    const fs_tex_image *img = target == GL_TEXTURE_2D ? &c->texture->bound->level[level] : NULL;
+    const fs_tex_image *img =
+        target == GL_TEXTURE_2D ? &c->texture->bound->level[level] : &c->texture->proxy_2d[level];
     if (!tex_level_value(img, pname, v)) {
         fs_error(c, GL_INVALID_ENUM);
         return false;

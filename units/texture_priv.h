@@ -17,6 +17,10 @@ typedef struct fs_tex_image {
     GLint internal_format;      /* as given (for the completeness rule) */
     GLenum base_format;         /* GL_RGBA, GL_RGB, GL_LUMINANCE, ... */
     uint8_t *texels;            /* width*height*4 bytes, row 0 = t near 0 */
+    /* A proxy level (3.8.11) has no texels: described tells that its
+     * state is set, border is the one given (images keep none). */
+    bool described;
+    int border;
 } fs_tex_image;
 
 typedef struct fs_tex_object {
@@ -56,6 +60,8 @@ struct fs_texture_state {
     GLenum env_mode;
     float env_color[4];
     uint64_t quads_sampled, quads_incomplete;
+    /* GL_PROXY_TEXTURE_2D's levels (3.8.11): state only, no texels. */
+    fs_tex_image proxy_2d[FS_TEX_MAX_LEVELS];
     /* GL 1.4's texture-unit LOD bias (GL_TEXTURE_FILTER_CONTROL,
      * 3.8.8), read through fs_tex_unit_lod_bias. */
     float env_lod_bias;
