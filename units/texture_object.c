@@ -4,6 +4,7 @@
  * environment (3.8.13).  Every command checks its arguments first: a call
  * that sets a GL error changes nothing (2.5).
  */
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,6 +26,7 @@ static void object_defaults(fs_tex_object *t, GLuint name)
     t->priority = 1.0f;
     t->footprint_budget = 16;
     t->footprint_snap = GL_FOOTPRINT_SNAP_INTEGER_FRAGSIM;
+    fs_tex_lod_defaults(t);
     t->complete = -1;
 }
 
@@ -117,14 +119,15 @@ void fs_texture_set_enables(fs_context *c, uint64_t bits)
 
 bool fs_tex_pair_decides(const fs_tex_object *t)
 {
-    /* llvmpipe's float path (GL_CLAMP on an axis) with min and mag image
+    /* llvmpipe's float path (a wrap other than REPEAT and CLAMP_TO_EDGE
+     * on an axis) with min and mag image
      * filters that differ samples the NEAREST pixels of a vector (8
      * pixels, two quads) through its LINEAR code whenever any pixel of the
      * vector needs LINEAR (gallivm lp_bld_sample_soa.c,
      * lp_build_sample_mipmap_both). */
     GLenum mf = t->min_filter;
     bool min_linear = mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR;
-    return (t->wrap_s == GL_CLAMP || t->wrap_t == GL_CLAMP) &&
+    return (!fs_tex_simple_wrap(t->wrap_s) || !fs_tex_simple_wrap(t->wrap_t)) &&
            (GLenum)(min_linear ? GL_LINEAR : GL_NEAREST) != t->mag_filter;
 }
 
@@ -367,6 +370,28 @@ static void unpack_image(fs_context *c, fs_tex_image *img, int x0, int y0, int w
     }
 }
 
+/* Unpacks a client image of width x height into img, which is that image
+ * without `border` texels on each side. */
+static void unpack_inner(fs_context *c, fs_tex_image *img, int border, int width, int height, GLenum format,
+                         GLenum type, const uint8_t *pixels)
+{
+    if (!border) {
+        unpack_image(c, img, 0, 0, width, height, format, type, pixels);
+        return;
+    }
+    fs_tex_image whole = {.width = width, .height = height, .base_format = img->base_format};
+    whole.texels = malloc((size_t)width * (size_t)height * 4);
+    if (!whole.texels) {
+        fs_error(c, GL_OUT_OF_MEMORY);
+        return;
+    }
+    unpack_image(c, &whole, 0, 0, width, height, format, type, pixels);
+    for (int y = 0; y < img->height; y++)
+        memcpy(img->texels + (size_t)y * (size_t)img->width * 4,
+               whole.texels + ((size_t)(y + border) * (size_t)width + (size_t)border) * 4, (size_t)img->width * 4);
+    free(whole.texels);
+}
+
 GLenum fs_tex_base_format(GLint internalformat) { return base_format(internalformat); }
 
 GLenum fs_tex_unpack_rgba8(fs_context *c, uint8_t *dst, int w, int h, GLenum base, GLenum format, GLenum type,
@@ -408,8 +433,8 @@ static bool keeps_wide_texels(GLint internalformat, GLenum format, GLenum type)
 static bool is_pow2_or_zero(GLsizei v) { return (v & (v - 1)) == 0; }
 
 /* Checks shared by glTexImage2D and glCopyTexImage2D (3.8.1): returns the
- * GL error or GL_NO_ERROR.  Border 1 images are valid GL but fragsim does
- * not model borders (neither does gallium). */
+ * GL error or GL_NO_ERROR.  Border 1 images are valid GL; the model keeps
+ * their inner image, as Mesa does for gallium (fs_exec_TexImage2D). */
 static GLenum check_image_args(GLint level, GLint internalformat, GLsizei width, GLsizei height, GLint border)
 {
     if (level < 0 || level > FS_TEX_MAX_LOG2)
@@ -457,6 +482,31 @@ static fs_tex_image *define_level(fs_context *c, GLint level, GLint internalform
     return img;
 }
 
+/* glTexImage2D on GL_PROXY_TEXTURE_2D (3.8.11): the level's state as the
+ * image would set it (its border kept, as Mesa keeps it for a proxy), or
+ * all zero when only the size is refused (too large, not 2^n + 2 border),
+ * which raises no error.  err is the image's error; false when it is an
+ * error to raise (a bad level, format, border or negative size). */
+static bool proxy_image(fs_context *c, GLenum err, GLint level, GLint internalformat, GLsizei width, GLsizei height,
+                        GLint border)
+{
+    bool size_only = level >= 0 && level <= FS_TEX_MAX_LOG2 && base_format(internalformat) &&
+                     (border == 0 || border == 1) && width >= 0 && height >= 0;
+    if (err != GL_NO_ERROR && !(err == GL_INVALID_VALUE && size_only))
+        return false;
+    fs_tex_image *img = &c->texture->proxy_2d[level];
+    memset(img, 0, sizeof *img);
+    if (err != GL_NO_ERROR)
+        return true;
+    img->width = width;
+    img->height = height;
+    img->border = border;
+    img->internal_format = internalformat;
+    img->base_format = base_format(internalformat);
+    img->described = true;
+    return true;
+}
+
 void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint internalformat, GLsizei width,
                         GLsizei height, GLint border, GLenum format, GLenum type, const GLvoid *pixels)
 {
@@ -467,27 +517,26 @@ void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint interna
     GLenum err = tex_format_error(format, type);
     if (err == GL_NO_ERROR)
         err = check_image_args(level, internalformat, width, height, border);
+    if (target == GL_PROXY_TEXTURE_2D && proxy_image(c, err, level, internalformat, width, height, border))
+        return;
     if (err != GL_NO_ERROR) {
         fs_error(c, err);
-        return;
-    }
-    if (target == GL_PROXY_TEXTURE_2D) {
-        fs_unsupported(c, "glTexImage2D(GL_PROXY_TEXTURE_2D)");
-        return;
-    }
-    if (border != 0) {
-        fs_unsupported(c, "glTexImage2D with a border");
         return;
     }
     if (format == GL_COLOR_INDEX) {
         fs_unsupported(c, "glTexImage2D(GL_COLOR_INDEX)");
         return;
     }
-    fs_tex_image *img = define_level(c, level, internalformat, width, height);
+    /* A border (3.8.1) is dropped, as Mesa does for gallium, which has no
+     * texture borders: the level is the inner image (measured on OSMesa:
+     * TEXTURE_WIDTH w - 2, TEXTURE_BORDER 0, sampling never reads it). */
+    fs_tex_image *img = define_level(c, level, internalformat, width - 2 * border, height - 2 * border);
     if (img && keeps_wide_texels(internalformat, format, type))
         fs_unsupported(c, "16/10-bit texels, unsized internal format (stored at 8 bits)");
     if (img && img->texels && pixels)
-        unpack_image(c, img, 0, 0, width, height, format, type, pixels);
+        unpack_inner(c, img, border, width, height, format, type, pixels);
+    if (img)
+        fs_tex_image_changed(c, fs_tex_bound_2d(c), level);
 }
 
 /* The level a TexSubImage2D or CopyTexSubImage2D writes into, after the
@@ -534,6 +583,7 @@ void fs_exec_TexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoff
     }
     if (width > 0 && height > 0 && pixels)
         unpack_image(c, img, xoffset, yoffset, width, height, format, type, pixels);
+    fs_tex_image_changed(c, fs_tex_bound_2d(c), level);
 }
 
 /* Copies a framebuffer rectangle into img at (dx, dy) (3.8.2: the pixels
@@ -573,13 +623,16 @@ void fs_exec_CopyTexImage2D(fs_context *c, GLenum target, GLint level, GLenum in
         fs_error(c, err);
         return;
     }
-    if (border != 0) {
-        fs_unsupported(c, "glCopyTexImage2D with a border");
-        return;
-    }
-    fs_tex_image *img = define_level(c, level, (GLint)internalformat, width, height);
+    /* The border is dropped as by glTexImage2D: the inner rectangle is
+     * copied. */
+    fs_tex_image *img =
+        define_level(c, level, (GLint)internalformat, width - 2 * border, height - 2 * border);
     if (img && img->texels)
-        copy_from_framebuffer(c, img, 0, 0, x, y, width, height);
+        /* (at x or y = INT_MAX everything read is outside the window anyway) */
+        copy_from_framebuffer(c, img, 0, 0, x < INT_MAX ? x + border : x, y < INT_MAX ? y + border : y, img->width,
+                              img->height);
+    if (img)
+        fs_tex_image_changed(c, fs_tex_bound_2d(c), level);
 }
 
 void fs_exec_CopyTexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x,
@@ -593,6 +646,7 @@ void fs_exec_CopyTexSubImage2D(fs_context *c, GLenum target, GLint level, GLint 
     if (!img)
         return;
     copy_from_framebuffer(c, img, xoffset, yoffset, x, y, width, height);
+    fs_tex_image_changed(c, fs_tex_bound_2d(c), level);
 }
 
 /* ---- parameters (3.8.4) ---- */
@@ -660,8 +714,6 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
     case GL_TEXTURE_WRAP_T:
         if (!is_wrap(e))
             break;
-        if (e == GL_CLAMP_TO_BORDER || e == GL_MIRRORED_REPEAT)
-            fs_unsupported(c, "texture wrap mode GL_CLAMP_TO_BORDER/GL_MIRRORED_REPEAT (sampled as GL_CLAMP_TO_EDGE)");
         *(pname == GL_TEXTURE_WRAP_S ? &t->wrap_s : &t->wrap_t) = e;
         return;
     case GL_TEXTURE_BORDER_COLOR:
@@ -686,12 +738,14 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
             break;
         t->footprint_snap = e;
         return;
-    case GL_TEXTURE_MIN_LOD: case GL_TEXTURE_MAX_LOD: case GL_TEXTURE_BASE_LEVEL: case GL_TEXTURE_MAX_LEVEL:
-    case GL_GENERATE_MIPMAP:
-        fs_unsupported(c, "glTexParameter LOD/level range or GL_GENERATE_MIPMAP");
+    default: {
+        GLenum lod_err;
+        if (!fs_tex_lod_parameter(t, pname, vals[0], &lod_err))
+            break;
+        if (lod_err != GL_NO_ERROR)
+            fs_error(c, lod_err);
         return;
-    default:
-        break;
+    }
     }
     fs_error(c, GL_INVALID_ENUM);
 }
@@ -744,6 +798,7 @@ void fs_exec_TexParameterfv(fs_context *c, GLenum target, GLenum pname, const GL
 {
     float v[4];
     vector_from_fv(v, params, pname == GL_TEXTURE_BORDER_COLOR);
+    fs_tex_lod_vector_form(pname, v);
     tex_parameter(c, target, pname, v, true);
     fs_texture_enables_changed(c);
 }
@@ -752,26 +807,34 @@ void fs_exec_TexParameterfv(fs_context *c, GLenum target, GLenum pname, const GL
 
 bool fs_tex_complete(fs_tex_object *t)
 {
-    if (t->mpgrid)
+    if (t->mpgrid) {
+        t->first_level = 0;
         return fs_mpgrid_gl_complete(t);
+    }
     if (t->complete >= 0)
         return t->complete != 0;
-    const fs_tex_image *b = &t->level[0];
-    bool ok = b->texels != NULL;
-    int last = 0;
+    /* 3.8.10: the image of the base level must exist (a base level past
+     * the last level leaves none); a MIPmap filter also needs the levels
+     * from the base to q = min(p, MAX_LEVEL), each half the previous size
+     * (at least 1), all of the base's internal format, and MAX_LEVEL not
+     * below the base (Mesa; measured: white, i.e. untextured, on OSMesa). */
+    int base = t->base_level;
+    const fs_tex_image *b = base < FS_TEX_MAX_LEVELS ? &t->level[base] : NULL;
+    bool ok = b && b->texels != NULL;
+    int last = base;
     bool mip = t->min_filter != GL_NEAREST && t->min_filter != GL_LINEAR;
     if (ok && mip) {
-        /* Levels 1..p down to 1x1, each half the previous size (at least
-         * 1), all of the same internal format. */
+        ok = t->max_level >= base;
         int w = b->width, h = b->height;
-        while (ok && (w > 1 || h > 1)) {
+        while (ok && (w > 1 || h > 1) && last < t->max_level) {
             w = w > 1 ? w / 2 : 1;
             h = h > 1 ? h / 2 : 1;
             last++;
-            const fs_tex_image *l = &t->level[last];
-            ok = l->texels && l->width == w && l->height == h && l->internal_format == b->internal_format;
+            const fs_tex_image *l = last < FS_TEX_MAX_LEVELS ? &t->level[last] : NULL;
+            ok = l && l->texels && l->width == w && l->height == h && l->internal_format == b->internal_format;
         }
     }
+    t->first_level = ok ? base : 0;
     t->last_level = ok ? last : 0;
     t->complete = ok ? 1 : 0;
     return ok;
@@ -782,6 +845,12 @@ bool fs_tex_complete(fs_tex_object *t)
 static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *vals, bool vector)
 {
     fs_tex_env *s = &fs_tex_active(c)->env;
+    if (target == GL_TEXTURE_FILTER_CONTROL) {
+        /* GL 1.4's unit LOD bias (3.8.13; texture_lod.c). */
+        if (fs_tex_filter_control(c, pname, vals[0]))
+            fs_state_mark(c, GL_TEXTURE_BIT);
+        return;
+    }
     if (target != GL_TEXTURE_ENV) {
         fs_error(c, GL_INVALID_ENUM);
         return;
@@ -839,7 +908,8 @@ void fs_exec_TexEnvfv(fs_context *c, GLenum target, GLenum pname, const GLfloat 
 
 /* The scalar fields fs_tex_params shares with fs_tex_object, by name. */
 #define FS_TEX_PARAM_FIELDS(X) \
-    X(min_filter) X(mag_filter) X(wrap_s) X(wrap_t) X(priority) X(footprint_budget) X(footprint_snap)
+    X(min_filter) X(mag_filter) X(wrap_s) X(wrap_t) X(priority) X(footprint_budget) X(footprint_snap) \
+    X(base_level) X(max_level) X(min_lod) X(max_lod) X(lod_bias) X(generate_mipmap)
 
 static void params_save(const fs_tex_object *t, fs_tex_params *p)
 {
@@ -888,10 +958,8 @@ void fs_texture_attrib_restore(fs_context *c, const fs_texture_attrib *a)
 }
 
 /* ---- queries (GL 1.5 spec 6.1.3 texture queries, 6.1.4 GetTexImage) ----
- * Values the model does not store (the GL 1.2-1.4 LOD and level range,
- * GENERATE_MIPMAP: setting them is counted unsupported) read as their
- * initial values (table 6.17).  Colours and the priority come out of the
- * integer forms as normalized integers (6.1.2), as Mesa returns them. */
+ * Colours and the priority come out of the integer forms as normalized
+ * integers (6.1.2), as Mesa returns them. */
 
 GLuint fs_texture_binding_2d(const fs_context *c) { return fs_tex_bound_2d(c)->name; }
 
@@ -902,7 +970,7 @@ bool fs_tex_level_size(const fs_tex_object *t, int level, int *width, int *heigh
     bool stored = level >= 0 && level < FS_TEX_MAX_LEVELS;
     *width = stored ? t->level[level].width : 0;
     *height = stored ? t->level[level].height : 0;
-    return stored && level <= t->last_level && *width > 0 && *height > 0;
+    return stored && level >= t->first_level && level <= t->last_level && *width > 0 && *height > 0;
 }
 
 /* A texture target the queries accept; sets the error (or counts the
@@ -918,37 +986,43 @@ static bool query_target_ok(fs_context *c, GLenum target, bool proxy_ok, const c
     return false;
 }
 
-/* One texture parameter: returns how many values (1 or 4) were written to
- * v, 0 for an unknown name; *norm tells whether they are normalized. */
-static int tex_parameter_value(const fs_tex_object *t, GLenum pname, float v[4], bool *norm)
+/* One texture parameter as the queries return it: up to 4 values, whether
+ * they are normalized (colours, the priority), and for the level-of-detail
+ * values their integer form, which is not a truncation (texture_lod.c). */
+typedef struct tex_param_value {
+    float v[4];
+    bool norm, has_int;
+    GLint i;
+} tex_param_value;
+
+/* Returns how many values (1 or 4) were written, 0 for an unknown name. */
+static int tex_parameter_value(const fs_tex_object *t, GLenum pname, tex_param_value *p)
 {
-    *norm = false;
+    float *v = p->v;
+    p->norm = p->has_int = false;
     switch (pname) {
     case GL_TEXTURE_MIN_FILTER: v[0] = (float)t->min_filter; return 1;
     case GL_TEXTURE_MAG_FILTER: v[0] = (float)t->mag_filter; return 1;
     case GL_TEXTURE_WRAP_S: v[0] = (float)t->wrap_s; return 1;
     case GL_TEXTURE_WRAP_T: v[0] = (float)t->wrap_t; return 1;
-    case GL_TEXTURE_BORDER_COLOR: memcpy(v, t->border, 4 * sizeof *v); *norm = true; return 4;
-    case GL_TEXTURE_PRIORITY: v[0] = t->priority; *norm = true; return 1;
+    case GL_TEXTURE_BORDER_COLOR: memcpy(v, t->border, 4 * sizeof *v); p->norm = true; return 4;
+    case GL_TEXTURE_PRIORITY: v[0] = t->priority; p->norm = true; return 1;
     /* 3.8.12: a texture of the model is always resident. */
     case GL_TEXTURE_RESIDENT: v[0] = 1.0f; return 1;
-    case GL_TEXTURE_MIN_LOD: v[0] = -1000.0f; return 1;
-    case GL_TEXTURE_MAX_LOD: v[0] = 1000.0f; return 1;
-    case GL_TEXTURE_BASE_LEVEL: v[0] = 0.0f; return 1;
-    case GL_TEXTURE_MAX_LEVEL: v[0] = 1000.0f; return 1;
-    case GL_GENERATE_MIPMAP: v[0] = 0.0f; return 1;
     /* GL_FRAGSIM_footprint_filter */
     case GL_TEXTURE_FOOTPRINT_BUDGET_FRAGSIM: v[0] = (float)t->footprint_budget; return 1;
     case GL_TEXTURE_FOOTPRINT_SNAP_FRAGSIM: v[0] = (float)t->footprint_snap; return 1;
-    default: return 0;
+    default:
+        p->has_int = fs_tex_lod_value(t, pname, v, &p->i) != 0;
+        return p->has_int ? 1 : 0;
     }
 }
 
-static int get_tex_parameter(fs_context *c, GLenum target, GLenum pname, float v[4], bool *norm)
+static int get_tex_parameter(fs_context *c, GLenum target, GLenum pname, tex_param_value *p)
 {
     if (!query_target_ok(c, target, false, "glGetTexParameter on a 1D/3D texture"))
         return 0;
-    int n = tex_parameter_value(fs_tex_bound_2d(c), pname, v, norm);
+    int n = tex_parameter_value(fs_tex_bound_2d(c), pname, p);
     if (n == 0)
         fs_error(c, GL_INVALID_ENUM);
     return n;
@@ -956,19 +1030,17 @@ static int get_tex_parameter(fs_context *c, GLenum target, GLenum pname, float v
 
 void fs_exec_GetTexParameterfv(fs_context *c, GLenum target, GLenum pname, GLfloat *params)
 {
-    float v[4];
-    bool norm;
-    int n = get_tex_parameter(c, target, pname, v, &norm);
-    memcpy(params, v, (size_t)n * sizeof *v);
+    tex_param_value p;
+    int n = get_tex_parameter(c, target, pname, &p);
+    memcpy(params, p.v, (size_t)n * sizeof *p.v);
 }
 
 void fs_exec_GetTexParameteriv(fs_context *c, GLenum target, GLenum pname, GLint *params)
 {
-    float v[4];
-    bool norm;
-    int n = get_tex_parameter(c, target, pname, v, &norm);
+    tex_param_value p;
+    int n = get_tex_parameter(c, target, pname, &p);
     for (int k = 0; k < n; k++)
-        params[k] = norm ? fs_norm_to_int(v[k]) : (GLint)v[k];
+        params[k] = p.has_int ? p.i : p.norm ? fs_norm_to_int(p.v[k]) : (GLint)p.v[k];
 }
 
 /* Bits the model stores of a component pname for an image (8 for every
@@ -988,20 +1060,20 @@ static int component_bits(const fs_tex_image *img, GLenum pname)
     case GL_TEXTURE_DEPTH_SIZE: has = false; break;
     default: return -1;
     }
-    return has && img->texels ? 8 : 0;
+    return has && (img->texels || img->described) ? 8 : 0;
 }
 
 /* One level parameter (table 6.18); false for an unknown name.  An
  * undefined level reads as zero size with Mesa's internal format RGBA. */
 static bool tex_level_value(const fs_tex_image *img, GLenum pname, GLint *v)
 {
-    bool defined = img && img->texels;
+    bool defined = img && (img->texels || img->described);
     switch (pname) {
     case GL_TEXTURE_WIDTH: *v = defined ? img->width : 0; return true;
     case GL_TEXTURE_HEIGHT: *v = defined ? img->height : 0; return true;
     case GL_TEXTURE_DEPTH: *v = defined ? 1 : 0; return true;
     case GL_TEXTURE_INTERNAL_FORMAT: *v = defined ? img->internal_format : GL_RGBA; return true;
-    case GL_TEXTURE_BORDER: *v = 0; return true;
+    case GL_TEXTURE_BORDER: *v = defined ? img->border : 0; return true;
     case GL_TEXTURE_COMPRESSED: *v = GL_FALSE; return true;
     default: break;
     }
@@ -1021,9 +1093,8 @@ static bool get_tex_level(fs_context *c, GLenum target, GLint level, GLenum pnam
         fs_error(c, GL_INVALID_VALUE);
         return false;
     }
-    /* The model keeps no proxy images (glTexImage2D on the proxy target is
-     * unsupported), so every proxy level reads as undefined. */
-    const fs_tex_image *img = target == GL_TEXTURE_2D ? &fs_tex_bound_2d(c)->level[level] : NULL;
+    const fs_tex_image *img =
+        target == GL_TEXTURE_2D ? &fs_tex_bound_2d(c)->level[level] : &c->texture->proxy_2d[level];
     if (!tex_level_value(img, pname, v)) {
         fs_error(c, GL_INVALID_ENUM);
         return false;
@@ -1069,6 +1140,12 @@ static int get_tex_env(fs_context *c, GLenum target, GLenum pname, float v[4])
 void fs_exec_GetTexEnvfv(fs_context *c, GLenum target, GLenum pname, GLfloat *params)
 {
     float v[4];
+    GLint iv;
+    if (target == GL_TEXTURE_FILTER_CONTROL) {
+        if (fs_tex_filter_control_value(c, pname, v, &iv))
+            params[0] = v[0];
+        return;
+    }
     int n = get_tex_env(c, target, pname, v);
     memcpy(params, v, (size_t)n * sizeof *v);
 }
@@ -1076,6 +1153,12 @@ void fs_exec_GetTexEnvfv(fs_context *c, GLenum target, GLenum pname, GLfloat *pa
 void fs_exec_GetTexEnviv(fs_context *c, GLenum target, GLenum pname, GLint *params)
 {
     float v[4];
+    GLint iv;
+    if (target == GL_TEXTURE_FILTER_CONTROL) {
+        if (fs_tex_filter_control_value(c, pname, v, &iv))
+            params[0] = iv;
+        return;
+    }
     int n = get_tex_env(c, target, pname, v);
     for (int k = 0; k < n; k++)
         params[k] = n == 4 ? fs_norm_to_int(v[k]) : (GLint)v[k];

@@ -60,6 +60,9 @@ typedef struct fs_tex_params {
     float border[4], priority;
     int footprint_budget;         /* GL_FRAGSIM_footprint_filter's parameters */
     GLenum footprint_snap;
+    int base_level, max_level;    /* GL 1.2-1.4 level of detail (texture_lod.c) */
+    float min_lod, max_lod, lod_bias;
+    bool generate_mipmap;
 } fs_tex_params;
 /* A texture unit's environment (3.8.13, table 6.19): the mode, the
  * constant colour and GL_COMBINE's parameters, [0] for the RGB function,
@@ -71,6 +74,7 @@ typedef struct fs_tex_env {
     GLenum source[2][3];        /* GL_SOURCEn_RGB, GL_SOURCEn_ALPHA */
     GLenum operand[2][3];       /* GL_OPERANDn_RGB, GL_OPERANDn_ALPHA */
     float scale[2];             /* GL_RGB_SCALE, GL_ALPHA_SCALE */
+    float lod_bias;             /* GL_TEXTURE_FILTER_CONTROL's bias (1.4, 3.8.8; texture_lod.c) */
 } fs_tex_env;
 typedef struct fs_texture_attrib {
     struct {
