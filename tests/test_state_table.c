@@ -246,6 +246,10 @@ static void random_vertex_state(fs_context *c, unsigned *s, bool color_material)
     static const GLenum cm[] = {GL_EMISSION, GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_AMBIENT_AND_DIFFUSE};
     if (color_material)
         G(ColorMaterial, faces[pick(s, 3)], cm[pick(s, 5)]);
+    /* The raster position (2.13): glWindowPos, as glRasterPos under this
+     * state would meet texture coordinate generation, which the vertex
+     * stage does not do yet (tests/test_pixel_rect.c covers glRasterPos). */
+    G(WindowPos3f, rndf(s, -9, 70), rndf(s, -9, 70), rndf(s, -0.5f, 1.5f));
 }
 
 static void random_raster_state(fs_context *c, unsigned *s)
@@ -693,8 +697,7 @@ TEST(pop_marks_groups_dirty)
 
 /* Not yet in the table. */
 #define PENDING_STATE \
-    GL_CURRENT_INDEX, GL_CURRENT_RASTER_COLOR, GL_CURRENT_RASTER_INDEX, GL_CURRENT_RASTER_TEXTURE_COORDS, \
-    GL_CURRENT_RASTER_POSITION, GL_CURRENT_RASTER_POSITION_VALID, GL_CURRENT_RASTER_DISTANCE, GL_LIST_MODE, \
+    GL_CURRENT_INDEX, GL_LIST_MODE, \
     GL_LIST_BASE, GL_LIST_INDEX, GL_PIXEL_MAP_I_TO_I_SIZE, GL_PIXEL_MAP_S_TO_S_SIZE, GL_PIXEL_MAP_I_TO_R_SIZE, \
     GL_PIXEL_MAP_I_TO_G_SIZE, GL_PIXEL_MAP_I_TO_B_SIZE, GL_PIXEL_MAP_I_TO_A_SIZE, GL_PIXEL_MAP_R_TO_R_SIZE, \
     GL_PIXEL_MAP_G_TO_G_SIZE, GL_PIXEL_MAP_B_TO_B_SIZE, GL_PIXEL_MAP_A_TO_A_SIZE, GL_MAP_COLOR, \
