@@ -18,6 +18,7 @@
 #include "vertex_stage.h"
 #include "state.h"
 #include "stored_state.h"
+#include "raster_pos.h"
 #include "observer.h"
 #include "render_mode.h"
 
@@ -39,6 +40,8 @@ struct fs_context {
     fs_transform_state xf;
     fs_lighting_state lighting;
     fs_current_state current;
+    /* The current raster position (GL 1.5 spec 2.13; pipeline/raster_pos.c). */
+    fs_raster_pos rpos;
     fs_array_state arrays;
     fs_prim_state prim;
     fs_raster_state raster;

@@ -40,6 +40,11 @@ void fs_fragment_state_init(fs_fragment_state *f)
     f->blend_enabled = false;
     f->blend_src = GL_ONE;
     f->blend_dst = GL_ZERO;
+    f->blend_src_alpha = GL_ONE;
+    f->blend_dst_alpha = GL_ZERO;
+    f->blend_equation = GL_FUNC_ADD;
+    for (int i = 0; i < 4; i++)
+        f->blend_color[i] = 0.0f;
     f->dither_enabled = true;
     f->logic_op_enabled = false;
     f->logic_op = GL_COPY;
@@ -242,7 +247,7 @@ quad_fast(fs_context *c, const fs_quad *q, enum depth_mode zmode, bool zwrite, e
 #define DEPTH_MASK(z) ((z) ? FS_FKEY_DEPTH_WRITE | FS_FKEY_DEPTH_FUNC_MASK : 0u)
 #define DEPTH_VALUE(z, zwrite) \
     ((z) ? FS_FKEY_DEPTH | FS_FKEY_DEPTH_FUNC(z) | ((zwrite) ? FS_FKEY_DEPTH_WRITE : 0u) : 0u)
-#define BLEND_MASK(b) ((b) ? FS_FKEY_BLEND_SRC_MASK | FS_FKEY_BLEND_DST_MASK : 0u)
+#define BLEND_MASK(b) ((b) ? FS_FKEY_BLEND_SRC_MASK | FS_FKEY_BLEND_DST_MASK | FS_FKEY_BLEND_EXT : 0u)
 #define BLEND_VALUE(b) ((b) ? FS_FKEY_BLEND | FS_FKEY_BLEND_FUNC(GL_SRC_ALPHA, b) : 0u)
 
 /* One function per row of fragment_variants.def. */

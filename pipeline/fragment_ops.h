@@ -45,7 +45,10 @@ typedef struct fs_fragment_state {
     bool depth_write;
     /* blending (4.1.8) */
     bool blend_enabled;
-    GLenum blend_src, blend_dst;
+    GLenum blend_src, blend_dst;             /* the RGB factors (GL_BLEND_SRC_RGB, _DST_RGB) */
+    GLenum blend_src_alpha, blend_dst_alpha; /* glBlendFuncSeparate's alpha factors (1.4) */
+    GLenum blend_equation;                   /* glBlendEquation (1.4, table 4.1) */
+    float blend_color[4];                    /* glBlendColor, clamped to [0,1] */
     /* dithering (4.1.9) has no effect on an RGBA8 buffer in llvmpipe */
     bool dither_enabled;
     /* logic op (4.1.10) */

@@ -33,6 +33,8 @@ uint32_t fs_fragment_key(const fs_context *c)
     k |= (uint32_t)(f->logic_op - GL_CLEAR) << FS_FKEY_LOGIC_OP_SHIFT & FS_FKEY_LOGIC_OP_MASK;
     k |= fs_fkey_blend_factor(f->blend_src) << FS_FKEY_BLEND_SRC_SHIFT;
     k |= fs_fkey_blend_factor(f->blend_dst) << FS_FKEY_BLEND_DST_SHIFT;
+    if (f->blend_src_alpha != f->blend_src || f->blend_dst_alpha != f->blend_dst || f->blend_equation != GL_FUNC_ADD)
+        k |= FS_FKEY_BLEND_EXT;
     for (int i = 0; i < 4; i++)
         if (f->color_mask[i])
             k |= 1u << (FS_FKEY_COLOR_MASK_SHIFT + i);

@@ -30,6 +30,10 @@
 #define FS_FKEY_LOGIC (1u << 19)       /* GL_COLOR_LOGIC_OP, 4.1.10 */
 #define FS_FKEY_LOGIC_OP_SHIFT 20      /* 4 bits: op - GL_CLEAR */
 #define FS_FKEY_COLOR_MASK_SHIFT 24    /* 4 bits: bit k is channel k, 4.2.2 */
+/* Blending other than one factor pair under FUNC_ADD: separate alpha
+ * factors or another equation (GL 1.4, 4.1.8).  The constant colour is not
+ * in the key: only the general path reads it. */
+#define FS_FKEY_BLEND_EXT (1u << 28)
 
 #define FS_FKEY_DEPTH_FUNC_MASK (7u << FS_FKEY_DEPTH_FUNC_SHIFT)
 #define FS_FKEY_BLEND_SRC_MASK (15u << FS_FKEY_BLEND_SRC_SHIFT)

@@ -201,7 +201,24 @@ TEST(color_conversion_vs_osmesa)
     osm_close(&o);
 }
 
-/* Every (sfactor, dfactor) pair GL 1.5 accepts, random source floats and
+/* Random destination bytes (with 0 and 255 mixed in) and source floats
+ * (with 0 and 1) for n pixels. */
+static void random_blend_inputs(uint32_t *seed, int n, uint8_t *dst, float *col)
+{
+    for (int i = 0; i < n * 4; i++) {
+        int v = (int)(rng_next(seed) & 255u);
+        if (i % 32 < 4) v = 0;
+        else if (i % 32 < 8) v = 255;
+        dst[i] = (uint8_t)v;
+        float s = rng_unit(seed);
+        if (i % 29 == 0) s = 1.0f;
+        else if (i % 31 == 0) s = 0.0f;
+        col[i] = s;
+    }
+}
+
+/* Every (sfactor, dfactor) pair Mesa accepts (GL_SRC_ALPHA_SATURATE as a
+ * destination factor too), random source floats and
  * destination bytes (with 0 and 255 mixed in). */
 TEST(blend_all_factor_pairs_vs_osmesa)
 {
@@ -224,19 +241,8 @@ TEST(blend_all_factor_pairs_vs_osmesa)
     int maxd_all = 0, pairs = 0;
     for (int a = 0; a < N_FACTORS; a++) {
         for (int b = 0; b < N_FACTORS; b++) {
-            if (k_factors[b] == GL_SRC_ALPHA_SATURATE)
-                continue;
             pairs++;
-            for (int i = 0; i < n * 4; i++) {
-                int v = (int)(rng_next(&seed) & 255u);
-                if (i % 32 < 4) v = 0;
-                else if (i % 32 < 8) v = 255;
-                dst[i] = (uint8_t)v;
-                float s = rng_unit(&seed);
-                if (i % 29 == 0) s = 1.0f;
-                else if (i % 31 == 0) s = 0.0f;
-                col[i] = s;
-            }
+            random_blend_inputs(&seed, n, dst, col);
             osm_put_rgba(&o, dst);
             glEnable(GL_BLEND);
             glBlendFunc(k_factors[a], k_factors[b]);
@@ -264,6 +270,80 @@ TEST(blend_all_factor_pairs_vs_osmesa)
            pairs, diff, total, maxd_all);
     CHECK_EQ_INT(diff, 0);
     CHECK(maxd_all <= 1);
+    free(xyz);
+    free(col);
+    free(dst);
+    free(ref);
+    fs_context_destroy(c);
+    osm_close(&o);
+}
+
+/* GL 1.4's blending (4.1.8): every equation of table 4.1 with random
+ * separate RGB and alpha factors (SRC_ALPHA_SATURATE as a destination
+ * factor too, which Mesa accepts) and random constant colours, some on the
+ * rounding ties (k + 0.5)/255 of the conversion to 8 bits, some outside
+ * [0,1] (clamped when specified). */
+static void set_blend(fs_context *c, const GLenum f[4], GLenum eq, const float cc[4])
+{
+    G(Enable, GL_BLEND);
+    G(BlendFuncSeparate, f[0], f[1], f[2], f[3]);
+    G(BlendEquation, eq);
+    G(BlendColor, cc[0], cc[1], cc[2], cc[3]);
+}
+
+TEST(blend_equations_separate_constant_vs_osmesa)
+{
+    enum { BW = 64, BH = 64 };
+    static const GLenum eqs[] = {GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX};
+    osm o;
+    REQUIRE(osm_open_ortho(&o, BW, BH));
+    fs_context *c = fs_context_create(NULL, BW, BH);
+    REQUIRE(c);
+    int n = BW * BH;
+    float *xyz = malloc(sizeof(float) * 3 * (size_t)n), *col = malloc(sizeof(float) * 4 * (size_t)n);
+    uint8_t *dst = malloc((size_t)n * 4), *ref = malloc((size_t)n * 4);
+    REQUIRE(xyz && col && dst && ref);
+    for (int i = 0; i < n; i++) {
+        xyz[i * 3] = (float)(i % BW) + 0.5f;
+        xyz[i * 3 + 1] = (float)(i / BW) + 0.5f;
+        xyz[i * 3 + 2] = 0.0f;
+    }
+    uint32_t seed = 0x2468aceu;
+    long total = 0, diff = 0;
+    for (int e = 0; e < 5; e++) {
+        for (int t = 0; t < 48; t++) {
+            GLenum f[4];
+            float cc[4];
+            for (int k = 0; k < 4; k++) {
+                f[k] = k_factors[rng_next(&seed) % N_FACTORS];
+                unsigned r = rng_next(&seed) % 4;
+                cc[k] = r == 0 ? ((float)(rng_next(&seed) % 255) + 0.5f) / 255.0f
+                        : r == 1 ? rng_unit(&seed) * 2.0f - 0.5f : rng_unit(&seed);
+            }
+            random_blend_inputs(&seed, n, dst, col);
+            osm_put_rgba(&o, dst);
+            set_blend(NULL, f, eqs[e], cc);
+            osm_points(n, xyz, col);
+            glDisable(GL_BLEND);
+            osm_read_rgba(&o, ref);
+
+            memcpy(c->fb.color, dst, (size_t)n * 4);
+            set_blend(c, f, eqs[e], cc);
+            CHECK_EQ_INT(c->error, GL_NO_ERROR);
+            for (int i = 0; i < n; i++)
+                frag_pixel(c, i % BW, i / BW, col + i * 4, 0);
+            int maxd;
+            long d = count_diff(ref, c->fb.color, (size_t)n * 4, &maxd);
+            if (d)
+                fprintf(stderr, "  eq 0x%x factors 0x%x 0x%x 0x%x 0x%x cc %g %g %g %g: %ld bytes differ (max %d)\n",
+                        eqs[e], f[0], f[1], f[2], f[3], cc[0], cc[1], cc[2], cc[3], d, maxd);
+            diff += d;
+            total += n * 4;
+        }
+    }
+    printf("  blend equations, separate factors, constant colour: %ld of %ld values differ from OSMesa\n", diff,
+           total);
+    CHECK_EQ_INT(diff, 0);
     free(xyz);
     free(col);
     free(dst);
@@ -997,11 +1077,21 @@ static void error_call(fs_context *c, int i, void *buf)
     case 24: BOTH(glScissor(-5, -5, 0, 0), fs_exec_Scissor(c, -5, -5, 0, 0)); break;
     case 25: BOTH(glReadPixels(0, 0, 0, 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, buf),
                   fs_exec_ReadPixels(c, 0, 0, 0, 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, buf)); break;
+    /* GL 1.4's blending commands (4.1.8). */
+    case 26: BOTH(glBlendEquation(GL_ONE), fs_exec_BlendEquation(c, GL_ONE)); break;
+    case 27: BOTH(glBlendEquation(GL_LOGIC_OP), fs_exec_BlendEquation(c, GL_LOGIC_OP)); break;
+    case 28: BOTH(glBlendFuncSeparate(GL_ONE, GL_ONE, GL_ONE, GL_LESS),
+                  fs_exec_BlendFuncSeparate(c, GL_ONE, GL_ONE, GL_ONE, GL_LESS)); break;
+    case 29: BOTH(glBlendFuncSeparate(0x1234, GL_ONE, GL_ONE, GL_ONE),
+                  fs_exec_BlendFuncSeparate(c, 0x1234, GL_ONE, GL_ONE, GL_ONE)); break;
+    case 30: BOTH(glBlendFunc(GL_ONE, GL_SRC_ALPHA_SATURATE), fs_exec_BlendFunc(c, GL_ONE, GL_SRC_ALPHA_SATURATE)); break;
+    case 31: BOTH(glBlendEquation(GL_MAX), fs_exec_BlendEquation(c, GL_MAX)); break;
+    case 32: BOTH(glBlendColor(NAN, -1.0f, 2.0f, 0.5f), fs_exec_BlendColor(c, NAN, -1.0f, 2.0f, 0.5f)); break;
     default: break;
     }
 #undef BOTH
 }
-#define N_ERROR_CASES 26
+#define N_ERROR_CASES 33
 
 /* Each erroneous call raises the same error as Mesa and changes no state. */
 TEST(gl_errors_match_osmesa)
@@ -1430,6 +1520,7 @@ TEST_LIST = {
     TEST_ENTRY(color_conversion_vs_osmesa),
     TEST_ENTRY(blend_all_factor_pairs_vs_osmesa),
     TEST_ENTRY(blend_src_alpha_exhaustive_vs_osmesa),
+    TEST_ENTRY(blend_equations_separate_constant_vs_osmesa),
     TEST_ENTRY(alpha_test_vs_osmesa),
     TEST_ENTRY(logic_ops_vs_osmesa),
     TEST_ENTRY(random_scene_vs_osmesa),

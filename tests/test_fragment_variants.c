@@ -78,6 +78,7 @@ static void apply_key(fs_context *c, uint32_t key)
     set_cap(c, GL_BLEND, key & FS_FKEY_BLEND);
     fs_exec_BlendFunc(c, factors[(key >> FS_FKEY_BLEND_SRC_SHIFT & 15u) % 15u],
                       factors[(key >> FS_FKEY_BLEND_DST_SHIFT & 15u) % 15u]);
+    fs_exec_BlendEquation(c, key & FS_FKEY_BLEND_EXT ? GL_FUNC_SUBTRACT : GL_FUNC_ADD);
     set_cap(c, GL_COLOR_LOGIC_OP, key & FS_FKEY_LOGIC);
     fs_exec_LogicOp(c, GL_CLEAR + (key >> FS_FKEY_LOGIC_OP_SHIFT & 15u));
     unsigned cm = key >> FS_FKEY_COLOR_MASK_SHIFT;
@@ -88,7 +89,7 @@ static void apply_key(fs_context *c, uint32_t key)
  * all channels on, a depth test or blending of the kinds the table has). */
 static uint32_t random_key(uint32_t *s, const fs_fragment_variant *v, int nv)
 {
-    uint32_t key = rng(s) & 0x0fffffffu;
+    uint32_t key = rng(s) & 0x1fffffffu;
     if (rng(s) % 2) {
         const fs_fragment_variant *e = &v[rng(s) % (unsigned)(nv - 1)];
         key = (key & ~e->mask) | e->value;
@@ -304,7 +305,8 @@ static void random_setter(fs_context *c, uint32_t *s)
 {
     static const GLenum caps[] = {GL_SCISSOR_TEST, GL_ALPHA_TEST, GL_STENCIL_TEST, GL_DEPTH_TEST, GL_BLEND,
                                   GL_COLOR_LOGIC_OP, GL_DITHER};
-    switch (rng(s) % 14) {
+    static const GLenum equations[] = {GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX};
+    switch (rng(s) % 17) {
     case 0: set_cap(c, pick(s, caps, N_OF(caps)), rng(s) % 2); break;
     case 1: fs_exec_DepthFunc(c, pick(s, funcs, 8)); break;
     case 2: fs_exec_DepthMask(c, rng(s) % 2); break;
@@ -317,6 +319,10 @@ static void random_setter(fs_context *c, uint32_t *s)
     case 9: fs_exec_PushAttrib(c, rng(s) % 2 ? GL_ALL_ATTRIB_BITS : GL_DEPTH_BUFFER_BIT); break;
     case 10: fs_exec_PopAttrib(c); break;
     case 11: fs_exec_Hint(c, GL_FOG_HINT, GL_NICEST); break;
+    case 12: fs_exec_BlendEquation(c, pick(s, equations, 5)); break;
+    case 13: fs_exec_BlendFuncSeparate(c, pick(s, factors, 10), pick(s, factors, 10), pick(s, factors, 10),
+                                       pick(s, factors, 10)); break;
+    case 14: fs_exec_BlendColor(c, 0.25f, 0.5f, 0.75f, (float)(rng(s) % 3) * 0.5f); break;
     default: apply_key(c, rng(s) % 2 ? 15u << FS_FKEY_COLOR_MASK_SHIFT | FS_FKEY_DEPTH | FS_FKEY_DEPTH_WRITE | FS_FKEY_DEPTH_FUNC(GL_LESS)
                                    : rng(s)); break;
     }

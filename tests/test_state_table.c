@@ -7,6 +7,7 @@
  * several seeds; the stacks' depths and errors (GL 1.5 spec 6.1.14) are
  * OSMesa's.
  */
+#define GL_GLEXT_PROTOTYPES
 #include <GL/osmesa.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
@@ -245,6 +246,10 @@ static void random_vertex_state(fs_context *c, unsigned *s, bool color_material)
     static const GLenum cm[] = {GL_EMISSION, GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_AMBIENT_AND_DIFFUSE};
     if (color_material)
         G(ColorMaterial, faces[pick(s, 3)], cm[pick(s, 5)]);
+    /* The raster position (2.13): glWindowPos, as glRasterPos under this
+     * state would meet texture coordinate generation, which the vertex
+     * stage does not do yet (tests/test_pixel_rect.c covers glRasterPos). */
+    G(WindowPos3f, rndf(s, -9, 70), rndf(s, -9, 70), rndf(s, -0.5f, 1.5f));
 }
 
 static void random_raster_state(fs_context *c, unsigned *s)
@@ -290,11 +295,18 @@ static void random_fragment_state(fs_context *c, unsigned *s)
     G(DepthFunc, funcs[pick(s, 8)]);
     G(DepthMask, (GLboolean)pick(s, 2));
     G(BlendFunc, blend_factors[pick(s, N(blend_factors))], blend_factors[pick(s, 6)]);
+    if (pick(s, 2))
+        G(BlendFuncSeparate, blend_factors[pick(s, N(blend_factors))], blend_factors[pick(s, 6)],
+          blend_factors[pick(s, N(blend_factors))], blend_factors[pick(s, 6)]);
+    static const GLenum equations[] = {GL_FUNC_ADD, GL_FUNC_SUBTRACT, GL_FUNC_REVERSE_SUBTRACT, GL_MIN, GL_MAX};
+    G(BlendEquation, equations[pick(s, N(equations))]);
     G(LogicOp, GL_CLEAR + pick(s, 16));
     G(ColorMask, (GLboolean)pick(s, 2), (GLboolean)pick(s, 2), (GLboolean)pick(s, 2), (GLboolean)pick(s, 2));
     float v[4];
     random_colour(s, v, -0.5f, 1.5f);
     G(ClearColor, v[0], v[1], v[2], v[3]);
+    random_colour(s, v, -0.5f, 1.5f);
+    G(BlendColor, v[0], v[1], v[2], v[3]);
     G(ClearDepth, rndf(s, -0.5f, 1.5f));
     G(ClearStencil, pick(s, 1000) - 300);
     random_colour(s, v, -1.5f, 1.5f);
@@ -685,8 +697,6 @@ TEST(pop_marks_groups_dirty)
 
 /* Not yet in the table. */
 #define PENDING_STATE \
-    GL_CURRENT_RASTER_COLOR, GL_CURRENT_RASTER_INDEX, GL_CURRENT_RASTER_TEXTURE_COORDS, \
-    GL_CURRENT_RASTER_POSITION, GL_CURRENT_RASTER_POSITION_VALID, GL_CURRENT_RASTER_DISTANCE, \
     GL_PIXEL_MAP_I_TO_I_SIZE, GL_PIXEL_MAP_S_TO_S_SIZE, GL_PIXEL_MAP_I_TO_R_SIZE, \
     GL_PIXEL_MAP_I_TO_G_SIZE, GL_PIXEL_MAP_I_TO_B_SIZE, GL_PIXEL_MAP_I_TO_A_SIZE, GL_PIXEL_MAP_R_TO_R_SIZE, \
     GL_PIXEL_MAP_G_TO_G_SIZE, GL_PIXEL_MAP_B_TO_B_SIZE, GL_PIXEL_MAP_A_TO_A_SIZE, GL_MAP_COLOR, \
@@ -694,9 +704,9 @@ TEST(pop_marks_groups_dirty)
     GL_BLUE_SCALE, GL_BLUE_BIAS, GL_ALPHA_SCALE, GL_ALPHA_BIAS, GL_DEPTH_SCALE, GL_DEPTH_BIAS, \
     GL_MAP1_GRID_DOMAIN, GL_MAP1_GRID_SEGMENTS, GL_MAP2_GRID_DOMAIN, \
     GL_MAP2_GRID_SEGMENTS, \
-    GL_BLEND_COLOR, GL_BLEND_EQUATION, GL_TEXTURE_BINDING_1D, GL_TEXTURE_BINDING_3D, GL_INDEX_ARRAY_TYPE, \
-    GL_INDEX_ARRAY_STRIDE, GL_EDGE_FLAG_ARRAY_STRIDE, GL_BLEND_DST_RGB, GL_BLEND_SRC_RGB, GL_BLEND_DST_ALPHA, \
-    GL_BLEND_SRC_ALPHA, GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX, GL_POINT_FADE_THRESHOLD_SIZE, \
+    GL_TEXTURE_BINDING_1D, GL_TEXTURE_BINDING_3D, GL_INDEX_ARRAY_TYPE, \
+    GL_INDEX_ARRAY_STRIDE, GL_EDGE_FLAG_ARRAY_STRIDE, \
+    GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX, GL_POINT_FADE_THRESHOLD_SIZE, \
     GL_POINT_DISTANCE_ATTENUATION, GL_CURRENT_FOG_COORDINATE, GL_CURRENT_FOG_COORD, \
     GL_FOG_COORDINATE_ARRAY_TYPE, GL_FOG_COORD_ARRAY_TYPE, GL_FOG_COORDINATE_ARRAY_STRIDE, \
     GL_FOG_COORD_ARRAY_STRIDE, GL_CURRENT_SECONDARY_COLOR, GL_SECONDARY_COLOR_ARRAY_SIZE, \
