@@ -91,6 +91,19 @@ test_hierarchy_counts() {
         fail "--leaf 2: $line"
 }
 
+# The cycles column: scripts/cullstudy_cycles.sh replays the shim's capture
+# in the cycle model; the replay draws the program's images.
+test_cycles_column_from_capture() {
+    local root; root=$(cd "$(dirname "$0")/.." && pwd)
+    "$root/scripts/cullstudy_cycles.sh" "$FRAGSIM_BUILD" "$root/configs/o2.ini" --out "$WORK/cyc" --frames 2 \
+        --size 96x96 --method vo >"$WORK/cyc.log" 2>&1 || fail "cullstudy_cycles.sh: $(tail -n 5 "$WORK/cyc.log")"
+    local bad; bad=$(awk -F, 'NR > 1 && !($NF ~ /^[1-9][0-9]*$/)' "$WORK/cyc/culling.csv")
+    [ -z "$bad" ] && [ "$(wc -l <"$WORK/cyc/culling.csv")" -eq 3 ] || fail "cycles column: $(cat "$WORK/cyc/culling.csv")"
+    for n in frame_0000.png frame_0001.png; do
+        "$FRAGSIM" diff "$WORK/cyc/$n" "$WORK/cyc/cycle_frames/$n" >/dev/null || fail "the cycle replay's $n differs"
+    done
+}
+
 # What is not there says so, with exit 2 and nothing drawn.
 test_unavailable_and_bad_options() {
     local out
@@ -109,7 +122,7 @@ test_unavailable_and_bad_options() {
 
 for t in test_methods_identical_to_dr_on_the_model test_methods_identical_to_dr_on_osmesa \
          test_query_methods_model_equals_osmesa test_culling_culls test_hierarchy_counts \
-         test_unavailable_and_bad_options; do
+         test_cycles_column_from_capture test_unavailable_and_bad_options; do
     run_test "$t"
 done
 finish
