@@ -138,10 +138,11 @@ static uint64_t stencil_test(const cull_view *v, const cull_box *b, int sampling
         glReadPixels(r[0], y, w, 1, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, row);
         for (int x = 0; x < w; x++) n += row[x] != 0;
     }
+    int read = row != NULL;
     free(row);
     glClear(GL_STENCIL_BUFFER_BIT); /* leave the virtual occlusion buffer empty */
     glDisable(GL_SCISSOR_TEST);
-    return row ? n : 1; /* out of memory: visible, which is safe */
+    return read ? n : 1; /* out of memory: visible, which is safe */
 }
 
 uint64_t cull_occlusion_test(int test, const cull_view *v, const cull_box *b, int sampling)
