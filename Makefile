@@ -51,7 +51,7 @@ WHOLE_LIB = -Wl,--whole-archive $(LAYER_LIBS) -Wl,--no-whole-archive
 
 .PHONY: all deps test run sanitize fuzz bench golden docs clean scenes tests shim study-filters exec-check gl-coverage
 .PHONY: studies study-occlusion study-query-cost study-texture-cache conformance conformance-run
-all: $(LIB) $(FRAGSIM) tests scenes shim exec-check
+all: $(LIB) $(FRAGSIM) tests scenes shim exec-check cullstudy
 
 deps:
 	@scripts/deps.sh
@@ -104,6 +104,24 @@ $(BUILD)/tests/%: $(BUILD)/tests/%.o $(LIB) $(filter-out $(BUILD)/driver/cli_mai
 scenes: $(SCENEGEN)
 $(SCENEGEN): $(SCENE_SRCS:%.c=$(BUILD)/%.o) $(LIB)
 	$(CC) $(LDFLAGS) -o $@ $(SCENE_SRCS:%.c=$(BUILD)/%.o) $(WHOLE_LIB) $(PKG_LIBS) -lm
+
+# The culling study (traces/culling/, issue 21): one OSMesa program built
+# against the shim (cullstudy: the model) and against libOSMesa
+# (cullstudy-osmesa: llvmpipe).  The scene generators' emitter and the city
+# are compiled again with SG_DIRECT_GL, so they send plain gl* calls.
+CULL_SRCS := $(wildcard traces/culling/*.c)
+CULL_GEOM := traces/sg.c traces/scene_city.c
+CULL_OBJS := $(CULL_SRCS:%.c=$(BUILD)/cull/%.o) $(CULL_GEOM:%.c=$(BUILD)/cull/%.o)
+CULLSTUDY := $(BUILD)/cullstudy $(BUILD)/cullstudy-osmesa
+.PHONY: cullstudy
+cullstudy: $(CULLSTUDY)
+$(BUILD)/cull/%.o: %.c
+	@mkdir -p $(dir $@)
+	$(CC) $(CFLAGS) -DSG_DIRECT_GL -MMD -MP -c $< -o $@
+$(BUILD)/cullstudy: $(CULL_OBJS) $(SHIM)
+	$(CC) $(LDFLAGS) -o $@ $(CULL_OBJS) -L$(BUILD) -lfragsimGL -Wl,-rpath,$(abspath $(BUILD)) -lz -lm
+$(BUILD)/cullstudy-osmesa: $(CULL_OBJS)
+	$(CC) $(LDFLAGS) -o $@ $(CULL_OBJS) -lOSMesa -lz -lm
 
 test: deps all
 	@tests/run_all.sh $(BUILD)

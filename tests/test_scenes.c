@@ -21,6 +21,7 @@
 #include <unistd.h>
 #include "check.h"
 #include "../traces/sg.c"
+#include "../traces/sg_scenes.c"
 #include "../traces/scene_city.c"
 #include "../traces/scene_cathedral.c"
 #include "../traces/scene_forest.c"

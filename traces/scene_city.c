@@ -21,8 +21,8 @@
 #include <string.h>
 #include "sg.h"
 
-#define CITY_LOT 22.0f    /* metres per lot: house plus half a street each side */
-#define CITY_FLOOR_H 3.0f
+#define CITY_LOT SG_CITY_LOT
+#define CITY_FLOOR_H SG_CITY_FLOOR_H
 
 typedef struct city_layout {
     float w, d;        /* footprint */
@@ -218,6 +218,63 @@ static int city_house(sg *s, uint64_t seed, uint64_t budget, int max_floors)
     return 0;
 }
 
+int sg_city_plan_make(sg_city_plan *pl, uint64_t n, uint64_t target, int max_floors,
+                      const char *name, char *err, size_t errlen)
+{
+    memset(pl, 0, sizeof *pl);
+    int cols = (int)ceil(sqrt((double)n)), rows = (int)((n + (uint64_t)cols - 1) / (uint64_t)cols);
+    uint64_t ground = 2ull * (uint64_t)(cols + 2) * (uint64_t)(rows + 2);
+    if (target < ground + n * 100) {
+        snprintf(err, errlen, "%s: %llu triangles are too few for %llu houses", name,
+                 (unsigned long long)target, (unsigned long long)n);
+        return -1;
+    }
+    uint64_t houses = target - ground, q = houses / n;
+    pl->houses = n;
+    pl->cols = cols;
+    pl->rows = rows;
+    pl->budget = q;
+    pl->landmark_budget = houses - (n - 1) * q;
+    pl->landmark = n / 2;
+    pl->variants = n - 1 < 8 ? (int)(n - 1) : 8;
+    pl->max_floors = max_floors;
+    return 0;
+}
+
+int sg_city_compile(sg *s, const sg_city_plan *pl, uint64_t seed, GLuint base, const char *name,
+                    char *err, size_t errlen)
+{
+    for (int v = 0; v <= pl->variants; v++) {
+        sg_new_list(s, base + (GLuint)v);
+        int rc = v < pl->variants ? city_house(s, seed * 977 + (uint64_t)v, pl->budget, pl->max_floors)
+                                  : city_house(s, seed * 977 + 1000, pl->landmark_budget, pl->max_floors + 2);
+        sg_end_list(s);
+        if (rc != 0) {
+            snprintf(err, errlen, "%s: a house budget of %llu triangles is too small", name,
+                     (unsigned long long)pl->budget);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+uint64_t sg_city_lots_seed(uint64_t seed) { return seed * 31 + 7; }
+
+void sg_city_lot(sg_rng *lots, const sg_city_plan *pl, uint64_t i, int *variant, int *turn)
+{
+    /* Two draws per lot, in this order, whether or not the lot is drawn. */
+    *variant = i == pl->landmark ? pl->variants : sg_rng_int(lots, pl->variants);
+    *turn = sg_rng_int(lots, 4);
+}
+
+void sg_city_lot_transform(sg *s, const sg_city_plan *pl, uint64_t i, int turn)
+{
+    int cx = (int)(i % (uint64_t)pl->cols), cz = (int)(i / (uint64_t)pl->cols);
+    G(s, Translatef, (cx + 0.5f) * CITY_LOT, 0.0f, (cz + 0.5f) * CITY_LOT);
+    G(s, Rotatef, 90.0f * (float)turn, 0.0f, 1.0f, 0.0f);
+    G(s, Translatef, -6.0f, 0.0f, -5.0f);
+}
+
 static int city_run(sg *s, const sg_params *p, int paper_houses, double paper_density,
                     int max_floors, const char *name, char *err, size_t errlen)
 {
@@ -228,33 +285,16 @@ static int city_run(sg *s, const sg_params *p, int paper_houses, double paper_de
         n = (uint64_t)((double)p->target / paper_density);
         if (n < 4) n = p->target / 700 < 4 ? (p->target / 700 ? p->target / 700 : 1) : 4;
     }
-    int cols = (int)ceil(sqrt((double)n)), rows = (int)((n + (uint64_t)cols - 1) / (uint64_t)cols);
-    uint64_t ground = 2ull * (uint64_t)(cols + 2) * (uint64_t)(rows + 2);
-    if (p->target < ground + n * 100) {
-        snprintf(err, errlen, "%s: %llu triangles are too few for %llu houses", name,
-                 (unsigned long long)p->target, (unsigned long long)n);
-        return -1;
-    }
-    uint64_t houses = p->target - ground, q = houses / n, landmark_budget = houses - (n - 1) * q;
-    uint64_t landmark = n / 2;
-    int variants = n - 1 < 8 ? (int)(n - 1) : 8;
+    sg_city_plan pl;
+    if (sg_city_plan_make(&pl, n, p->target, max_floors, name, err, errlen) != 0) return -1;
+    int cols = pl.cols, rows = pl.rows;
 
-    GLuint base = sg_gen_lists(s, variants + 1);
+    GLuint base = sg_gen_lists(s, pl.variants + 1);
     if (!base) {
         snprintf(err, errlen, "%s: glGenLists failed", name);
         return -1;
     }
-    for (int v = 0; v <= variants; v++) {
-        sg_new_list(s, base + (GLuint)v);
-        int rc = v < variants ? city_house(s, p->seed * 977 + (uint64_t)v, q, max_floors)
-                              : city_house(s, p->seed * 977 + 1000, landmark_budget, max_floors + 2);
-        sg_end_list(s);
-        if (rc != 0) {
-            snprintf(err, errlen, "%s: a house budget of %llu triangles is too small", name,
-                     (unsigned long long)q);
-            return -1;
-        }
-    }
+    if (sg_city_compile(s, &pl, p->seed, base, name, err, errlen) != 0) return -1;
 
     G(s, Enable, GL_DEPTH_TEST);
     G(s, Enable, GL_CULL_FACE);
@@ -289,15 +329,12 @@ static int city_run(sg *s, const sg_params *p, int paper_houses, double paper_de
         sg_grid(s, go, gu, gv, rows + 2, cols + 2);
 
         sg_rng lots;
-        sg_rng_seed(&lots, p->seed * 31 + 7);
+        sg_rng_seed(&lots, sg_city_lots_seed(p->seed));
         for (uint64_t i = 0; i < n; i++) {
-            int cx = (int)(i % (uint64_t)cols), cz = (int)(i / (uint64_t)cols);
-            int v = i == landmark ? variants : sg_rng_int(&lots, variants);
-            int turn = sg_rng_int(&lots, 4);
+            int v, turn;
+            sg_city_lot(&lots, &pl, i, &v, &turn);
             G0(s, PushMatrix);
-            G(s, Translatef, (cx + 0.5f) * CITY_LOT, 0.0f, (cz + 0.5f) * CITY_LOT);
-            G(s, Rotatef, 90.0f * (float)turn, 0.0f, 1.0f, 0.0f);
-            G(s, Translatef, -6.0f, 0.0f, -5.0f);
+            sg_city_lot_transform(s, &pl, i, turn);
             sg_call_list(s, base + (GLuint)v);
             G0(s, PopMatrix);
         }

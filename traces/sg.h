@@ -56,15 +56,27 @@ typedef struct sg {
 #define SG_IS_POINTER(id) \
     ((id) == FS_CMD_VertexPointer || (id) == FS_CMD_NormalPointer || \
      (id) == FS_CMD_ColorPointer || (id) == FS_CMD_TexCoordPointer)
-/* Sends fsgl<Name> when there is a context; counts it either way. */
+/* One GL call.  scenegen sends fsgl<Name> to its fragsim context; the
+ * culling program (traces/culling/, built with SG_DIRECT_GL) sends gl<Name>
+ * to the current context of whichever GL library it is linked with, so the
+ * same geometry runs on libOSMesa and on the shim.  There, c is only a
+ * "live" marker (sg_init's c is never dereferenced). */
+#ifdef SG_DIRECT_GL
+#define SG_SEND(s, Name, ...) gl##Name(__VA_ARGS__)
+#define SG_SEND0(s, Name) gl##Name()
+#else
+#define SG_SEND(s, Name, ...) fsgl##Name((s)->c, __VA_ARGS__)
+#define SG_SEND0(s, Name) fsgl##Name((s)->c)
+#endif
+/* Sends <Name> when there is a context; counts it either way. */
 #define G(s, Name, ...) \
     do { \
         (s)->calls++; \
         if (SG_IS_POINTER(FS_CMD_##Name)) (s)->pointer_calls++; \
-        if ((s)->c) fsgl##Name((s)->c, __VA_ARGS__); \
+        if ((s)->c) SG_SEND(s, Name, __VA_ARGS__); \
     } while (0)
 #define G0(s, Name) \
-    do { (s)->calls++; if ((s)->c) fsgl##Name((s)->c); } while (0)
+    do { (s)->calls++; if ((s)->c) SG_SEND0(s, Name); } while (0)
 
 void sg_init(sg *s, fs_context *c);
 void sg_free(sg *s);
@@ -173,6 +185,29 @@ int sg_generate(const sg_scene *sc, const sg_params *p, const char *path,
                 sg_report *rep, char *err, size_t errlen);
 /* Runs the scene without a context and reports what it would submit. */
 int sg_count(const sg_scene *sc, const sg_params *p, sg_report *rep, char *err, size_t errlen);
+
+/* The city generator's parts (scene_city.c), shared with the culling
+ * program: the lot grid and house budgets, the house variants compiled into
+ * display lists base..base+variants, and each lot's variant and turn. */
+typedef struct sg_city_plan {
+    uint64_t houses;           /* lots */
+    int cols, rows, variants;  /* variants regular houses + 1 landmark */
+    uint64_t budget, landmark_budget, landmark;
+    int max_floors;            /* regular houses; the landmark has 2 more */
+} sg_city_plan;
+#define SG_CITY_LOT 22.0f      /* metres per lot: house plus half a street each side */
+#define SG_CITY_FLOOR_H 3.0f
+int sg_city_plan_make(sg_city_plan *pl, uint64_t houses, uint64_t target, int max_floors,
+                      const char *name, char *err, size_t errlen);
+/* Compiles the variants into lists base..base+variants; 0 or -1 (err). */
+int sg_city_compile(sg *s, const sg_city_plan *pl, uint64_t seed, GLuint base, const char *name,
+                    char *err, size_t errlen);
+/* Lot i's variant and turn (quarter turns about y), drawn from 'lots'
+ * (seeded with sg_city_lots_seed) in lot order. */
+uint64_t sg_city_lots_seed(uint64_t seed);
+void sg_city_lot(sg_rng *lots, const sg_city_plan *pl, uint64_t i, int *variant, int *turn);
+/* The lot's model transform, as glTranslate/glRotate calls. */
+void sg_city_lot_transform(sg *s, const sg_city_plan *pl, uint64_t i, int turn);
 
 /* Scene entry points (traces/scene_*.c). */
 int sg_scene_city(sg *s, const sg_params *p, char *err, size_t errlen);

@@ -1,0 +1,128 @@
+#!/bin/bash
+# The culling study's program (traces/culling/, issue 21): build/cullstudy on
+# the model (the shim) and build/cullstudy-osmesa on libOSMesa, small city,
+# a few frames.  Culling with exact tests is conservative (Huettner 1999,
+# sec. 3.1.6), so every method's images must equal DR's at tolerance 0, on
+# both libraries; the query methods must make the same decisions and images
+# on the model as on llvmpipe.
+. "$(dirname "$0")/lib_cli.sh"
+: "${FRAGSIM:?}" "${FRAGSIM_BUILD:?}"
+SHIMBIN="$FRAGSIM_BUILD/cullstudy"
+OSMBIN="$FRAGSIM_BUILD/cullstudy-osmesa"
+FRAMES=3
+SIZE=160x160
+
+run_cull() { # BINARY NAME ARGS... -> $WORK/NAME
+    local bin=$1 name=$2; shift 2
+    [ -x "$bin" ] || fail "no $bin (make cullstudy)"
+    "$bin" --frames $FRAMES --size $SIZE --out "$WORK/$name" "$@" >"$WORK/$name.out" 2>"$WORK/$name.err" ||
+        fail "$name: exit $?: $(cat "$WORK/$name.err")"
+}
+
+same_images() { # DIR_A DIR_B
+    for f in $(seq 0 $((FRAMES - 1))); do
+        local n; n=$(printf 'frame_%04d.png' "$f")
+        [ -f "$1/$n" ] && [ -f "$2/$n" ] || fail "missing $n in $1 or $2"
+        "$FRAGSIM" diff "$1/$n" "$2/$n" >"$WORK/diff.txt" 2>&1 || fail "$2/$n differs from $1/$n: $(tail -n 3 "$WORK/diff.txt")"
+    done
+}
+
+col_sum() { # CSV COLUMN_NAME -> the column's sum
+    awk -F, -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i; next } { s += $k } END { print s + 0 }' "$1"
+}
+
+test_methods_identical_to_dr_on_the_model() {
+    run_cull "$SHIMBIN" m_dr --method dr
+    for spec in "vfc query" "vo query" "cac query" "vo stencil" "vo hp"; do
+        set -- $spec
+        run_cull "$SHIMBIN" "m_$1_$2" --method "$1" --test "$2"
+        same_images "$WORK/m_dr" "$WORK/m_$1_$2"
+    done
+}
+
+test_methods_identical_to_dr_on_osmesa() {
+    run_cull "$OSMBIN" o_dr --method dr
+    for spec in "vfc query" "vo query" "cac query" "vo stencil"; do
+        set -- $spec
+        run_cull "$OSMBIN" "o_$1_$2" --method "$1" --test "$2"
+        same_images "$WORK/o_dr" "$WORK/o_$1_$2"
+    done
+}
+
+test_query_methods_model_equals_osmesa() {
+    for spec in "dr query" "vo query" "cac query" "vo stencil"; do
+        set -- $spec
+        run_cull "$SHIMBIN" "s_$1_$2" --method "$1" --test "$2"
+        run_cull "$OSMBIN" "l_$1_$2" --method "$1" --test "$2"
+        same_images "$WORK/l_$1_$2" "$WORK/s_$1_$2"
+        diff "$WORK/l_$1_$2/culling.csv" "$WORK/s_$1_$2/culling.csv" >&2 ||
+            fail "$1 $2: the model's culling decisions differ from llvmpipe's"
+    done
+}
+
+# The study must cull: VFC drops houses behind the walker, and the occlusion
+# tests drop hidden ones the frustum keeps (this path has some at frame 0).
+test_culling_culls() {
+    run_cull "$SHIMBIN" c_vfc --method vfc
+    run_cull "$SHIMBIN" c_vo --method vo
+    local dr=$((36 * FRAMES)) vfc vo occ
+    vfc=$(col_sum "$WORK/c_vfc/culling.csv" objects_rendered)
+    vo=$(col_sum "$WORK/c_vo/culling.csv" objects_rendered)
+    occ=$(col_sum "$WORK/c_vo/culling.csv" occ_culled)
+    [ "$(wc -l <"$WORK/c_vo/culling.csv")" -eq $((FRAMES + 1)) ] || fail "culling.csv: not one row per frame"
+    [ "$vfc" -lt "$dr" ] || fail "VFC drew $vfc of $dr houses"
+    [ "$vo" -lt "$vfc" ] && [ "$occ" -gt 0 ] || fail "V+O drew $vo houses (VFC $vfc), $occ nodes occluded"
+}
+
+# Node and leaf counts: one house per leaf gives 36 leaves; p-HBVO's trees are
+# binary (sec. 3.1.5: "non-sloppy binary trees"), so 2 * 36 - 1 nodes.
+test_hierarchy_counts() {
+    for h in phbvo dbvs sgi; do
+        run_cull "$SHIMBIN" "h_$h" --method vfc --hierarchy "$h" --frames 1
+    done
+    grep -qx "hierarchy p-HBVO: 71 nodes, 36 leaves, 36 objects" "$WORK/h_phbvo.out" || fail "$(cat "$WORK/h_phbvo.out")"
+    grep -qE "^hierarchy D-BVS: [0-9]+ nodes, 36 leaves" "$WORK/h_dbvs.out" || fail "$(cat "$WORK/h_dbvs.out")"
+    grep -qE "^hierarchy SGI: [0-9]+ nodes, 36 leaves" "$WORK/h_sgi.out" || fail "$(cat "$WORK/h_sgi.out")"
+    local line nodes leaves
+    line=$("$SHIMBIN" --method dr --frames 1 --size 64x64 --leaf 2 --out "$WORK/h2")
+    nodes=$(echo "$line" | sed -nE 's/.*: ([0-9]+) nodes, ([0-9]+) leaves.*/\1/p')
+    leaves=$(echo "$line" | sed -nE 's/.*: ([0-9]+) nodes, ([0-9]+) leaves.*/\2/p')
+    [ -n "$leaves" ] && [ "$leaves" -lt 36 ] && [ "$leaves" -ge 18 ] && [ "$nodes" -eq $((2 * leaves - 1)) ] ||
+        fail "--leaf 2: $line"
+}
+
+# The cycles column: scripts/cullstudy_cycles.sh replays the shim's capture
+# in the cycle model; the replay draws the program's images.
+test_cycles_column_from_capture() {
+    local root; root=$(cd "$(dirname "$0")/.." && pwd)
+    "$root/scripts/cullstudy_cycles.sh" "$FRAGSIM_BUILD" "$root/configs/o2.ini" --out "$WORK/cyc" --frames 2 \
+        --size 96x96 --method vo >"$WORK/cyc.log" 2>&1 || fail "cullstudy_cycles.sh: $(tail -n 5 "$WORK/cyc.log")"
+    local bad; bad=$(awk -F, 'NR > 1 && !($NF ~ /^[1-9][0-9]*$/)' "$WORK/cyc/culling.csv")
+    [ -z "$bad" ] && [ "$(wc -l <"$WORK/cyc/culling.csv")" -eq 3 ] || fail "cycles column: $(cat "$WORK/cyc/culling.csv")"
+    for n in frame_0000.png frame_0001.png; do
+        "$FRAGSIM" diff "$WORK/cyc/$n" "$WORK/cyc/cycle_frames/$n" >/dev/null || fail "the cycle replay's $n differs"
+    done
+}
+
+# What is not there says so, with exit 2 and nothing drawn.
+test_unavailable_and_bad_options() {
+    local out
+    out=$("$OSMBIN" --test hp --frames 1 --out "$WORK/x1" 2>&1); [ $? -eq 2 ] || fail "hp on libOSMesa: not exit 2"
+    echo "$out" | grep -q "does not offer GL_HP_occlusion_test" || fail "hp: $out"
+    out=$("$SHIMBIN" --test brief --frames 1 --out "$WORK/x2" 2>&1); [ $? -eq 2 ] || fail "brief: not exit 2"
+    echo "$out" | grep -q "not yet" || fail "brief: $out"
+    out=$("$SHIMBIN" --vfc-select 2>&1); [ $? -eq 2 ] || fail "--vfc-select: not exit 2"
+    echo "$out" | grep -q "selection mode.*not yet" || fail "--vfc-select: $out"
+    out=$("$SHIMBIN" --scene forest 2>&1); [ $? -eq 2 ] || fail "--scene forest: not exit 2"
+    "$SHIMBIN" --method xyz >/dev/null 2>&1; [ $? -eq 2 ] || fail "--method xyz: not exit 2"
+    "$SHIMBIN" --size 0x5 >/dev/null 2>&1; [ $? -eq 2 ] || fail "--size 0x5: not exit 2"
+    "$SHIMBIN" --frames >/dev/null 2>&1; [ $? -eq 2 ] || fail "--frames without a value: not exit 2"
+    [ ! -e "$WORK/x1" ] && [ ! -e "$WORK/x2" ] || fail "an output directory was made"
+}
+
+for t in test_methods_identical_to_dr_on_the_model test_methods_identical_to_dr_on_osmesa \
+         test_query_methods_model_equals_osmesa test_culling_culls test_hierarchy_counts \
+         test_cycles_column_from_capture test_unavailable_and_bad_options; do
+    run_test "$t"
+done
+finish

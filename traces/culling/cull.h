@@ -1,0 +1,80 @@
+/*
+ * The culling study (issue 21; Huettner 1999, sec. 3.1): an ordinary OSMesa
+ * program, built against libOSMesa (build/cullstudy-osmesa) and against
+ * fragsim's shim (build/cullstudy), so the same culling decisions are made
+ * on llvmpipe and on the model.
+ */
+#ifndef CULL_H
+#define CULL_H
+#include <stdint.h>
+#include <GL/gl.h>
+
+/* An axis-aligned box, world coordinates. */
+typedef struct cull_box { float lo[3], hi[3]; } cull_box;
+
+/* One object of the scene: the unit of geometry the hierarchies sort
+ * (a furnished house of the city).  The dissertation subdivides polygons;
+ * here a leaf holds whole objects, so no geometry is split or regrouped and
+ * every method draws the very same display-list calls as DR. */
+typedef struct cull_obj {
+    cull_box box;
+    uint64_t tris;
+    GLuint list;
+    uint64_t lot;
+    int turn;
+} cull_obj;
+
+/* A node of the snSP-tree (sec. 3.1.5): inner nodes only bound their
+ * children (boxes of one level may overlap: "sloppy"); leaves hold objects. */
+typedef struct cull_node {
+    cull_box box;
+    uint64_t tris;
+    int first_child, n_children;  /* into cull_tree.child */
+    int first_obj, n_objs;        /* leaves: into cull_tree.obj_index */
+} cull_node;
+
+typedef struct cull_tree {
+    cull_node *node;
+    int n_nodes, cap_nodes;
+    int *child;                   /* child node indices, grouped per node */
+    int n_child, cap_child;
+    int *obj_index;               /* object indices, grouped per leaf */
+    int n_leaves;
+} cull_tree;
+
+enum { CULL_DBVS, CULL_PHBVO, CULL_SGI };
+/* Builds the hierarchy over objs; leaf_objs: at most that many objects per
+ * leaf.  Returns 0, or -1 on out of memory. */
+int cull_tree_build(cull_tree *t, int kind, const cull_obj *objs, int n, int leaf_objs);
+void cull_tree_free(cull_tree *t);
+const char *cull_tree_name(int kind);
+
+/* ---- view frustum (CPU VFC, sec. 3.1.6) ---- */
+typedef struct cull_view {
+    float mvp[16];                /* projection * modelview, column-major as GL */
+    float planes[6][4];
+    float eye[3], dir[3];         /* eye position and unit view direction */
+    float znear;
+    int width, height;
+} cull_view;
+void cull_view_planes(cull_view *v);
+/* 0 outside, 1 intersecting, 2 entirely inside. */
+int cull_frustum_test(const cull_view *v, const cull_box *b);
+/* Distance from the eye along the view direction to the box's nearest
+ * corner (the DepthHeap key, sec. 3.1.8). */
+float cull_box_zmin(const cull_view *v, const cull_box *b);
+int cull_box_contains(const cull_box *b, const float p[3]);
+
+/* ---- occlusion tests (sec. 3.1.6) ---- */
+enum { CULL_TEST_QUERY, CULL_TEST_HP, CULL_TEST_BRIEF, CULL_TEST_STENCIL };
+/* Visible samples of the box against the current depth buffer (for hp:
+ * 1 or 0), colour, depth and stencil contents left as they were (stencil:
+ * the box's rectangle is cleared again).  sampling > 1 reads every
+ * sampling-th line of the stencil rectangle only (non-conservative). */
+uint64_t cull_occlusion_test(int test, const cull_view *v, const cull_box *b, int sampling);
+/* A reason the test cannot run on this GL, or NULL. */
+const char *cull_test_unavailable(int test);
+
+/* ---- output ---- */
+int cull_write_png(const char *path, const unsigned char *rgba, int w, int h);
+#endif
