@@ -75,19 +75,11 @@ void fs_exec_BlendEquation(fs_context *c, GLenum mode)
     }
 }
 
-/* The constant colour is clamped to [0,1] when specified (4.1.8; OSMesa's
- * glGet answers the clamped values). */
-static float clamp01(float x)
-{
-    return x > 0.0f ? (x < 1.0f ? x : 1.0f) : 0.0f;
-}
 
 void fs_exec_BlendColor(fs_context *c, GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha)
 {
-    c->frag.blend_color[0] = clamp01(red);
-    c->frag.blend_color[1] = clamp01(green);
-    c->frag.blend_color[2] = clamp01(blue);
-    c->frag.blend_color[3] = clamp01(alpha);
+    /* clamped when specified (4.1.8; OSMesa's glGet answers the clamped values) */
+    fs_clamp_color4(c->frag.blend_color, red, green, blue, alpha);
     fs_state_mark(c, GL_COLOR_BUFFER_BIT);
 }
 

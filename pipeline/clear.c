@@ -7,17 +7,10 @@
 #include <math.h>
 #include "fragment_stages.h"
 
-static inline float clampf01(float v)
-{
-    return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f;
-}
 
 void fs_exec_ClearColor(fs_context *c, GLclampf red, GLclampf green, GLclampf blue, GLclampf alpha)
 {
-    c->frag.clear_color[0] = clampf01(red);
-    c->frag.clear_color[1] = clampf01(green);
-    c->frag.clear_color[2] = clampf01(blue);
-    c->frag.clear_color[3] = clampf01(alpha);
+    fs_clamp_color4(c->frag.clear_color, red, green, blue, alpha);
 }
 
 void fs_exec_ClearDepth(fs_context *c, GLclampd depth)

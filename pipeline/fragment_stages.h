@@ -68,4 +68,12 @@ uint32_t fs_clear_depth_value(const fs_context *c);
 
 /* write_masks.c: writes rgba into dst honouring the colour mask (4.2.2). */
 void fs_masked_color_write(const fs_context *c, uint8_t *dst, const uint8_t rgba[4]);
+/* A colour given as GLclampf (glClearColor, glBlendColor) clamped to
+ * [0,1] when specified (GL 1.5 spec 2.1.1, 4.1.8, 4.2.3; NaN to 0). */
+static inline void fs_clamp_color4(float dst[4], float r, float g, float b, float a)
+{
+    const float v[4] = {r, g, b, a};
+    for (int k = 0; k < 4; k++)
+        dst[k] = v[k] > 0.0f ? (v[k] < 1.0f ? v[k] : 1.0f) : 0.0f;
+}
 #endif
