@@ -53,6 +53,7 @@ typedef struct cvert {
     float win[5];
     float col[2][4];
     float tc[4];
+    float fog;        /* fog coordinate (fs_pvert.fog) */
 } cvert;
 
 static void from_pvert(cvert *d, const fs_pvert *v)
@@ -61,6 +62,7 @@ static void from_pvert(cvert *d, const fs_pvert *v)
     memcpy(d->win, v->win, sizeof d->win);
     memcpy(d->col, v->col, sizeof d->col);
     memcpy(d->tc, v->tc, sizeof d->tc);
+    d->fog = v->fog;
 }
 
 #define LERP(t, out, in) ((out) + (t) * ((in) - (out)))
@@ -83,10 +85,12 @@ static void interp(const fs_vs_setup *s, cvert *d, float t, const cvert *out, co
     if (two)
         for (int k = 0; k < 4; k++)
             d->col[1][k] = LERP(t, out->col[1][k], in->col[1][k]);
+    d->fog = LERP(t, out->fog, in->fog);
 }
 
-static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const float *tc)
+static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const float *tc, float fog)
 {
+    r->fog = fog;
     r->x = win[0];
     r->y = win[1];
     r->z = win[2];
@@ -109,12 +113,12 @@ static int back_side(const fs_context *c, const float *a, const float *b, const 
 /* One triangle to the rasterizer from each vertex's window position,
  * colours (front then back, 8 floats) and texture coordinates. */
 static void emit3(fs_context *c, const fs_vs_setup *s, const float *const win[3], const float *const col[3],
-                  const float *const tc[3], const float *flat_col2)
+                  const float *const tc[3], const float fog[3], const float *flat_col2)
 {
     int side = s->two_side ? back_side(c, win[0], win[1], win[2]) : 0;
     fs_rvertex r[3];
     for (int i = 0; i < 3; i++)
-        to_rvertex(&r[i], win[i], (flat_col2 ? flat_col2 : col[i]) + 4 * side, tc[i]);
+        to_rvertex(&r[i], win[i], (flat_col2 ? flat_col2 : col[i]) + 4 * side, tc[i], fog[i]);
     fs_vs_impl *vi = fs_vs(c);
     if (vi->tri_hook)
         vi->tri_hook(vi->hook_user, &r[0], &r[1], &r[2]);
@@ -127,7 +131,8 @@ static void emit_cverts(fs_context *c, const fs_vs_setup *s, const cvert *a, con
     const float *const win[3] = {a->win, b->win, d->win};
     const float *const col[3] = {a->col[0], b->col[0], d->col[0]};
     const float *const tc[3] = {a->tc, b->tc, d->tc};
-    emit3(c, s, win, col, tc, flat_col2);
+    const float fog[3] = {a->fog, b->fog, d->fog};
+    emit3(c, s, win, col, tc, fog, flat_col2);
 }
 
 /* An unclipped triangle goes straight from its fs_pverts, without cvert
@@ -140,7 +145,8 @@ void fs_emit_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
     const float *const win[3] = {v0->win, v1->win, v2->win};
     const float *const col[3] = {v0->col[0], v1->col[0], v2->col[0]};
     const float *const tc[3] = {v0->tc, v1->tc, v2->tc};
-    emit3(c, s, win, col, tc, provoking >= 0 ? pv[provoking]->col[0] : NULL);
+    const float fog[3] = {v0->fog, v1->fog, v2->fog};
+    emit3(c, s, win, col, tc, fog, provoking >= 0 ? pv[provoking]->col[0] : NULL);
 }
 
 #define MAX_CLIPPED 16
@@ -232,8 +238,8 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
 static void emit_line2(fs_context *c, const cvert *a, const cvert *b, const float *flat)
 {
     fs_rvertex r[2];
-    to_rvertex(&r[0], a->win, flat ? flat : a->col[0], a->tc);
-    to_rvertex(&r[1], b->win, flat ? flat : b->col[0], b->tc);
+    to_rvertex(&r[0], a->win, flat ? flat : a->col[0], a->tc, a->fog);
+    to_rvertex(&r[1], b->win, flat ? flat : b->col[0], b->tc, b->fog);
     fs_raster_line(c, &r[0], &r[1]);
 }
 
@@ -324,5 +330,6 @@ void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)
     r.y_raster = v->win[4];
     memcpy(r.color, v->col[0], sizeof r.color);
     memcpy(r.tex, v->tc, sizeof r.tex);
+    r.fog = v->fog;
     fs_raster_point(c, &r);
 }

@@ -229,11 +229,16 @@ void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
     s.front = true;
     s.height = H;
     s.use_tex = r->interpolate_tex;
+    s.use_fog = r->interpolate_fog;
     s.zoffset = 0.0f;
     line_coef(&s.z, &li, va->z, vb->z);
     s.perspective = !(va->inv_w == 1.0f && vb->inv_w == 1.0f);
     if (s.perspective)
         line_coef(&s.w, &li, va->inv_w, vb->inv_w);
+    if (s.use_fog && s.perspective)
+        line_coef(&s.fog, &li, va->fog * va->inv_w, vb->fog * vb->inv_w);
+    else if (s.use_fog)
+        line_coef(&s.fog, &li, va->fog, vb->fog);
     /* Flat shading: the provoking colour as a constant (fs_raster_state.flat_color). */
     s.color_constant = r->flat_color;
     for (int k = 0; k < 4; k++) {

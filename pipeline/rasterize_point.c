@@ -63,12 +63,14 @@ void fs_raster_point(fs_context *c, const fs_rvertex *v)
     s.front = true;
     s.height = H;
     s.use_tex = r->interpolate_tex;
+    s.use_fog = r->interpolate_fog;
     s.zoffset = 0.0f;
     fs_plane_constant(&s.z, v->z);
     /* Perspective-correct constants are stored premultiplied by 1/w and
      * divided by the (constant) interpolated 1/w, as llvmpipe does. */
     s.perspective = v->inv_w != 1.0f;
     fs_plane_constant(&s.w, v->inv_w);
+    fs_plane_constant(&s.fog, s.perspective ? v->fog * v->inv_w : v->fog);
     /* Flat shading: the colour itself (fs_raster_state.flat_color). */
     s.color_constant = r->flat_color;
     for (int k = 0; k < 4; k++) {

@@ -161,6 +161,10 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
             for (int k = 0; k < 4; k++)                                           \
                 q->color[i][k] = PLANE_AT(&s->color[k], px, py);                  \
         }                                                                         \
+        /* The fog coordinate: perspective-correct whatever the shading. */   \
+        if (s->use_fog)                                                           \
+            q->fog[i] = s->perspective ? PLANE_AT(&s->fog, px, py) * (1.0f / PLANE_AT(&s->w, px, py)) \
+                                       : PLANE_AT(&s->fog, px, py);               \
     }                                                                             \
     /* Texture coordinates of all four pixels, covered or not: lambda comes \
      * from the quad's differences (GL 1.5 spec 3.8.8; llvmpipe shades   \
@@ -503,6 +507,7 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     s.front = front;
     s.height = H;
     s.use_tex = r->interpolate_tex;
+    s.use_fog = r->interpolate_fog;
     s.zoffset = 0.0f;
     if (r->offset_fill && mode == GL_FILL && (r->offset_factor != 0.0f || r->offset_units != 0.0f)) {
         /* GL 1.5 spec 3.5.5: o = m*factor + r*units with m the max depth
@@ -540,6 +545,8 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
                 float ta = a->tex[k] * a->inv_w, tb = b->tex[k] * b->inv_w, td = d->tex[k] * d->inv_w;
                 calc_coef(&s.tex[k], &g, ta, tb, td);
             }
+        if (s.use_fog)
+            calc_coef(&s.fog, &g, a->fog * a->inv_w, b->fog * b->inv_w, d->fog * d->inv_w);
     } else {
         /* With every 1/w equal to 1, llvmpipe's multiply by 1/w and divide by
          * the interpolated 1/w (exactly 1) change nothing. */
@@ -548,6 +555,8 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
         if (s.use_tex)
             for (int k = 0; k < 4; k++)
                 calc_coef(&s.tex[k], &g, a->tex[k], b->tex[k], d->tex[k]);
+        if (s.use_fog)
+            calc_coef(&s.fog, &g, a->fog, b->fog, d->fog);
     }
 
     c->stats.triangles_rasterized++;

@@ -32,6 +32,9 @@ typedef struct fs_rvertex {
      * value in 20 by one unit and rare edge pixels when the viewport
      * scale makes y_ndc * height/2 inexact. */
     float y_raster;
+    /* Fog (GL 1.5 spec 3.10), read only while fs_raster_state.interpolate_fog
+     * is set: the vertex's fog coordinate c (pipeline/fog.c). */
+    float fog;
 } fs_rvertex;
 
 /* Pixel i of a quad: 0 = (x,y), 1 = (x+1,y), 2 = (x,y+1), 3 = (x+1,y+1). */
@@ -55,6 +58,10 @@ typedef struct fs_quad {
      * y + 2 only for odd heights).  Its lambda decides how llvmpipe's
      * float path samples this quad (units/texture_sample.c). */
     float tex_pair[4][2][4];
+    /* Only while fs_raster_state.interpolate_fog is set: the fog coordinate
+     * of each covered pixel, interpolated perspective-correctly like a
+     * colour (pipeline/fog.c applies it after texturing, GL 1.5 spec 3.10). */
+    float fog[4];
 } fs_quad;
 
 /* Rasterizer state set by glCullFace, glFrontFace, glPolygonOffset,
@@ -74,6 +81,9 @@ typedef struct fs_raster_state {
     bool interpolate_tex;
     /* Set by texturing when fs_quad.tex_pair is needed (see there). */
     bool tex_pair_lod;
+    /* Set by the vertex stage while GL_FOG is enabled: the fog coordinate
+     * is interpolated into fs_quad.fog (skipped otherwise). */
+    bool interpolate_fog;
     /* Selects the plain per-pixel reference rasterizer instead of the
      * incremental one; both must give identical quads (tests hold them
      * equal). */

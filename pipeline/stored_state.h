@@ -10,14 +10,19 @@
 #include <stdbool.h>
 #include <GL/gl.h>
 
-/* GL 1.5 spec 3.10, table 6.10 (pipeline/fog.c).  Enabling GL_FOG is
- * counted as unsupported. */
+/* GL 1.5 spec 3.10, table 6.10 (pipeline/fog.c, which applies it; the
+ * one part of this header that is modelled). */
 typedef struct fs_fog_state {
+    bool enabled;               /* GL_FOG: false */
     GLenum mode;                /* GL_EXP */
     float density, start, end;  /* 1, 0, 1 */
     float index;                /* 0 */
     float color[4];             /* (0, 0, 0, 0), clamped to [0, 1] */
     GLenum coord_src;           /* GL_FRAGMENT_DEPTH */
+    /* Derived by the validation step (fs_fog_validate), in no state row:
+     * the four constants llvmpipe's fragment shader takes, -1/(e - s),
+     * e/(e - s), density/ln 2 and density/sqrt(ln 2). */
+    float params[4];
 } fs_fog_state;
 
 typedef struct fs_stored_state {

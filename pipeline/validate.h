@@ -30,6 +30,7 @@
 #define FS_FKEY_LOGIC (1u << 19)       /* GL_COLOR_LOGIC_OP, 4.1.10 */
 #define FS_FKEY_LOGIC_OP_SHIFT 20      /* 4 bits: op - GL_CLEAR */
 #define FS_FKEY_COLOR_MASK_SHIFT 24    /* 4 bits: bit k is channel k, 4.2.2 */
+#define FS_FKEY_FOG (1u << 28)         /* GL_FOG, 3.10: only the general path fogs */
 
 #define FS_FKEY_DEPTH_FUNC_MASK (7u << FS_FKEY_DEPTH_FUNC_SHIFT)
 #define FS_FKEY_BLEND_SRC_MASK (15u << FS_FKEY_BLEND_SRC_SHIFT)
@@ -56,7 +57,7 @@ static inline uint32_t fs_fkey_blend_factor(GLenum f)
 /* The groups whose state the fragment key reads. */
 #define FS_FRAGMENT_KEY_GROUPS                                                              \
     (GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | \
-     GL_SCISSOR_BIT | FS_DIRTY_OCCLUSION_MODE)
+     GL_SCISSOR_BIT | GL_FOG_BIT | FS_DIRTY_OCCLUSION_MODE)
 
 /* The fragment key of the context's current state, computed from scratch. */
 uint32_t fs_fragment_key(const fs_context *c);

@@ -290,6 +290,8 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     c->raster.use_y_raster = true; /* every fs_rvertex from here carries it */
     s->flat = c->lighting.shade_model == GL_FLAT;
     c->raster.flat_color = s->flat;
+    s->fog = c->st.fog.enabled;
+    c->raster.interpolate_fog = s->fog;
     fs_lighting_setup(c, s);
     /* Draws of one object share a modelview: invert it once (the
      * persistent setup of the context keeps the last one). */
@@ -326,6 +328,21 @@ static inline void vs_position(const fs_vs_setup *s, const fs_ivert *v, fs_pvert
     o->win[4] = fmaf(o->clip[1] * iw, s->yr_scale, s->yr_trans);
 }
 
+/* The fog coordinate (GL 1.5 spec 3.10) of a GL_FRAGMENT_DEPTH source:
+ * llvmpipe's fixed-function vertex shader takes the eye-plane distance,
+ * |z_e|, with z_e the modelview's third row times the object position in
+ * the order and float precision of the position transform (so the same
+ * bits as the z of the eye position lighting uses). */
+static inline float vs_fog_coord(const fs_vs_setup *s, const fs_ivert *v)
+{
+    const float *m = s->mv;
+    float z = m[2] * v->obj[0];
+    z = z + m[6] * v->obj[1];
+    z = z + m[10] * v->obj[2];
+    z = z + m[14] * v->obj[3];
+    return fabsf(z);
+}
+
 /* Colours (lighting, GL 1.5 spec 2.14) and texture coordinates (2.10.2). */
 static inline void vs_attributes(const fs_vs_setup *s, const fs_ivert *v, fs_pvert *o)
 {
@@ -354,6 +371,8 @@ static inline void vs_attributes(const fs_vs_setup *s, const fs_ivert *v, fs_pve
         memcpy(o->tc, v->tc, sizeof o->tc);
     else
         fs_mat_xform4(o->tc, s->tex, v->tc);
+    if (s->fog)
+        o->fog = vs_fog_coord(s, v);
 }
 
 /* A box edge as a pixel within [0, 65536] (compares, not fminf/fmaxf,
@@ -572,6 +591,7 @@ static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *
         if (!need) {
             memset(out[i].col, 0, sizeof out[i].col);
             memset(out[i].tc, 0, sizeof out[i].tc);
+            out[i].fog = 0.0f;
         }
         out[i].lazy = need;
     }

@@ -42,6 +42,9 @@ typedef struct fs_pvert {
                          (fs_rvertex.y_raster); valid when mask == 0 */
     float col[2][4];  /* front and back colour, clamped */
     float tc[4];
+    /* Fog (GL 1.5 spec 3.10), set while GL_FOG is enabled (fs_vs_setup.fog):
+     * the fog coordinate c, |z_e| or the vertex's fog coordinate. */
+    float fog;
     unsigned mask;    /* bit i: outside clip plane i (clip.c's order) */
     bool lazy;        /* col and tc not computed yet (fs_vs_process under a tile mask) */
 } fs_pvert;
@@ -79,6 +82,9 @@ typedef struct fs_vs_setup {
     int cm_face_mask;   /* bit 0 front, bit 1 back: faces tracking the colour */
     GLenum cm_mode;
     bool flat;
+    /* Fog (3.10): GL_FOG is enabled, so each vertex gets its fog
+     * coordinate (fs_pvert.fog). */
+    bool fog;
 } fs_vs_setup;
 
 /* The material from batch vertex `start` on, after a glMaterial between
