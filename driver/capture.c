@@ -198,9 +198,7 @@ static bool buffer_calls(fs_context *c, const fs_call *call)
     int t = call->nargs > 0 && call->a[0].i == GL_ELEMENT_ARRAY_BUFFER ? 1 : 0;
     int pk, slot = fs_pointer_slot(call->cmd, &pk);
     if (slot >= 0) {
-        const fs_client_array *arr[4] = {&c->arrays.vertex, &c->arrays.normal, &c->arrays.color,
-                                         &c->arrays.texcoord};
-        return arr[slot]->buffer != 0; /* else written as fake calls before the draws */
+        return fs_array_slot(&c->arrays, slot)->buffer != 0; /* else written as fake calls before the draws */
     }
     switch (call->cmd) {
     case FS_CMD_MapBuffer:

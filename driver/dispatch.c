@@ -293,12 +293,7 @@ static int bad_argument(fs_context *c, fs_call *call, int k)
  * carries its data, which lives only as long as the call.  The context keeps
  * its own copy, and a draw may read no further than that copy holds. */
 
-static fs_client_array *array_of_slot(fs_context *c, int slot)
-{
-    fs_client_array *const a[4] = {&c->arrays.vertex, &c->arrays.normal, &c->arrays.color,
-                                   &c->arrays.texcoord};
-    return a[slot];
-}
+static fs_client_array *array_of_slot(fs_context *c, int slot) { return fs_array_slot(&c->arrays, slot); }
 
 int fs_pointer_slot(int cmd, int *pk)
 {
@@ -308,6 +303,10 @@ int fs_pointer_slot(int cmd, int *pk)
     case FS_CMD_NormalPointer: *pk = 2; return 1; /* no size argument */
     case FS_CMD_ColorPointer: return 2;
     case FS_CMD_TexCoordPointer: return 3;
+    case FS_CMD_SecondaryColorPointer: return 4;
+    case FS_CMD_FogCoordPointer: *pk = 2; return 5;
+    case FS_CMD_EdgeFlagPointer: *pk = 1; return 6;
+    case FS_CMD_IndexPointer: *pk = 2; return 7;
     default: return -1;
     }
 }
@@ -362,7 +361,7 @@ static bool array_covers(const fs_client_array *a, int64_t hi)
 static bool draw_reads_in_bounds(fs_context *c, const fs_call *call)
 {
     int64_t lo, hi = -1;
-    for (int slot = 0; slot < 4; slot++) {
+    for (int slot = 0; slot < FS_ARRAY_SLOTS; slot++) {
         const fs_client_array *a = array_of_slot(c, slot);
         if (!a->enabled || a->bytes == SIZE_MAX)
             continue;

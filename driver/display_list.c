@@ -246,10 +246,10 @@ void fs_dlist_compile(fs_context *c, const fs_call *call)
         if (!snap)
             return;
         if (fs_draw_vertex_range(&e->call, &lo, &hi)) {
-            snapshot_array(s, l, &snap->vertex, &c->arrays.vertex, c->arrays.vertex.size, lo, hi);
-            snapshot_array(s, l, &snap->normal, &c->arrays.normal, 3, lo, hi);
-            snapshot_array(s, l, &snap->color, &c->arrays.color, c->arrays.color.size, lo, hi);
-            snapshot_array(s, l, &snap->texcoord, &c->arrays.texcoord, c->arrays.texcoord.size, lo, hi);
+            for (int k = 0; k < FS_ARRAY_SLOTS; k++) {
+                const fs_client_array *a = fs_array_slot(&c->arrays, k);
+                snapshot_array(s, l, fs_array_slot(snap, k), a, a->size, lo, hi);
+            }
         } else {
             memset(snap, 0, sizeof *snap);
         }

@@ -43,7 +43,8 @@ typedef struct array_track {
 } array_track;
 
 /* In fs_pointer_slot's order. */
-enum { ARR_VERTEX, ARR_NORMAL, ARR_COLOR, ARR_TEXCOORD, ARR_COUNT };
+enum { ARR_VERTEX, ARR_NORMAL, ARR_COLOR, ARR_TEXCOORD, ARR_SECONDARY, ARR_FOG, ARR_EDGE, ARR_INDEX, ARR_COUNT };
+_Static_assert(ARR_COUNT == 8, "one tracked array per slot of fs_pointer_slot (FS_ARRAY_SLOTS)");
 
 /* What the replayer knows of buffer objects (GL 1.5 spec 2.9), to turn
  * apitrace's memcpy(dest, src, n) pseudo-calls (writes through a mapping,
@@ -556,6 +557,10 @@ static int client_state_slot(GLenum array)
     case GL_NORMAL_ARRAY: return ARR_NORMAL;
     case GL_COLOR_ARRAY: return ARR_COLOR;
     case GL_TEXTURE_COORD_ARRAY: return ARR_TEXCOORD;
+    case GL_SECONDARY_COLOR_ARRAY: return ARR_SECONDARY;
+    case GL_FOG_COORDINATE_ARRAY: return ARR_FOG;
+    case GL_EDGE_FLAG_ARRAY: return ARR_EDGE;
+    case GL_INDEX_ARRAY: return ARR_INDEX;
     default: return -1;
     }
 }
@@ -566,8 +571,10 @@ static void track_pointer(fs_replayer *r, const fs_call *call, int slot, int pk)
 {
     array_track *t = &r->arr[slot];
     const fs_arg *p = &call->a[pk];
-    t->size = slot == ARR_NORMAL ? 3 : (GLint)call->a[0].i;
-    t->type = (GLenum)call->a[pk - 2].i;
+    /* Normals have 3 components, fog coordinates, edge flags (bytes, no
+     * type argument) and indices 1; the others give their size first. */
+    t->size = slot == ARR_NORMAL ? 3 : slot >= ARR_FOG ? 1 : (GLint)call->a[0].i;
+    t->type = slot == ARR_EDGE ? GL_UNSIGNED_BYTE : (GLenum)call->a[pk - 2].i;
     t->stride = (GLsizei)call->a[pk - 1].i;
     /* An offset into a bound buffer: the dispatcher checks the draw's reads
      * against the store. */

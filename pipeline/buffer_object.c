@@ -400,10 +400,9 @@ void fs_buffer_resolve_arrays(const fs_context *c, fs_array_state *out)
 {
     *out = c->arrays;
     out->element_buffer = 0; /* the indices were resolved before */
-    fs_client_array *arr[4] = {&out->vertex, &out->normal, &out->color, &out->texcoord};
-    for (int k = 0; k < 4; k++)
-        if (arr[k]->buffer)
-            resolve_array(c, arr[k]);
+    for (int k = 0; k < FS_ARRAY_SLOTS; k++)
+        if (fs_array_slot(out, k)->buffer)
+            resolve_array(c, fs_array_slot(out, k));
 }
 
 const void *fs_buffer_element_data(const fs_context *c, uint64_t offset, size_t *bytes)

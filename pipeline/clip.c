@@ -54,6 +54,7 @@ typedef struct cvert {
     float col[2][4];
     float tc[4];
     float fog;        /* fog coordinate (fs_pvert.fog) */
+    float col2[2][4]; /* secondary colour (fs_pvert.col2) */
 } cvert;
 
 static void from_pvert(cvert *d, const fs_pvert *v)
@@ -63,6 +64,7 @@ static void from_pvert(cvert *d, const fs_pvert *v)
     memcpy(d->col, v->col, sizeof d->col);
     memcpy(d->tc, v->tc, sizeof d->tc);
     d->fog = v->fog;
+    memcpy(d->col2, v->col2, sizeof d->col2);
 }
 
 #define LERP(t, out, in) ((out) + (t) * ((in) - (out)))
@@ -81,16 +83,21 @@ static void interp(const fs_vs_setup *s, cvert *d, float t, const cvert *out, co
     for (int k = 0; k < 4; k++) {
         d->col[0][k] = LERP(t, out->col[0][k], in->col[0][k]);
         d->tc[k] = LERP(t, out->tc[k], in->tc[k]);
+        d->col2[0][k] = LERP(t, out->col2[0][k], in->col2[0][k]);
     }
     if (two)
-        for (int k = 0; k < 4; k++)
+        for (int k = 0; k < 4; k++) {
             d->col[1][k] = LERP(t, out->col[1][k], in->col[1][k]);
+            d->col2[1][k] = LERP(t, out->col2[1][k], in->col2[1][k]);
+        }
     d->fog = LERP(t, out->fog, in->fog);
 }
 
-static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const float *tc, float fog)
+static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const float *col2, const float *tc,
+                       float fog)
 {
     r->fog = fog;
+    memcpy(r->color2, col2, sizeof r->color2);
     r->x = win[0];
     r->y = win[1];
     r->z = win[2];
@@ -110,15 +117,23 @@ static int back_side(const fs_context *c, const float *a, const float *b, const 
     return front ? 0 : 1;
 }
 
-/* One triangle to the rasterizer from each vertex's window position,
- * colours (front then back, 8 floats) and texture coordinates. */
-static void emit3(fs_context *c, const fs_vs_setup *s, const float *const win[3], const float *const col[3],
-                  const float *const tc[3], const float fog[3], const float *flat_col2)
+/* What a triangle hands the rasterizer of each vertex: window position,
+ * colours and secondary colours (front then back, 8 floats each), texture
+ * coordinates and fog coordinate; and when flat, the provoking vertex's
+ * colours and secondary colours instead. */
+typedef struct tri_src {
+    const float *win[3], *col[3], *col2[3], *tc[3];
+    float fog[3];
+    const float *flat_col, *flat_col2;
+} tri_src;
+
+static void emit3(fs_context *c, const fs_vs_setup *s, const tri_src *t)
 {
-    int side = s->two_side ? back_side(c, win[0], win[1], win[2]) : 0;
+    int side = s->two_side ? back_side(c, t->win[0], t->win[1], t->win[2]) : 0;
     fs_rvertex r[3];
     for (int i = 0; i < 3; i++)
-        to_rvertex(&r[i], win[i], (flat_col2 ? flat_col2 : col[i]) + 4 * side, tc[i], fog[i]);
+        to_rvertex(&r[i], t->win[i], (t->flat_col ? t->flat_col : t->col[i]) + 4 * side,
+                   (t->flat_col ? t->flat_col2 : t->col2[i]) + 4 * side, t->tc[i], t->fog[i]);
     fs_vs_impl *vi = fs_vs(c);
     if (vi->tri_hook)
         vi->tri_hook(vi->hook_user, &r[0], &r[1], &r[2]);
@@ -126,13 +141,12 @@ static void emit3(fs_context *c, const fs_vs_setup *s, const float *const win[3]
 }
 
 static void emit_cverts(fs_context *c, const fs_vs_setup *s, const cvert *a, const cvert *b, const cvert *d,
-                        const float *flat_col2)
+                        const float *flat_col, const float *flat_col2)
 {
-    const float *const win[3] = {a->win, b->win, d->win};
-    const float *const col[3] = {a->col[0], b->col[0], d->col[0]};
-    const float *const tc[3] = {a->tc, b->tc, d->tc};
-    const float fog[3] = {a->fog, b->fog, d->fog};
-    emit3(c, s, win, col, tc, fog, flat_col2);
+    const tri_src t = {{a->win, b->win, d->win}, {a->col[0], b->col[0], d->col[0]},
+                       {a->col2[0], b->col2[0], d->col2[0]}, {a->tc, b->tc, d->tc},
+                       {a->fog, b->fog, d->fog}, flat_col, flat_col2};
+    emit3(c, s, &t);
 }
 
 /* An unclipped triangle goes straight from its fs_pverts, without cvert
@@ -142,11 +156,11 @@ void fs_emit_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
                       const fs_pvert *v1, const fs_pvert *v2, int provoking)
 {
     const fs_pvert *pv[3] = {v0, v1, v2};
-    const float *const win[3] = {v0->win, v1->win, v2->win};
-    const float *const col[3] = {v0->col[0], v1->col[0], v2->col[0]};
-    const float *const tc[3] = {v0->tc, v1->tc, v2->tc};
-    const float fog[3] = {v0->fog, v1->fog, v2->fog};
-    emit3(c, s, win, col, tc, fog, provoking >= 0 ? pv[provoking]->col[0] : NULL);
+    const fs_pvert *f = provoking >= 0 ? pv[provoking] : NULL;
+    const tri_src t = {{v0->win, v1->win, v2->win}, {v0->col[0], v1->col[0], v2->col[0]},
+                       {v0->col2[0], v1->col2[0], v2->col2[0]}, {v0->tc, v1->tc, v2->tc},
+                       {v0->fog, v1->fog, v2->fog}, f ? f->col[0] : NULL, f ? f->col2[0] : NULL};
+    emit3(c, s, &t);
 }
 
 #define MAX_CLIPPED 16
@@ -167,10 +181,11 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
     unsigned n = 3;
     unsigned mask = v0->mask | v1->mask | v2->mask;
     const bool two = s->two_side;
-    float flat[2][4];
+    float flat[2][4], flat2[2][4] = {{0}};
     if (provoking >= 0) {
         const fs_pvert *pv[3] = {v0, v1, v2};
         memcpy(flat, pv[provoking]->col, sizeof flat);
+        memcpy(flat2, pv[provoking]->col2, sizeof flat2);
     }
     while (mask && n >= 3) {
         int plane = __builtin_ctz(mask);
@@ -232,14 +247,15 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
     /* Emitted as a fan with the first vertex last, as Mesa's clipper does
      * for the last-vertex convention. */
     for (unsigned i = 2; i < n; i++)
-        emit_cverts(c, s, in[i - 1], in[i], in[0], provoking >= 0 ? &flat[0][0] : NULL);
+        emit_cverts(c, s, in[i - 1], in[i], in[0], provoking >= 0 ? &flat[0][0] : NULL, &flat2[0][0]);
 }
 
-static void emit_line2(fs_context *c, const cvert *a, const cvert *b, const float *flat)
+/* flat: the provoking vertex when flat shading, else NULL. */
+static void emit_line2(fs_context *c, const cvert *a, const cvert *b, const fs_pvert *flat)
 {
     fs_rvertex r[2];
-    to_rvertex(&r[0], a->win, flat ? flat : a->col[0], a->tc, a->fog);
-    to_rvertex(&r[1], b->win, flat ? flat : b->col[0], b->tc, b->fog);
+    to_rvertex(&r[0], a->win, flat ? flat->col[0] : a->col[0], flat ? flat->col2[0] : a->col2[0], a->tc, a->fog);
+    to_rvertex(&r[1], b->win, flat ? flat->col[0] : b->col[0], flat ? flat->col2[0] : b->col2[0], b->tc, b->fog);
     fs_raster_line(c, &r[0], &r[1]);
 }
 
@@ -248,7 +264,7 @@ void fs_emit_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
     cvert a, b;
     from_pvert(&a, v0);
     from_pvert(&b, v1);
-    emit_line2(c, &a, &b, s->flat ? v1->col[0] : NULL);
+    emit_line2(c, &a, &b, s->flat ? v1 : NULL);
 }
 
 void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1)
@@ -278,7 +294,7 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
             d->win[3] = oow;
             d->win[4] = fmaf(d->clip[1] * oow, s->yr_scale, s->yr_trans);
         }
-        emit_line2(c, &a, &b, s->flat ? v1->col[0] : NULL);
+        emit_line2(c, &a, &b, s->flat ? v1 : NULL);
         return;
     }
     if (v0->mask & v1->mask)
@@ -316,7 +332,7 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
     }
     if (!(pa->clip[3] > 0.0f) || !(pb->clip[3] > 0.0f))
         return;
-    emit_line2(c, pa, pb, s->flat ? v1->col[0] : NULL);
+    emit_line2(c, pa, pb, s->flat ? v1 : NULL);
 }
 
 void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)
@@ -331,5 +347,6 @@ void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)
     memcpy(r.color, v->col[0], sizeof r.color);
     memcpy(r.tex, v->tc, sizeof r.tex);
     r.fog = v->fog;
+    memcpy(r.color2, v->col2[0], sizeof r.color2);
     fs_raster_point(c, &r);
 }

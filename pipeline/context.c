@@ -60,7 +60,7 @@ void fs_context_destroy(fs_context *c)
     fs_vertex_stage_free(c);
     fs_framebuffer_free(&c->fb);
     free(c->scratch);
-    for (int i = 0; i < 4; i++)
+    for (int i = 0; i < FS_ARRAY_SLOTS; i++)
         for (int k = 0; k < 2; k++)
             free(c->array_copy[i].buf[k]);
     free(c);

@@ -171,3 +171,9 @@ void fs_fog_quad(fs_context *c, fs_quad *q, unsigned mask)
             q->color[i][k] = f->color[k] * u + q->color[i][k] * t;
     }
 }
+
+/* glFogCoord (2.7): the current fog coordinate, not clamped. */
+void fs_exec_FogCoordf(fs_context *c, GLfloat coord) { c->current.fog_coord = coord; }
+void fs_exec_FogCoordd(fs_context *c, GLdouble coord) { c->current.fog_coord = (float)coord; }
+void fs_exec_FogCoordfv(fs_context *c, const GLfloat *coord) { c->current.fog_coord = coord[0]; }
+void fs_exec_FogCoorddv(fs_context *c, const GLdouble *coord) { c->current.fog_coord = (float)coord[0]; }

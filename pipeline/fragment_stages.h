@@ -38,6 +38,8 @@ fs_quad_work fs_fragment_quad_general(fs_context *c, fs_quad *q);
  * by the validation step from the GL_FOG_BIT state. */
 void fs_fog_quad(fs_context *c, fs_quad *q, unsigned mask);
 void fs_fog_validate(fs_context *c);
+/* color_sum.c (3.9): the secondary colours added to the primary ones. */
+void fs_color_sum_quad(fs_quad *q, unsigned mask);
 
 /* scissor.c: the mask of quad pixels inside the scissor box. */
 unsigned fs_scissor_quad(const fs_context *c, int qx, int qy, unsigned mask);

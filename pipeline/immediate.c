@@ -58,6 +58,7 @@ void fs_vertex_stage_init(fs_context *c)
     c->current.color[0] = c->current.color[1] = c->current.color[2] = c->current.color[3] = 1.0f;
     c->current.normal[2] = 1.0f;
     c->current.texcoord[3] = 1.0f;
+    c->current.secondary_color[3] = 1.0f;
 
     memset(&c->arrays, 0, sizeof c->arrays);
     c->arrays.vertex.size = 4;
@@ -68,6 +69,14 @@ void fs_vertex_stage_init(fs_context *c)
     c->arrays.color.type = GL_FLOAT;
     c->arrays.texcoord.size = 4;
     c->arrays.texcoord.type = GL_FLOAT;
+    c->arrays.secondary_color.size = 3;
+    c->arrays.secondary_color.type = GL_FLOAT;
+    c->arrays.fog_coord.size = 1;
+    c->arrays.fog_coord.type = GL_FLOAT;
+    c->arrays.edge_flag.size = 1;
+    c->arrays.edge_flag.type = GL_UNSIGNED_BYTE;
+    c->arrays.index.size = 1;
+    c->arrays.index.type = GL_FLOAT;
 
     free(c->prim.impl);
     memset(&c->prim, 0, sizeof c->prim);
@@ -226,6 +235,9 @@ static void vertex4(fs_context *c, float x, float y, float z, float w)
     memcpy(o->col, c->current.color, sizeof o->col);
     memcpy(o->nrm, c->current.normal, sizeof o->nrm);
     memcpy(o->tc, c->current.texcoord, sizeof o->tc);
+    memcpy(o->col2, c->current.secondary_color, sizeof o->col2);
+    o->fogc = c->current.fog_coord;
+    o->edge = c->st.edge_flag;
     c->prim.count++;
 }
 
@@ -255,12 +267,6 @@ void fs_exec_Vertex4iv(fs_context *c, const GLint *v) { vertex4(c, (float)v[0], 
 void fs_exec_Vertex4sv(fs_context *c, const GLshort *v) { vertex4(c, v[0], v[1], v[2], v[3]); }
 
 /* ---- colours (table 2.9) ---- */
-#define UB2F(x) ((float)(x) / 255.0f)
-#define B2F(x) ((2.0f * (float)(x) + 1.0f) / 255.0f)
-#define US2F(x) ((float)(x) / 65535.0f)
-#define S2F(x) ((2.0f * (float)(x) + 1.0f) / 65535.0f)
-#define UI2F(x) ((float)((double)(x) / 4294967295.0))
-#define I2F(x) ((float)((2.0 * (double)(x) + 1.0) / 4294967295.0))
 
 static void color4(fs_context *c, float r, float g, float b, float a)
 {

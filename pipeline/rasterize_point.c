@@ -73,8 +73,11 @@ void fs_raster_point(fs_context *c, const fs_rvertex *v)
     fs_plane_constant(&s.fog, s.perspective ? v->fog * v->inv_w : v->fog);
     /* Flat shading: the colour itself (fs_raster_state.flat_color). */
     s.color_constant = r->flat_color;
+    s.use_color2 = r->interpolate_color2;
     for (int k = 0; k < 4; k++) {
         fs_plane_constant(&s.color[k], s.perspective && !s.color_constant ? v->color[k] * v->inv_w : v->color[k]);
+        if (k < 3)
+            fs_plane_constant(&s.color2[k], s.perspective && !s.color_constant ? v->color2[k] * v->inv_w : v->color2[k]);
         if (s.use_tex)
             fs_plane_constant(&s.tex[k], s.perspective ? v->tex[k] * v->inv_w : v->tex[k]);
     }

@@ -35,6 +35,8 @@ typedef struct fs_rvertex {
     /* Fog (GL 1.5 spec 3.10), read only while fs_raster_state.interpolate_fog
      * is set: the vertex's fog coordinate c (pipeline/fog.c). */
     float fog;
+    /* The secondary colour (3.9), read only while interpolate_color2 is set. */
+    float color2[4];
 } fs_rvertex;
 
 /* Pixel i of a quad: 0 = (x,y), 1 = (x+1,y), 2 = (x,y+1), 3 = (x+1,y+1). */
@@ -62,6 +64,10 @@ typedef struct fs_quad {
      * of each covered pixel, interpolated perspective-correctly like a
      * colour (pipeline/fog.c applies it after texturing, GL 1.5 spec 3.10). */
     float fog[4];
+    /* Only while fs_raster_state.interpolate_color2 is set: the secondary
+     * colour's r, g, b of each covered pixel, interpolated as the colour is
+     * (pipeline/color_sum.c adds it after texturing, GL 1.5 spec 3.9). */
+    float color2[4][3];
 } fs_quad;
 
 /* Rasterizer state set by glCullFace, glFrontFace, glPolygonOffset,
@@ -84,6 +90,8 @@ typedef struct fs_raster_state {
     /* Set by the vertex stage while GL_FOG is enabled: the fog coordinate
      * is interpolated into fs_quad.fog (skipped otherwise). */
     bool interpolate_fog;
+    /* Set by the vertex stage while the colour sum is on (color_sum.c). */
+    bool interpolate_color2;
     /* Selects the plain per-pixel reference rasterizer instead of the
      * incremental one; both must give identical quads (tests hold them
      * equal). */

@@ -29,6 +29,7 @@ uint32_t fs_fragment_key(const fs_context *c)
     k |= f->blend_enabled ? FS_FKEY_BLEND : 0u;
     k |= f->logic_op_enabled ? FS_FKEY_LOGIC : 0u;
     k |= c->st.fog.enabled ? FS_FKEY_FOG : 0u;
+    k |= c->raster.interpolate_color2 ? FS_FKEY_COLOR_SUM : 0u;
     /* The setters accept only GL_NEVER..GL_ALWAYS and GL_CLEAR..GL_SET;
      * the masks keep any other value out of the neighbouring fields. */
     k |= FS_FKEY_DEPTH_FUNC(f->depth_func) & FS_FKEY_DEPTH_FUNC_MASK;

@@ -31,6 +31,7 @@
 #define FS_FKEY_LOGIC_OP_SHIFT 20      /* 4 bits: op - GL_CLEAR */
 #define FS_FKEY_COLOR_MASK_SHIFT 24    /* 4 bits: bit k is channel k, 4.2.2 */
 #define FS_FKEY_FOG (1u << 28)         /* GL_FOG, 3.10: only the general path fogs */
+#define FS_FKEY_COLOR_SUM (1u << 29)   /* 3.9, fs_raster_state.interpolate_color2: likewise */
 
 #define FS_FKEY_DEPTH_FUNC_MASK (7u << FS_FKEY_DEPTH_FUNC_SHIFT)
 #define FS_FKEY_BLEND_SRC_MASK (15u << FS_FKEY_BLEND_SRC_SHIFT)

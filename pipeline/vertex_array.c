@@ -104,6 +104,46 @@ void fs_exec_TexCoordPointer(fs_context *c, GLint size, GLenum type, GLsizei str
     set_array(c, &c->arrays.texcoord, size, type, stride, pointer);
 }
 
+/* GL 1.4's arrays and the edge flag and index arrays, with the errors
+ * OSMesa raises (measured by tests/test_color_sum.c): a secondary colour
+ * has 3 or 4 components (GL_BGRA is not modelled: GL_INVALID_VALUE) of any
+ * glColorPointer type; a fog coordinate is GL_FLOAT or GL_DOUBLE (OSMesa
+ * also takes GL_HALF_FLOAT, which fragsim does not fetch:
+ * GL_INVALID_ENUM); an index GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT
+ * or GL_DOUBLE; a negative stride is GL_INVALID_VALUE. */
+void fs_exec_SecondaryColorPointer(fs_context *c, GLint size, GLenum type, GLsizei stride, const GLvoid *pointer)
+{
+    if (size < 3 || size > 4 || stride < 0) { fs_error(c, GL_INVALID_VALUE); return; }
+    if (fs_type_size(type) == 0 || type == GL_2_BYTES || type == GL_3_BYTES || type == GL_4_BYTES) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    set_array(c, &c->arrays.secondary_color, size, type, stride, pointer);
+}
+
+void fs_exec_FogCoordPointer(fs_context *c, GLenum type, GLsizei stride, const GLvoid *pointer)
+{
+    if (type != GL_FLOAT && type != GL_DOUBLE) { fs_error(c, GL_INVALID_ENUM); return; }
+    if (stride < 0) { fs_error(c, GL_INVALID_VALUE); return; }
+    set_array(c, &c->arrays.fog_coord, 1, type, stride, pointer);
+}
+
+void fs_exec_EdgeFlagPointer(fs_context *c, GLsizei stride, const GLvoid *pointer)
+{
+    if (stride < 0) { fs_error(c, GL_INVALID_VALUE); return; }
+    set_array(c, &c->arrays.edge_flag, 1, GL_UNSIGNED_BYTE, stride, pointer);
+}
+
+void fs_exec_IndexPointer(fs_context *c, GLenum type, GLsizei stride, const GLvoid *pointer)
+{
+    if (type != GL_UNSIGNED_BYTE && type != GL_SHORT && type != GL_INT && type != GL_FLOAT && type != GL_DOUBLE) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    if (stride < 0) { fs_error(c, GL_INVALID_VALUE); return; }
+    set_array(c, &c->arrays.index, 1, type, stride, pointer);
+}
+
 static fs_client_array *array_of(fs_context *c, GLenum array)
 {
     switch (array) {
@@ -111,17 +151,10 @@ static fs_client_array *array_of(fs_context *c, GLenum array)
     case GL_NORMAL_ARRAY: return &c->arrays.normal;
     case GL_COLOR_ARRAY: return &c->arrays.color;
     case GL_TEXTURE_COORD_ARRAY: return &c->arrays.texcoord;
-    default: return NULL;
-    }
-}
-
-bool *fs_client_state_flag(fs_context *c, GLenum array)
-{
-    switch (array) {
-    case GL_EDGE_FLAG_ARRAY: return &c->edge_flag_array;
-    case GL_INDEX_ARRAY: return &c->index_array;
-    case GL_FOG_COORDINATE_ARRAY: return &c->fog_coord_array;
-    case GL_SECONDARY_COLOR_ARRAY: return &c->secondary_color_array;
+    case GL_SECONDARY_COLOR_ARRAY: return &c->arrays.secondary_color;
+    case GL_FOG_COORDINATE_ARRAY: return &c->arrays.fog_coord;
+    case GL_EDGE_FLAG_ARRAY: return &c->arrays.edge_flag;
+    case GL_INDEX_ARRAY: return &c->arrays.index;
     default: return NULL;
     }
 }
@@ -131,20 +164,11 @@ bool *fs_client_state_flag(fs_context *c, GLenum array)
 static void client_state(fs_context *c, GLenum array, bool on)
 {
     fs_client_array *a = array_of(c, array);
-    if (a) {
-        a->enabled = on;
-        return;
-    }
-    bool *flag = fs_client_state_flag(c, array);
-    if (!flag) {
+    if (!a) {
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    /* Arrays fragsim does not fetch: the enable is kept for glIsEnabled,
-     * and enabling one is counted, since a draw then ignores the array. */
-    *flag = on;
-    if (on)
-        fs_unsupported(c, "glEnableClientState(edge flag/index/fog coordinate/secondary colour array)");
+    a->enabled = on;
 }
 
 void fs_exec_EnableClientState(fs_context *c, GLenum array) { client_state(c, array, true); }
@@ -236,6 +260,32 @@ static void fetch_positions(const fs_context *c, size_t first, size_t n, fs_iver
     }
 }
 
+/* The secondary colour (its alpha is 1 whatever a size-4 array holds), the
+ * fog coordinate and the edge flag from their arrays, else the current
+ * values (2.8). */
+static void fetch_gl14_attributes(const fs_context *c, size_t i, fs_ivert *o)
+{
+    const fs_array_state *A = &c->arrays;
+    memcpy(o->col2, c->current.secondary_color, sizeof o->col2);
+    if (A->secondary_color.enabled) {
+        float s[4];
+        fetch(&A->secondary_color, i, s, true);
+        memcpy(o->col2, s, 3 * sizeof(float));
+    }
+    o->fogc = c->current.fog_coord;
+    if (A->fog_coord.enabled) {
+        float f[4];
+        fetch(&A->fog_coord, i, f, false);
+        o->fogc = f[0];
+    }
+    o->edge = c->st.edge_flag;
+    if (A->edge_flag.enabled) {
+        float e[4];
+        fetch(&A->edge_flag, i, e, false);
+        o->edge = e[0] != 0.0f;
+    }
+}
+
 /* Its other attributes from the enabled arrays, the current values
  * elsewhere. */
 static void fetch_attributes(const fs_context *c, size_t i, fs_ivert *o)
@@ -261,6 +311,7 @@ static void fetch_attributes(const fs_context *c, size_t i, fs_ivert *o)
     } else {
         memcpy(o->tc, c->current.texcoord, sizeof o->tc);
     }
+    fetch_gl14_attributes(c, i, o);
 }
 
 static void fetch_vertex(const fs_context *c, size_t i, fs_ivert *o)
@@ -291,7 +342,9 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     s->flat = c->lighting.shade_model == GL_FLAT;
     c->raster.flat_color = s->flat;
     s->fog = c->st.fog.enabled;
+    s->fog_from_coord = c->st.fog.coord_src == GL_FOG_COORD;
     c->raster.interpolate_fog = s->fog;
+    fs_color_sum_setup(c, s);
     fs_lighting_setup(c, s);
     /* Draws of one object share a modelview: invert it once (the
      * persistent setup of the context keeps the last one). */
@@ -328,7 +381,10 @@ static inline void vs_position(const fs_vs_setup *s, const fs_ivert *v, fs_pvert
     o->win[4] = fmaf(o->clip[1] * iw, s->yr_scale, s->yr_trans);
 }
 
-/* The fog coordinate (GL 1.5 spec 3.10) of a GL_FRAGMENT_DEPTH source:
+/* The fog coordinate (GL 1.5 spec 3.10): of a GL_FOG_COORD source, the
+ * vertex's fog coordinate's absolute value (measured on OSMesa: -1 fogs
+ * as 1; Mesa 22's vertex shader takes |c| from the array or the current
+ * value); of a GL_FRAGMENT_DEPTH source:
  * llvmpipe's fixed-function vertex shader takes the eye-plane distance,
  * |z_e|, with z_e the modelview's third row times the object position in
  * the order and float precision of the position transform (so the same
@@ -362,7 +418,7 @@ static inline void vs_attributes(const fs_vs_setup *s, const fs_ivert *v, fs_pve
                 nrm[0] *= inv; nrm[1] *= inv; nrm[2] *= inv;
             }
         }
-        fs_light_vertex(s, eye, nrm, v->col, o->col);
+        fs_light_vertex(s, eye, nrm, v->col, o->col, o->col2);
     } else {
         for (int k = 0; k < 4; k++)
             o->col[0][k] = clamp01(v->col[k]);
@@ -372,7 +428,12 @@ static inline void vs_attributes(const fs_vs_setup *s, const fs_ivert *v, fs_pve
     else
         fs_mat_xform4(o->tc, s->tex, v->tc);
     if (s->fog)
-        o->fog = vs_fog_coord(s, v);
+        o->fog = s->fog_from_coord ? fabsf(v->fogc) : vs_fog_coord(s, v);
+    if (s->color_sum && !s->lighting)
+        for (int k = 0; k < 4; k++)
+            o->col2[0][k] = clamp01(v->col2[k]);
+    else if (s->color_sum && !s->separate_specular)
+        memset(o->col2, 0, sizeof o->col2); /* lit: no secondary colour is written */
 }
 
 /* A box edge as a pixel within [0, 65536] (compares, not fminf/fmaxf,
@@ -592,6 +653,7 @@ static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *
             memset(out[i].col, 0, sizeof out[i].col);
             memset(out[i].tc, 0, sizeof out[i].tc);
             out[i].fog = 0.0f;
+            memset(out[i].col2, 0, sizeof out[i].col2);
         }
         out[i].lazy = need;
     }
@@ -644,6 +706,9 @@ void fs_exec_ArrayElement(fs_context *c, GLint i)
     if (c->arrays.color.enabled) fs_exec_Color4fv(c, v.col);
     if (c->arrays.normal.enabled) fs_exec_Normal3fv(c, v.nrm);
     if (c->arrays.texcoord.enabled) memcpy(c->current.texcoord, v.tc, sizeof v.tc);
+    if (c->arrays.secondary_color.enabled) memcpy(c->current.secondary_color, v.col2, sizeof v.col2);
+    if (c->arrays.fog_coord.enabled) c->current.fog_coord = v.fogc;
+    if (c->arrays.edge_flag.enabled) c->st.edge_flag = v.edge;
     if (c->arrays.vertex.enabled) fs_exec_Vertex4fv(c, v.obj);
 }
 

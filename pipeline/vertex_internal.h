@@ -13,6 +13,14 @@
 
 #define FS_PI 3.14159265358979323846
 
+/* Colour components of each type as floats (GL 1.5 spec table 2.9). */
+#define UB2F(x) ((float)(x) / 255.0f)
+#define B2F(x) ((2.0f * (float)(x) + 1.0f) / 255.0f)
+#define US2F(x) ((float)(x) / 65535.0f)
+#define S2F(x) ((2.0f * (float)(x) + 1.0f) / 65535.0f)
+#define UI2F(x) ((float)((double)(x) / 4294967295.0))
+#define I2F(x) ((float)((2.0 * (double)(x) + 1.0) / 4294967295.0))
+
 /* A vertex as submitted: object position and the attributes current when
  * it was specified. */
 /* x86 builds carry FMA and AVX2 variants of the vertex stage's loop,
@@ -33,6 +41,11 @@ typedef struct fs_ivert {
     float col[4];
     float nrm[3];
     float tc[4];
+    /* GL 1.4 (2.7): the secondary colour (alpha 1) and the fog coordinate;
+     * and the edge flag (2.6.2), which polygon mode GL_LINE/GL_POINT reads. */
+    float col2[4];
+    float fogc;
+    bool edge;
 } fs_ivert;
 
 /* A vertex after transformation and lighting. */
@@ -45,6 +58,9 @@ typedef struct fs_pvert {
     /* Fog (GL 1.5 spec 3.10), set while GL_FOG is enabled (fs_vs_setup.fog):
      * the fog coordinate c, |z_e| or the vertex's fog coordinate. */
     float fog;
+    /* The secondary colour (3.9), front and back, clamped, set while
+     * fs_vs_setup.color_sum is (pipeline/color_sum.c). */
+    float col2[2][4];
     unsigned mask;    /* bit i: outside clip plane i (clip.c's order) */
     bool lazy;        /* col and tc not computed yet (fs_vs_process under a tile mask) */
 } fs_pvert;
@@ -85,6 +101,11 @@ typedef struct fs_vs_setup {
     /* Fog (3.10): GL_FOG is enabled, so each vertex gets its fog
      * coordinate (fs_pvert.fog). */
     bool fog;
+    bool fog_from_coord; /* GL_FOG_COORD_SRC is GL_FOG_COORD */
+    /* The colour sum (3.9) is on: GL_COLOR_SUM, or lighting with
+     * GL_SEPARATE_SPECULAR_COLOR; each vertex gets fs_pvert.col2. */
+    bool color_sum;
+    bool separate_specular; /* lighting's specular term goes to col2 (2.14.1) */
 } fs_vs_setup;
 
 /* The material from batch vertex `start` on, after a glMaterial between
@@ -147,15 +168,21 @@ static inline void fs_mat_xform4(float o[4], const float m[16], const float v[4]
 /* viewport.c */
 void fs_viewport_xform(fs_context *c, float scale[3], float trans[3]);
 
+/* color_sum.c: sets s->color_sum and s->separate_specular from the GL
+ * state, and the rasterizer's interpolate_color2 (marking the fragment key
+ * stale when it changes). */
+void fs_color_sum_setup(fs_context *c, fs_vs_setup *s);
+
 /* lighting.c */
 void fs_lighting_setup(fs_context *c, fs_vs_setup *s);
 /* immediate.c: glMaterial changed the material between Begin and End;
  * `before` is the material it replaced. */
 void fs_vs_material_changed(fs_context *c, const fs_material before[2]);
 /* Lights one vertex: eye position (when s->need_eye), eye normal, vertex
- * colour; writes clamped front and (if two-sided) back colours. */
+ * colour; writes clamped front and (if two-sided) back colours, and with
+ * s->separate_specular the specular terms apart into spec (2.14.1). */
 void fs_light_vertex(const fs_vs_setup *s, const float eye[4], const float n[3],
-                     const float col[4], float out[2][4]);
+                     const float col[4], float out[2][4], float spec[2][4]);
 
 /* vertex_array.c: transformation of a batch of vertices.  s persists from
  * draw to draw (it caches the normal matrix): zero it before its first use. */

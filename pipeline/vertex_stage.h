@@ -56,7 +56,7 @@ typedef struct fs_lighting_state {
     fs_light light[FS_MAX_LIGHTS];
     float model_ambient[4];
     bool local_viewer, two_side;
-    GLenum color_control;       /* GL_SINGLE_COLOR (GL_SEPARATE_SPECULAR_COLOR is counted unsupported) */
+    GLenum color_control;       /* GL_SINGLE_COLOR (GL_SEPARATE_SPECULAR_COLOR: pipeline/color_sum.c) */
     fs_material material[2]; /* front, back */
     bool color_material;     /* GL_COLOR_MATERIAL */
     GLenum color_material_face, color_material_mode;
@@ -65,6 +65,10 @@ typedef struct fs_lighting_state {
 
 typedef struct fs_current_state {
     float color[4], normal[3], texcoord[4];
+    /* GL 1.4's attributes (2.7; pipeline/color_sum.c, pipeline/fog.c): the
+     * secondary colour (0, 0, 0, 1), set as r, g, b with alpha 1, and the
+     * fog coordinate (0); neither clamped when set. */
+    float secondary_color[4], fog_coord;
 } fs_current_state;
 
 typedef struct fs_client_array {
@@ -84,10 +88,27 @@ typedef struct fs_client_array {
 
 typedef struct fs_array_state {
     fs_client_array vertex, normal, color, texcoord;
+    /* GL 1.4's arrays and the edge flag and colour index arrays (2.8):
+     * secondary colour and fog coordinate are fetched; the edge flag is
+     * stored (polygon mode LINE reads it) and the index, which an RGBA
+     * context ignores, only answers glGet. */
+    fs_client_array secondary_color, fog_coord, edge_flag, index;
     /* GL_ARRAY_BUFFER_BINDING, GL_ELEMENT_ARRAY_BUFFER_BINDING (2.9),
      * client state as the arrays are (pipeline/buffer_object.c). */
     GLuint array_buffer, element_buffer;
 } fs_array_state;
+
+/* The client arrays in one fixed order, for code that treats them alike
+ * (replayed array data, buffer offsets, display-list snapshots, capture):
+ * vertex, normal, colour, texture coordinates, secondary colour, fog
+ * coordinate, edge flag, index. */
+#define FS_ARRAY_SLOTS 8
+static inline fs_client_array *fs_array_slot(fs_array_state *a, int slot)
+{
+    fs_client_array *const s[FS_ARRAY_SLOTS] = {&a->vertex, &a->normal, &a->color, &a->texcoord,
+                                                &a->secondary_color, &a->fog_coord, &a->edge_flag, &a->index};
+    return s[slot];
+}
 
 /* Immediate-mode primitive assembly state; the vertex agent owns its fields. */
 typedef struct fs_prim_state {
@@ -113,7 +134,4 @@ const fs_matrix *fs_current_matrix(const fs_context *c, GLenum mode);
 /* Copies the current colour into the material properties that track it
  * (GL 1.5 spec 2.14.3); called on glColor and on enabling GL_COLOR_MATERIAL. */
 void fs_color_material_update(fs_context *c);
-/* The enable of a client array fragsim does not fetch yet (GL_EDGE_FLAG_ARRAY,
- * GL_INDEX_ARRAY, GL_FOG_COORDINATE_ARRAY, GL_SECONDARY_COLOR_ARRAY), or NULL. */
-bool *fs_client_state_flag(fs_context *c, GLenum array);
 #endif
