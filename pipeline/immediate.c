@@ -60,23 +60,16 @@ void fs_vertex_stage_init(fs_context *c)
     c->current.texcoord[3] = 1.0f;
     c->current.secondary_color[3] = 1.0f;
 
+    /* Tables 6.6-6.8: sizes and types in fs_array_slot's order (the edge
+     * flag's bytes have no GL type of their own). */
+    static const struct { GLint size; GLenum type; } array_init[FS_ARRAY_SLOTS] = {
+        {4, GL_FLOAT}, {3, GL_FLOAT}, {4, GL_FLOAT}, {4, GL_FLOAT},
+        {3, GL_FLOAT}, {1, GL_FLOAT}, {1, GL_UNSIGNED_BYTE}, {1, GL_FLOAT}};
     memset(&c->arrays, 0, sizeof c->arrays);
-    c->arrays.vertex.size = 4;
-    c->arrays.vertex.type = GL_FLOAT;
-    c->arrays.normal.size = 3;
-    c->arrays.normal.type = GL_FLOAT;
-    c->arrays.color.size = 4;
-    c->arrays.color.type = GL_FLOAT;
-    c->arrays.texcoord.size = 4;
-    c->arrays.texcoord.type = GL_FLOAT;
-    c->arrays.secondary_color.size = 3;
-    c->arrays.secondary_color.type = GL_FLOAT;
-    c->arrays.fog_coord.size = 1;
-    c->arrays.fog_coord.type = GL_FLOAT;
-    c->arrays.edge_flag.size = 1;
-    c->arrays.edge_flag.type = GL_UNSIGNED_BYTE;
-    c->arrays.index.size = 1;
-    c->arrays.index.type = GL_FLOAT;
+    for (int k = 0; k < FS_ARRAY_SLOTS; k++) {
+        fs_array_slot(&c->arrays, k)->size = array_init[k].size;
+        fs_array_slot(&c->arrays, k)->type = array_init[k].type;
+    }
 
     free(c->prim.impl);
     memset(&c->prim, 0, sizeof c->prim);

@@ -1,9 +1,10 @@
 /*
  * State fragsim stores for glGet and glPushAttrib (pipeline/state.def) but
- * does not model yet: what uses it (fog, stippled lines, the accumulation
+ * does not model yet: what uses it (stippled lines, the accumulation
  * buffer, colour index mode, glDrawPixels' zoom, multisampling, several
  * texture units) is absent or counted as unsupported where it would change
- * the image.  Each part has the file of its commands.
+ * the image; fog and the colour sum are modelled.  Each part has the file
+ * of its commands.
  */
 #ifndef FS_STORED_STATE_H
 #define FS_STORED_STATE_H
@@ -47,7 +48,7 @@ typedef struct fs_stored_state {
     bool sample_alpha_to_coverage, sample_alpha_to_one, sample_coverage;
     float sample_coverage_value; /* 1, clamped to [0, 1] */
     bool sample_coverage_invert; /* false */
-    /* 3.9, table 6.10: GL_COLOR_SUM, with a secondary colour of zero. */
+    /* 3.9, table 6.10: GL_COLOR_SUM (pipeline/color_sum.c). */
     bool color_sum;
     /* 2.7, table 6.5 (pipeline/texture_select.c): the one texture unit. */
     GLenum active_texture, client_active_texture; /* GL_TEXTURE0 */

@@ -84,14 +84,21 @@ void fs_exec_NormalPointer(fs_context *c, GLenum type, GLsizei stride, const GLv
     set_array(c, &c->arrays.normal, 3, type, stride, pointer);
 }
 
-void fs_exec_ColorPointer(fs_context *c, GLint size, GLenum type, GLsizei stride, const GLvoid *pointer)
+/* glColorPointer and glSecondaryColorPointer take the same sizes and types. */
+static void color_pointer(fs_context *c, fs_client_array *a, GLint size, GLenum type, GLsizei stride,
+                          const GLvoid *pointer)
 {
     if (size < 3 || size > 4 || stride < 0) { fs_error(c, GL_INVALID_VALUE); return; }
     if (fs_type_size(type) == 0 || type == GL_2_BYTES || type == GL_3_BYTES || type == GL_4_BYTES) {
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    set_array(c, &c->arrays.color, size, type, stride, pointer);
+    set_array(c, a, size, type, stride, pointer);
+}
+
+void fs_exec_ColorPointer(fs_context *c, GLint size, GLenum type, GLsizei stride, const GLvoid *pointer)
+{
+    color_pointer(c, &c->arrays.color, size, type, stride, pointer);
 }
 
 void fs_exec_TexCoordPointer(fs_context *c, GLint size, GLenum type, GLsizei stride, const GLvoid *pointer)
@@ -113,12 +120,7 @@ void fs_exec_TexCoordPointer(fs_context *c, GLint size, GLenum type, GLsizei str
  * or GL_DOUBLE; a negative stride is GL_INVALID_VALUE. */
 void fs_exec_SecondaryColorPointer(fs_context *c, GLint size, GLenum type, GLsizei stride, const GLvoid *pointer)
 {
-    if (size < 3 || size > 4 || stride < 0) { fs_error(c, GL_INVALID_VALUE); return; }
-    if (fs_type_size(type) == 0 || type == GL_2_BYTES || type == GL_3_BYTES || type == GL_4_BYTES) {
-        fs_error(c, GL_INVALID_ENUM);
-        return;
-    }
-    set_array(c, &c->arrays.secondary_color, size, type, stride, pointer);
+    color_pointer(c, &c->arrays.secondary_color, size, type, stride, pointer);
 }
 
 void fs_exec_FogCoordPointer(fs_context *c, GLenum type, GLsizei stride, const GLvoid *pointer)

@@ -8,48 +8,9 @@
 #include "check.h"
 #include "osmesa_util.h"
 
-typedef void (*scene_fn)(fs_context *c, int w, int h);
+#define COMPARE_SCENE(fn, w, h, name) OSM_CHECK_SCENE(fn, w, h, name, "FS_COLOR_SUM_DUMP", "color_sum")
 
-static void draw_scene(fs_context *c, const void *user, int w, int h)
-{
-    (*(const scene_fn *)user)(c, w, h);
-}
-
-static long compare(scene_fn scene, int w, int h, const char *name, GLenum *errors)
-{
-    osm_pair p;
-    if (!osm_pair_render(&p, w, h, NULL, draw_scene, &scene))
-        return -1;
-    long d = p.d.differ;
-    *errors = fsglGetError(p.c);
-    printf("  %-22s %dx%d: %ld pixels differ, max %d\n", name, w, h, d, p.d.maxd);
-    if (getenv("FS_COLOR_SUM_DUMP")) {
-        char fn[256];
-        snprintf(fn, sizeof fn, "/tmp/color_sum_%s.ppm", name);
-        img_dump_ppm(fn, p.ref.color, p.c->fb.color, w, h, 4, true);
-    }
-    osm_pair_close(&p);
-    return d;
-}
-
-#define COMPARE_SCENE(fn, w, h, name)                          \
-    do {                                                       \
-        GLenum err_;                                           \
-        CHECK_EQ_INT(compare(fn, w, h, name, &err_), 0);       \
-        CHECK_EQ_INT(err_, GL_NO_ERROR);                       \
-    } while (0)
-
-static void perspective(fs_context *c, int w, int h)
-{
-    G(Viewport, 0, 0, w, h);
-    G(ClearColor, 0.1f, 0.1f, 0.1f, 1);
-    G(Clear, GL_COLOR_BUFFER_BIT);
-    G(MatrixMode, GL_PROJECTION);
-    G0(LoadIdentity);
-    G(Frustum, -1, 1, -1, 1, 1, 20);
-    G(MatrixMode, GL_MODELVIEW);
-    G0(LoadIdentity);
-}
+static void perspective(fs_context *c, int w, int h) { osm_frustum_scene(c, w, h, 0.1f, 0.1f, 0.1f, 20); }
 
 /* Immediate mode: secondary colours of every type, sums above 1, smooth
  * and flat, with and without GL_COLOR_SUM, with fog from the depth. */
