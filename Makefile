@@ -49,7 +49,7 @@ LAYER_LIBS := $(BUILD)/libfragsim_driver.a $(BUILD)/libfragsim_rtl.a $(BUILD)/li
 # Link the archives whole so that every executor overrides its weak fallback.
 WHOLE_LIB = -Wl,--whole-archive $(LAYER_LIBS) -Wl,--no-whole-archive
 
-.PHONY: all deps test run sanitize fuzz bench golden docs clean scenes tests shim study-filters exec-check
+.PHONY: all deps test run sanitize fuzz bench golden docs clean scenes tests shim study-filters exec-check gl-coverage
 .PHONY: studies study-occlusion study-query-cost study-texture-cache conformance conformance-run
 all: $(LIB) $(FRAGSIM) tests scenes shim exec-check
 
@@ -155,6 +155,12 @@ conformance-run:
 # Reference pages generated from the config and statistics tables.
 docs: all
 	@scripts/gen_docs.sh $(BUILD)
+
+# docs/gl_coverage.md: every GL 1.0-1.5 entry point of the system headers and
+# whether this build exports and executes it (tests/cli_gl_coverage.sh fails
+# when it is stale).
+gl-coverage: all
+	@/usr/bin/python3 scripts/gl_coverage.py --build $(BUILD) --pending tests/gl_coverage_pending.txt
 
 clean:
 	rm -rf build build-san build-clang build-fuzz

@@ -174,6 +174,40 @@ static void write_fake_pointer(fs_context *c, int cmd, const fs_client_array *a,
     write_call(c, &tc);
 }
 
+/* glClientActiveTexture(texture) as a fake call, around the texture
+ * coordinate pointers of units other than the client active one. */
+static void write_fake_client_unit(fs_context *c, int unit)
+{
+    const fs_cmd_info *info = &fs_cmd_table[FS_CMD_ClientActiveTexture];
+    fs_tval arg = enum_val(info->name, "texture", GL_TEXTURE0 + unit);
+    fs_tcall tc;
+    memset(&tc, 0, sizeof tc);
+    tc.name = info->name;
+    tc.nargs = 1;
+    tc.arg_names = info->argnames;
+    tc.args = &arg;
+    tc.flags = FS_TCALL_FAKE;
+    write_call(c, &tc);
+}
+
+/* The fake pointer calls of every unit's enabled texture coordinate array
+ * of client memory (GL 1.5 spec 2.8: each unit's, selected by
+ * glClientActiveTexture, which is set back after). */
+static void write_fake_texcoords(fs_context *c, uint64_t n)
+{
+    int active = fs_client_active_unit(c), selected = active;
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
+        const fs_client_array *a = &c->arrays.texcoord[u];
+        if (!a->enabled || a->buffer)
+            continue;
+        if (u != selected)
+            write_fake_client_unit(c, selected = u);
+        write_fake_pointer(c, FS_CMD_TexCoordPointer, a, n);
+    }
+    if (selected != active)
+        write_fake_client_unit(c, active);
+}
+
 /* memcpy(dest, src, n) of a mapping, as apitrace writes it (a fake call). */
 static void write_memcpy(fs_context *c, const void *p, int64_t n)
 {
@@ -198,7 +232,8 @@ static bool buffer_calls(fs_context *c, const fs_call *call)
     int t = call->nargs > 0 && call->a[0].i == GL_ELEMENT_ARRAY_BUFFER ? 1 : 0;
     int pk, slot = fs_pointer_slot(call->cmd, &pk);
     if (slot >= 0) {
-        return fs_array_slot(&c->arrays, slot)->buffer != 0; /* else written as fake calls before the draws */
+        int k = fs_array_of_slot(slot, fs_client_active_unit(c)); /* texcoords: the client unit's (2.8) */
+        return fs_client_array_at(&c->arrays, k)->buffer != 0; /* else written as fake calls before the draws */
     }
     switch (call->cmd) {
     case FS_CMD_MapBuffer:
@@ -355,8 +390,7 @@ void fs_capture_call(fs_context *c, const fs_call *call)
     if ((info->flags & FS_F_DRAW) && call->cmd != FS_CMD_ArrayElement) {
         uint64_t n = draw_vertex_count(offset_indices ? &resolved : call);
         const fs_array_state *ar = &c->arrays;
-        if (ar->texcoord.enabled && !ar->texcoord.buffer)
-            write_fake_pointer(c, FS_CMD_TexCoordPointer, &ar->texcoord, n);
+        write_fake_texcoords(c, n);
         if (ar->color.enabled && !ar->color.buffer)
             write_fake_pointer(c, FS_CMD_ColorPointer, &ar->color, n);
         if (ar->normal.enabled && !ar->normal.buffer)

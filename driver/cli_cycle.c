@@ -21,6 +21,7 @@ struct fs_cli_cycle {
     uint64_t ndraws, nqueries;
     struct { uint64_t frame; fs_cycle_stats s; } *frames;
     size_t nframes, cap;
+    long clock_khz;      /* clock.khz: results in seconds too when not 0 */
 };
 
 int fs_cli_cycle_mode(const char *name, int *mode)
@@ -94,6 +95,7 @@ fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_cycle_config *cfg, fs_contex
         return NULL;
     }
     h->mode = (fs_cycle_mode)mode;
+    h->clock_khz = cfg->clock_khz;
     h->cy = fs_cycle_create(cfg, h->mode, err, errlen);
     if (!h->cy) {
         free(h);
@@ -164,6 +166,15 @@ int fs_cli_cycle_json(fs_cli_cycle *h, json_t *into)
                               h->mode == FS_CYCLE_SAMPLED ? "sampled" : "cycle", "error_estimate", strtod(e, NULL),
                               "totals", with_stats(json_object(), &t), "frames", frames, "queries", h->queries_json,
                               "draws", h->draws_json);
+    /* With a clock the totals in seconds and frames per second too (the
+     * dissertation's tables are in seconds and fps, 3.1.9). */
+    if (cycle && h->clock_khz > 0) {
+        double sec = (double)t.cycles / ((double)h->clock_khz * 1000.0);
+        json_object_set_new(cycle, "clock_khz", json_integer(h->clock_khz));
+        json_object_set_new(cycle, "seconds", json_real(sec));
+        json_object_set_new(cycle, "frames_per_second",
+                            json_real(sec > 0 && h->nframes ? (double)h->nframes / sec : 0.0));
+    }
     return json_object_set_new(into, "cycle", cycle);
 }
 
@@ -182,6 +193,11 @@ void fs_cli_cycle_summary(fs_cli_cycle *h, FILE *f, double seconds)
             h->mode == FS_CYCLE_SAMPLED ? "sampled" : "cycle", (unsigned long long)t.cycles,
             (unsigned long long)t.estimated_cycles, 100.0 * error_estimate,
             seconds > 0 ? (double)t.cycles / seconds / 1e6 : 0.0);
+    if (h->clock_khz > 0) {
+        double sec = (double)t.cycles / ((double)h->clock_khz * 1000.0);
+        fprintf(f, "fragsim: at %.3f MHz: %.6f s simulated, %zu frame%s, %.2f frames/s\n", h->clock_khz / 1000.0, sec,
+                h->nframes, h->nframes == 1 ? "" : "s", sec > 0 ? (double)h->nframes / sec : 0.0);
+    }
 }
 
 fs_cycle *fs_cli_cycle_model(fs_cli_cycle *h) { return h->cy; }

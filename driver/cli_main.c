@@ -642,106 +642,166 @@ static int check_frame(replay_loop *L, long frame)
     return 0;
 }
 
+/* The run configuration of replay and bench: defaults, the --config file,
+ * the --set assignments, checked.  0, or -1 with the error printed. */
+static int load_run_config(fs_run_config *cfg, const char *file, const char *const *sets, int nsets)
+{
+    char err[1024];
+    fs_run_config_defaults(cfg);
+    int bad = file && fs_run_config_load(cfg, file, err, sizeof err) != 0;
+    for (int i = 0; !bad && i < nsets; i++)
+        bad = fs_run_config_set(cfg, sets[i], err, sizeof err) != 0;
+    if (bad || fs_run_config_check(cfg, err, sizeof err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        return -1;
+    }
+    return 0;
+}
+
+/* What a replay or check run holds open; replay_session_close releases
+ * whatever of it was opened, in the reverse order. */
+typedef struct replay_session {
+    fs_run_config cfg;
+    fs_replayer *r;
+    const fs_replay_info *info;
+    fs_context *c;
+    fs_osmesa *ref;
+    fs_cli_signals *sig;
+    char stats_path[4096];
+} replay_session;
+
+static int replay_session_close(replay_session *S, cli_opts *o)
+{
+    char err[1024];
+    int rc = 0;
+    fs_cli_cycle_end(o->cycle); /* before the signals: its last edges go to them */
+    o->cycle = NULL;
+    if (S->sig && fs_cli_signals_close(S->sig, err, sizeof err) != 0) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        rc = -1;
+    }
+    fs_osmesa_destroy(S->ref);
+    fs_context_destroy(S->c);
+    fs_replay_close(S->r);
+    memset(S, 0, sizeof *S);
+    return rc;
+}
+
+/* The directory of the snapshot prefix (empty when it has none). */
+static void snapshot_dir(const cli_opts *o, char *dir, size_t len)
+{
+    dir[0] = 0;
+    const char *slash = o->snapshot_prefix ? strrchr(o->snapshot_prefix, '/') : NULL;
+    if (slash)
+        snprintf(dir, len, "%.*s", (int)(slash - o->snapshot_prefix), o->snapshot_prefix);
+}
+
+/* Opens everything a run needs, each error before anything is written.
+ * Returns 0, or the exit status (the error printed; S is closed). */
+static int replay_session_open(replay_session *S, cli_opts *o, bool check)
+{
+    char err[1024];
+    memset(S, 0, sizeof *S);
+    if (load_run_config(&S->cfg, o->config_file, o->sets, o->nsets) != 0)
+        return 2;
+    fs_replay_opts ro = {o->frame_end, o->width ? o->width : (int)S->cfg.gl.framebuffer_width,
+                         o->height ? o->height : (int)S->cfg.gl.framebuffer_height};
+    ro.report_skipped = o->snapshot; /* glretrace snapshots at calls fragsim skips too */
+    ro.parser = o->parser;
+    if (!(S->r = fs_replay_open(o->trace, &ro, err, sizeof err))) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        return 1;
+    }
+    S->info = fs_replay_info_get(S->r);
+    if (S->info->warning[0])
+        fprintf(stderr, "%s: warning: %s\n", prog, S->info->warning);
+    int rc = 0;
+    if (!(S->c = fs_context_create(&S->cfg.gl, S->info->width, S->info->height))) {
+        fprintf(stderr, "%s: cannot create a %dx%d context\n", prog, S->info->width, S->info->height);
+        rc = 1;
+        goto fail;
+    }
+    fs_context_set_double_buffered(S->c, S->info->double_buffered); /* as the captured context */
+    if (check && !(S->ref = fs_osmesa_create(S->info->width, S->info->height, (int)S->cfg.gl.framebuffer_depth_bits,
+                                             (int)S->cfg.gl.framebuffer_stencil_bits, err, sizeof err))) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        rc = 1;
+        goto fail;
+    }
+    /* The signal options' errors (a missing GPIO chip, a line in use, an
+     * unknown signal...) come before anything is written. */
+    bool sig_failed;
+    S->sig = fs_cli_signals_open(&o->sig, o->mode, o->trace, o->config_file, &sig_failed, err, sizeof err);
+    if (sig_failed) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        rc = 2;
+        goto fail;
+    }
+    char snap_dir[4096];
+    snapshot_dir(o, snap_dir, sizeof snap_dir);
+    if (make_dir(o->out_dir) != 0 || (snap_dir[0] && make_dir(snap_dir) != 0)) {
+        fprintf(stderr, "%s: cannot create %s: %s\n", prog, snap_dir[0] ? snap_dir : o->out_dir, strerror(errno));
+        rc = 1;
+        goto fail;
+    }
+    if ((o->mode >= 0 && !(o->cycle = fs_cli_cycle_begin(o->mode, &S->cfg.cycle, S->c, o->csv_file, S->info->frames,
+                                                         o->draw_stats, err, sizeof err))) ||
+        (S->sig && fs_cli_signals_attach(S->sig, o->cycle, err, sizeof err) != 0)) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        rc = 2;
+        goto fail;
+    }
+    if (o->stats_file)
+        snprintf(S->stats_path, sizeof S->stats_path, "%s", o->stats_file);
+    else
+        snprintf(S->stats_path, sizeof S->stats_path, "%s/%s.json", o->out_dir, check ? "check" : "stats");
+    return 0;
+fail:
+    replay_session_close(S, o);
+    return rc;
+}
+
+/* What a finished run says on stderr (and, for check, on stdout). */
+static void report_run(const replay_session *S, const cli_opts *o, const replay_run *run, const fs_error_log *errs,
+                       bool check, int rc, double seconds)
+{
+    const fs_replay_info *info = S->info;
+    size_t nframes = run->nframes;
+    if (check && S->ref && nframes)
+        printf("colour: %zu frame%s exact, %zu within 1 (%llu pixels off by 1), %zu off by more; tolerance %d\n",
+               run->frames_exact, run->frames_exact == 1 ? "" : "s", run->frames_within_1,
+               (unsigned long long)run->pixels_by_1, run->frames_beyond_1, o->tolerance);
+    print_unsupported(stderr, S->c, S->r);
+    fs_error_log_summary(errs, stderr, prog);
+    if (o->snapshot)
+        fprintf(stderr, "%s: %llu snapshot%s written\n", prog, (unsigned long long)run->snapshots,
+                run->snapshots == 1 ? "" : "s");
+    if (rc == 0 || rc == 3)
+        fprintf(stderr, "%s: %zu frame%s (%dx%d) in %.2f s; %s%s; statistics in %s\n", prog, nframes,
+                nframes == 1 ? "" : "s", info->width, info->height, seconds, check ? "compared with OSMesa" : "images in ",
+                check ? "" : o->out_dir, S->stats_path);
+    if (nframes == 0 && rc == 0)
+        fprintf(stderr, "%s: warning: no frame in the selected range\n", prog);
+    if (o->cycle)
+        fs_cli_cycle_summary(o->cycle, stderr, seconds);
+}
+
 static int run_replay(int argc, char **argv, bool check)
 {
     cli_opts o;
     int p = parse_opts(argc, argv, &o, check);
     if (p)
         return p > 0 ? 0 : 2;
-    char err[1024];
-    fs_run_config cfg;
-    fs_run_config_defaults(&cfg);
-    if (o.config_file && fs_run_config_load(&cfg, o.config_file, err, sizeof err) != 0) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        return 2;
+    replay_session S;
+    int rc = replay_session_open(&S, &o, check);
+    if (rc != 0) {
+        fs_callset_free(&o.snaps);
+        return rc;
     }
-    for (int i = 0; i < o.nsets; i++) {
-        if (fs_run_config_set(&cfg, o.sets[i], err, sizeof err) != 0) {
-            fprintf(stderr, "%s: %s\n", prog, err);
-            return 2;
-        }
-    }
-    if (fs_run_config_check(&cfg, err, sizeof err) != 0) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        return 2;
-    }
-    fs_replay_opts ro = {o.frame_end, o.width ? o.width : (int)cfg.gl.framebuffer_width,
-                         o.height ? o.height : (int)cfg.gl.framebuffer_height};
-    ro.report_skipped = o.snapshot; /* glretrace snapshots at calls fragsim skips too */
-    ro.parser = o.parser;
-    fs_replayer *r = fs_replay_open(o.trace, &ro, err, sizeof err);
-    if (!r) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        return 1;
-    }
-    const fs_replay_info *info = fs_replay_info_get(r);
-    if (info->warning[0])
-        fprintf(stderr, "%s: warning: %s\n", prog, info->warning);
-    fs_context *c = fs_context_create(&cfg.gl, info->width, info->height);
-    if (c)
-        fs_context_set_double_buffered(c, info->double_buffered); /* as the captured context */
-    fs_osmesa *ref = NULL;
-    if (!c) {
-        fprintf(stderr, "%s: cannot create a %dx%d context\n", prog, info->width, info->height);
-        fs_replay_close(r);
-        return 1;
-    }
-    if (check) {
-        ref = fs_osmesa_create(info->width, info->height, (int)cfg.gl.framebuffer_depth_bits,
-                               (int)cfg.gl.framebuffer_stencil_bits, err, sizeof err);
-        if (!ref) {
-            fprintf(stderr, "%s: %s\n", prog, err);
-            fs_context_destroy(c);
-            fs_replay_close(r);
-            return 1;
-        }
-    }
-    /* The signal options' errors (a missing GPIO chip, a line in use, an
-     * unknown signal...) come before anything is written. */
-    bool sig_failed;
-    fs_cli_signals *sig = fs_cli_signals_open(&o.sig, o.mode, o.trace, o.config_file, &sig_failed, err, sizeof err);
-    if (sig_failed) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        fs_osmesa_destroy(ref);
-        fs_context_destroy(c);
-        fs_replay_close(r);
-        return 2;
-    }
-    char snap_dir[4096] = "";
-    if (o.snapshot_prefix && strrchr(o.snapshot_prefix, '/')) {
-        snprintf(snap_dir, sizeof snap_dir, "%.*s", (int)(strrchr(o.snapshot_prefix, '/') - o.snapshot_prefix),
-                 o.snapshot_prefix);
-    }
-    if (make_dir(o.out_dir) != 0 || (snap_dir[0] && make_dir(snap_dir) != 0)) {
-        fprintf(stderr, "%s: cannot create %s: %s\n", prog, snap_dir[0] ? snap_dir : o.out_dir, strerror(errno));
-        fs_cli_signals_close(sig, err, sizeof err);
-        fs_osmesa_destroy(ref);
-        fs_context_destroy(c);
-        fs_replay_close(r);
-        return 1;
-    }
-    if ((o.mode >= 0 && !(o.cycle = fs_cli_cycle_begin(o.mode, &cfg.cycle, c, o.csv_file, info->frames, o.draw_stats, err,
-                                                       sizeof err))) ||
-        (sig && fs_cli_signals_attach(sig, o.cycle, err, sizeof err) != 0)) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        fs_cli_cycle_end(o.cycle);
-        fs_cli_signals_close(sig, err, sizeof err);
-        fs_osmesa_destroy(ref);
-        fs_context_destroy(c);
-        fs_replay_close(r);
-        return 2;
-    }
-    char stats_path[4096];
-    if (o.stats_file)
-        snprintf(stats_path, sizeof stats_path, "%s", o.stats_file);
-    else
-        snprintf(stats_path, sizeof stats_path, "%s/%s.json", o.out_dir, check ? "check" : "stats");
-
-    replay_run run = {&o, info, ref && !info->uses_queries};
+    replay_run run = {&o, S.info, S.ref && !S.info->uses_queries};
     run.cap = 16;
     run.frames = malloc(run.cap * sizeof *run.frames);
     run.all_within = true;
-    int rc = 0;
     const char *status = "ok";
     double t0 = now_seconds();
     /* Per frame, OSMesa counts GL_SAMPLES_PASSED with a query of its own, to
@@ -749,12 +809,12 @@ static int run_replay(int argc, char **argv, bool check)
      * tests (what NOHC and occlusion queries count).  A trace that runs its
      * own queries is left alone: a second active query would be an error. */
     if (run.count_samples)
-        fs_osmesa_samples_begin(ref);
+        fs_osmesa_samples_begin(S.ref);
     fs_error_log errs = {0};
     errs.print = stderr;
     errs.print_max = 10;
-    fs_error_log_attach(&errs, c);
-    replay_loop loop = {r, c, ref, o.cycle, &errs, o.trace, o.frame_first, o.frame_last, true,
+    fs_error_log_attach(&errs, S.c);
+    replay_loop loop = {S.r, S.c, S.ref, o.cycle, &errs, o.trace, o.frame_first, o.frame_last, true,
                         !o.quiet && isatty(2), o.snapshot ? snapshot_after_call : NULL,
                         check ? check_frame : write_frame, &run};
     if (!run.frames || replay_loop_run(&loop) != 0) {
@@ -763,44 +823,20 @@ static int run_replay(int argc, char **argv, bool check)
         status = "error";
         rc = 1;
     }
-    frame_record *frames = run.frames;
-    size_t nframes = run.nframes;
-    if (check && ref && nframes)
-        printf("colour: %zu frame%s exact, %zu within 1 (%llu pixels off by 1), %zu off by more; tolerance %d\n",
-               run.frames_exact, run.frames_exact == 1 ? "" : "s", run.frames_within_1,
-               (unsigned long long)run.pixels_by_1, run.frames_beyond_1, o.tolerance);
     if (rc == 0 && check && !run.all_within) {
         status = "beyond tolerance";
         rc = 3;
     }
-    c->error_hook = NULL;
-    if (write_stats(stats_path, &o, &cfg, info, c, r, frames, nframes, check, status, &errs) != 0 && rc == 0)
+    S.c->error_hook = NULL;
+    if (write_stats(S.stats_path, &o, &S.cfg, S.info, S.c, S.r, run.frames, run.nframes, check, status, &errs) != 0 &&
+        rc == 0)
         rc = 1;
-    print_unsupported(stderr, c, r);
-    fs_error_log_summary(&errs, stderr, prog);
-    if (o.snapshot)
-        fprintf(stderr, "%s: %llu snapshot%s written\n", prog, (unsigned long long)run.snapshots,
-                run.snapshots == 1 ? "" : "s");
+    report_run(&S, &o, &run, &errs, check, rc, now_seconds() - t0);
     fs_error_log_free(&errs);
     fs_callset_free(&o.snaps);
-    if (rc == 0 || rc == 3)
-        fprintf(stderr, "%s: %zu frame%s (%dx%d) in %.2f s; %s%s; statistics in %s\n", prog, nframes,
-                nframes == 1 ? "" : "s", info->width, info->height, now_seconds() - t0,
-                check ? "compared with OSMesa" : "images in ", check ? "" : o.out_dir, stats_path);
-    if (nframes == 0 && rc == 0)
-        fprintf(stderr, "%s: warning: no frame in the selected range\n", prog);
-    if (o.cycle)
-        fs_cli_cycle_summary(o.cycle, stderr, now_seconds() - t0);
-    fs_cli_cycle_end(o.cycle);
-    if (fs_cli_signals_close(sig, err, sizeof err) != 0) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        if (rc == 0)
-            rc = 1;
-    }
-    free(frames);
-    fs_osmesa_destroy(ref);
-    fs_context_destroy(c);
-    fs_replay_close(r);
+    free(run.frames);
+    if (replay_session_close(&S, &o) != 0 && rc == 0)
+        rc = 1;
     return rc;
 }
 
@@ -878,13 +914,18 @@ static int finish_osmesa_frame(replay_loop *L, long frame)
     return 0;
 }
 
-static int run_bench(int argc, char **argv)
+typedef struct bench_opts {
+    const char *engine, *trace, *config_file;
+    int cycle_mode; /* --mode: as `fragsim replay --mode`; -1 functional */
+    long repeat;
+    int width, height;
+    fs_trace_parser parser;
+} bench_opts;
+
+/* 0, 1 after --help, or -1 on a bad argument (printed). */
+static int parse_bench_opts(int argc, char **argv, bench_opts *o)
 {
-    const char *engine = "model", *trace = NULL, *config_file = NULL;
-    int cycle_mode = -1; /* --mode: as `fragsim replay --mode` */
-    long repeat = 1;
-    int width = 0, height = 0;
-    fs_trace_parser parser = FS_TRACE_PARSER_FAST;
+    *o = (bench_opts){"model", NULL, NULL, -1, 1, 0, 0, FS_TRACE_PARSER_FAST};
     for (int i = 0; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             printf("usage: fragsim bench [--engine model|osmesa] [--repeat N] [--size WxH]\n"
@@ -895,130 +936,145 @@ static int run_bench(int argc, char **argv)
                    " validating it, the same for every engine), floor_seconds\n(going through the decoded"
                    " calls without executing them: no engine can be\nfaster), frames, and the model's"
                    " fragment count.  `make bench` compares the engines.\n");
-            return 0;
+            return 1;
         } else if (!strcmp(argv[i], "--engine") && i + 1 < argc) {
-            engine = argv[++i];
+            o->engine = argv[++i];
         } else if (!strcmp(argv[i], "--repeat") && i + 1 < argc) {
-            repeat = strtol(argv[++i], NULL, 10);
+            o->repeat = strtol(argv[++i], NULL, 10);
         } else if (!strcmp(argv[i], "--mode") && i + 1 < argc) {
-            if (fs_cli_cycle_mode(argv[++i], &cycle_mode) != 0) {
+            if (fs_cli_cycle_mode(argv[++i], &o->cycle_mode) != 0) {
                 fprintf(stderr, "%s: bench: --mode: expected functional, cycle or sampled\n", prog);
-                return 2;
+                return -1;
             }
         } else if (!strcmp(argv[i], "--config") && i + 1 < argc) {
-            config_file = argv[++i];
+            o->config_file = argv[++i];
         } else if (!strcmp(argv[i], "--reader") && i + 1 < argc) {
-            if (parse_reader(argv[++i], &parser) != 0)
-                return 2;
+            if (parse_reader(argv[++i], &o->parser) != 0)
+                return -1;
         } else if (!strcmp(argv[i], "--size") && i + 1 < argc) {
-            if (sscanf(argv[++i], "%dx%d", &width, &height) != 2 || width <= 0 || height <= 0) {
+            if (sscanf(argv[++i], "%dx%d", &o->width, &o->height) != 2 || o->width <= 0 || o->height <= 0) {
                 fprintf(stderr, "%s: --size: expected WxH\n", prog);
-                return 2;
+                return -1;
             }
-        } else if (argv[i][0] != '-' && !trace) {
-            trace = argv[i];
+        } else if (argv[i][0] != '-' && !o->trace) {
+            o->trace = argv[i];
         } else {
             fprintf(stderr, "%s: bench: bad argument %s (see --help)\n", prog, argv[i]);
-            return 2;
+            return -1;
         }
     }
-    bool model = !strcmp(engine, "model");
-    if (!trace || repeat < 1 || (!model && strcmp(engine, "osmesa"))) {
+    if (!o->trace || o->repeat < 1 || (strcmp(o->engine, "model") && strcmp(o->engine, "osmesa"))) {
         fprintf(stderr, "%s: bench: need a trace, --repeat >= 1 and --engine model|osmesa\n", prog);
-        return 2;
+        return -1;
     }
-    char err[1024];
-    fs_run_config cfg;
-    fs_run_config_defaults(&cfg);
-    if (config_file && (fs_run_config_load(&cfg, config_file, err, sizeof err) != 0 ||
-                        fs_run_config_check(&cfg, err, sizeof err) != 0)) {
-        fprintf(stderr, "%s: %s\n", prog, err);
-        return 2;
-    }
-    fs_cli_cycle *cy = NULL;
-    fs_cycle_stats cstats;
-    memset(&cstats, 0, sizeof cstats);
-    double cerror = 0;
-    fs_replay_opts ro = {NULL, width, height, 0};
-    ro.parser = parser;
-    double seconds = 0;
-    uint64_t fragments = 0, frames = 0;
-    const char *renderer = "fragsim";
-    fs_context *c = NULL;
-    fs_osmesa *ref = NULL;
-    /* Repetition -1 is an untimed warm-up: llvmpipe compiles its shader
-     * variants with LLVM on first use, which is not rendering throughput. */
-    double load = 0;
-    for (long rep = -1; rep < repeat; rep++) {
-        double tl = now_seconds();
-        fs_replayer *r = fs_replay_open(trace, &ro, err, sizeof err);
-        if (rep >= 0)
-            load += now_seconds() - tl;
-        if (!r) {
-            fprintf(stderr, "%s: %s\n", prog, err);
-            return 1;
-        }
-        const fs_replay_info *info = fs_replay_info_get(r);
-        if (!c && model && (c = fs_context_create(&cfg.gl, info->width, info->height)))
-            fs_context_set_double_buffered(c, info->double_buffered);
-        if (c && cycle_mode >= 0) {
-            /* A fresh model per repetition: each reports the same cycles. */
-            fs_cli_cycle_end(cy);
-            cy = fs_cli_cycle_begin(cycle_mode, &cfg.cycle, c, NULL, info->frames, false, err, sizeof err);
-            if (!cy) {
-                fprintf(stderr, "%s: %s\n", prog, err);
-                fs_replay_close(r);
-                return 1;
-            }
-        }
-        if (!ref && !model) {
-            ref = fs_osmesa_create(info->width, info->height, 24, 8, err, sizeof err);
-            if (ref)
-                renderer = (const char *)glGetString(GL_RENDERER);
-        }
-        if ((model && !c) || (!model && !ref)) {
-            fprintf(stderr, "%s: cannot create the %s context\n", prog, engine);
-            fs_replay_close(r);
-            return 1;
-        }
-        /* The model's counters run over every frame (not reset per frame). */
-        replay_loop loop = {.r = r, .model = c, .ref = ref, .cycle = cy, .trace = trace, .frame_last = -1,
-                            .at_frame = model ? NULL : finish_osmesa_frame};
-        double t0 = now_seconds();
-        int rc = replay_loop_run(&loop);
-        if (rc != 0) {
-            fs_replay_close(r);
-            return 1;
-        }
-        frames += loop.frames;
-        if (cy)
-            cerror = fs_cli_cycle_totals(cy, &cstats);
-        if (rep >= 0) {
-            seconds += now_seconds() - t0;
-        } else {
-            frames = 0;
-            if (c)
-                memset(&c->stats, 0, sizeof c->stats);
-        }
-        fs_replay_close(r);
-    }
-    if (model)
-        fragments = c->stats.fragments_generated; /* counted over every frame: stats reset only by replay */
-    double floor_s = time_floor(trace, &ro, repeat);
-    /* one line (scripts/bench.sh reads it with sed); reals as "%.6f" printed them */
-    json_t *line = json_pack("{s:s, s:s, s:o, s:o, s:o, s:I, s:I, s:I, s:I, s:o}", "engine", engine, "renderer",
-                             renderer, "seconds", fixed_real(seconds, 6), "load_seconds", fixed_real(load, 6),
-                             "floor_seconds", fixed_real(floor_s, 6), "frames", (json_int_t)frames, "fragments",
-                             (json_int_t)fragments, "cycles", (json_int_t)cstats.cycles, "estimated_cycles",
-                             (json_int_t)cstats.estimated_cycles, "error_estimate", fixed_real(cerror, 6));
-    if (!line || json_dumpf(line, stdout, JSON_REAL_PRECISION(15)) != 0)
-        fprintf(stderr, "%s: bench: out of memory\n", prog);
-    putchar('\n');
-    json_decref(line);
-    fs_cli_cycle_end(cy);
-    fs_context_destroy(c);
-    fs_osmesa_destroy(ref);
     return 0;
+}
+
+/* One engine's state over the repetitions of a bench run. */
+typedef struct bench_run {
+    const bench_opts *o;
+    fs_run_config cfg;
+    fs_replay_opts ro;
+    bool model;
+    fs_context *c;
+    fs_osmesa *ref;
+    fs_cli_cycle *cy;
+    fs_cycle_stats cstats;
+    double cerror, seconds, load;
+    uint64_t frames;
+    const char *renderer;
+} bench_run;
+
+/* Repetition `rep` (-1: the untimed warm-up: llvmpipe compiles its shader
+ * variants with LLVM on first use, which is not rendering throughput).
+ * 0, or -1 with the error printed. */
+static int bench_repetition(bench_run *B, long rep)
+{
+    char err[1024];
+    double tl = now_seconds();
+    fs_replayer *r = fs_replay_open(B->o->trace, &B->ro, err, sizeof err);
+    if (rep >= 0)
+        B->load += now_seconds() - tl;
+    if (!r) {
+        fprintf(stderr, "%s: %s\n", prog, err);
+        return -1;
+    }
+    const fs_replay_info *info = fs_replay_info_get(r);
+    if (!B->c && B->model && (B->c = fs_context_create(&B->cfg.gl, info->width, info->height)))
+        fs_context_set_double_buffered(B->c, info->double_buffered);
+    if (B->c && B->o->cycle_mode >= 0) {
+        /* A fresh model per repetition: each reports the same cycles. */
+        fs_cli_cycle_end(B->cy);
+        B->cy = fs_cli_cycle_begin(B->o->cycle_mode, &B->cfg.cycle, B->c, NULL, info->frames, false, err, sizeof err);
+        if (!B->cy) {
+            fprintf(stderr, "%s: %s\n", prog, err);
+            fs_replay_close(r);
+            return -1;
+        }
+    }
+    if (!B->ref && !B->model) {
+        B->ref = fs_osmesa_create(info->width, info->height, 24, 8, err, sizeof err);
+        if (B->ref)
+            B->renderer = (const char *)glGetString(GL_RENDERER);
+    }
+    if ((B->model && !B->c) || (!B->model && !B->ref)) {
+        fprintf(stderr, "%s: cannot create the %s context\n", prog, B->o->engine);
+        fs_replay_close(r);
+        return -1;
+    }
+    /* The model's counters run over every frame (not reset per frame). */
+    replay_loop loop = {.r = r, .model = B->c, .ref = B->ref, .cycle = B->cy, .trace = B->o->trace, .frame_last = -1,
+                        .at_frame = B->model ? NULL : finish_osmesa_frame};
+    double t0 = now_seconds();
+    int rc = replay_loop_run(&loop);
+    double t1 = now_seconds();
+    fs_replay_close(r);
+    if (rc != 0)
+        return -1;
+    if (B->cy)
+        B->cerror = fs_cli_cycle_totals(B->cy, &B->cstats);
+    if (rep >= 0) {
+        B->seconds += t1 - t0;
+        B->frames += loop.frames;
+    } else if (B->c) {
+        memset(&B->c->stats, 0, sizeof B->c->stats);
+    }
+    return 0;
+}
+
+static int run_bench(int argc, char **argv)
+{
+    bench_opts o;
+    int p = parse_bench_opts(argc, argv, &o);
+    if (p)
+        return p > 0 ? 0 : 2;
+    bench_run B = {.o = &o, .model = !strcmp(o.engine, "model"), .renderer = "fragsim"};
+    if (load_run_config(&B.cfg, o.config_file, NULL, 0) != 0)
+        return 2;
+    B.ro = (fs_replay_opts){NULL, o.width, o.height, 0};
+    B.ro.parser = o.parser;
+    int rc = 0;
+    for (long rep = -1; rep < o.repeat && rc == 0; rep++)
+        rc = bench_repetition(&B, rep);
+    if (rc == 0) {
+        /* counted over every frame: stats reset only by replay */
+        uint64_t fragments = B.model ? B.c->stats.fragments_generated : 0;
+        double floor_s = time_floor(o.trace, &B.ro, o.repeat);
+        /* one line (scripts/bench.sh reads it with sed); reals as "%.6f" printed them */
+        json_t *line = json_pack("{s:s, s:s, s:o, s:o, s:o, s:I, s:I, s:I, s:I, s:o}", "engine", o.engine, "renderer",
+                                 B.renderer, "seconds", fixed_real(B.seconds, 6), "load_seconds", fixed_real(B.load, 6),
+                                 "floor_seconds", fixed_real(floor_s, 6), "frames", (json_int_t)B.frames, "fragments",
+                                 (json_int_t)fragments, "cycles", (json_int_t)B.cstats.cycles, "estimated_cycles",
+                                 (json_int_t)B.cstats.estimated_cycles, "error_estimate", fixed_real(B.cerror, 6));
+        if (!line || json_dumpf(line, stdout, JSON_REAL_PRECISION(15)) != 0)
+            fprintf(stderr, "%s: bench: out of memory\n", prog);
+        putchar('\n');
+        json_decref(line);
+    }
+    fs_cli_cycle_end(B.cy);
+    fs_context_destroy(B.c);
+    fs_osmesa_destroy(B.ref);
+    return rc ? 1 : 0;
 }
 
 static int run_config(int argc, char **argv)

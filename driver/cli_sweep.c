@@ -276,6 +276,174 @@ __attribute__((format(printf, 2, 3))) static int spec_err(spec *s, const char *f
 }
 #define SPEC_ERR(...) spec_err(s, __VA_ARGS__)
 
+/* [sweep]: the run as a whole. */
+static int spec_sweep_key(spec *s, const char *name, const char *value)
+{
+    if (!strcmp(name, "name"))
+        fmt(s->name, sizeof s->name, "%s", value);
+    else if (!strcmp(name, "mode")) {
+        if (strcmp(value, "functional") && strcmp(value, "cycle") && strcmp(value, "sampled"))
+            return SPEC_ERR("mode '%s': expected functional, cycle or sampled", value);
+        fmt(s->mode, sizeof s->mode, "%s", value);
+    } else if (!strcmp(name, "base_config"))
+        fmt(s->base_config, sizeof s->base_config, "%s", value);
+    else if (!strcmp(name, "out"))
+        fmt(s->out, sizeof s->out, "%s", value);
+    else if (!strcmp(name, "jobs")) {
+        char *end;
+        long j = strtol(value, &end, 10);
+        if (*end || j < 1 || j > 256)
+            return SPEC_ERR("jobs '%s': expected 1..256", value);
+        s->jobs = (int)j;
+    } else
+        return SPEC_ERR("unknown key sweep.%s (name, mode, base_config, out, jobs)", name);
+    return 1;
+}
+
+/* [traces]: one trace file or generated scene per key. */
+static int spec_trace_key(spec *s, const char *name, const char *value)
+{
+    if (s->ntraces == MAX_TRACES)
+        return SPEC_ERR("more than %d traces", MAX_TRACES);
+    trace_item *t = &s->traces[s->ntraces];
+    memset(t, 0, sizeof *t);
+    if (strlen(value) >= CELL_LEN - 16)
+        return SPEC_ERR("traces.%s: longer than %d characters", name, CELL_LEN - 17);
+    if (!strcmp(name, "trace")) {
+        /* The CSV names a file trace by its name without directory and
+         * ".trace", short enough for tables and plot keys. */
+        const char *base = strrchr(value, '/');
+        fmt(t->label, sizeof t->label, "%s", base ? base + 1 : value);
+        size_t ll = strlen(t->label);
+        if (ll > 6 && !strcmp(t->label + ll - 6, ".trace"))
+            t->label[ll - 6] = '\0';
+        absolute(value, t->path, sizeof t->path);
+    } else if (!strcmp(name, "scene")) {
+        const char *colon = strchr(value, ':');
+        size_t l = colon ? (size_t)(colon - value) : strlen(value);
+        if (l == 0 || l >= sizeof t->scene)
+            return SPEC_ERR("scene '%s': expected NAME or NAME:SCALE", value);
+        memcpy(t->scene, value, l);
+        fmt(t->scale, sizeof t->scale, "%s", colon ? colon + 1 : "small");
+        for (const char *c = t->scene; *c; c++)
+            if (!(*c >= 'a' && *c <= 'z') && !(*c >= '0' && *c <= '9') && *c != '_')
+                return SPEC_ERR("scene '%s': a scene name is lower-case letters and digits", value);
+        for (const char *c = t->scale; *c; c++)
+            if (!(*c >= 'a' && *c <= 'z') && !(*c >= '0' && *c <= '9'))
+                return SPEC_ERR("scene '%s': scale is small, paper or a number", value);
+        fmt(t->label, sizeof t->label, "%s:%s", t->scene, t->scale);
+    } else
+        return SPEC_ERR("unknown key traces.%s (trace, scene)", name);
+    s->ntraces++;
+    return 1;
+}
+
+/* [axis.KEY]: the values of one config key (or of whole config files). */
+static int spec_axis_key(spec *s, const char *section, const char *name, const char *value)
+{
+    const char *key = section + 5;
+    axis *a = NULL;
+    for (int i = 0; i < s->naxes; i++)
+        if (!strcmp(s->axes[i].name, key))
+            a = &s->axes[i];
+    if (a || strcmp(name, "values"))
+        return a ? SPEC_ERR("axis %s given twice", key)
+                 : SPEC_ERR("unknown key %s in [%s] (only values)", name, section);
+    if (s->naxes == MAX_AXES)
+        return SPEC_ERR("more than %d axes", MAX_AXES);
+    a = &s->axes[s->naxes];
+    fmt(a->name, sizeof a->name, "%s", key);
+    a->nvalues = split_list(value, a->values, MAX_VALUES);
+    if (a->nvalues < 0)
+        return SPEC_ERR("[%s] values: expected 1 to %d comma-separated values", section, MAX_VALUES);
+    if (strcmp(key, "config") != 0) {
+        /* The config parser's own check, so an axis gives the same
+         * message for an unknown key or a bad value as an INI file. */
+        for (int i = 0; i < a->nvalues; i++) {
+            fs_run_config scratch;
+            fs_run_config_defaults(&scratch);
+            char assign[2 * NAME_LEN + 2], msg[400];
+            fmt(assign, sizeof assign, "%s=%s", key, a->values[i]);
+            if (fs_run_config_set(&scratch, assign, msg, sizeof msg) != 0) {
+                const char *m = strncmp(msg, "--set: ", 7) ? msg : msg + 7;
+                return SPEC_ERR("%s", m);
+            }
+        }
+    }
+    s->naxes++;
+    return 1;
+}
+
+/* [output]: the columns of results.csv. */
+static int spec_output_key(spec *s, const char *name, const char *value)
+{
+    if (!strcmp(name, "stats")) {
+        s->nstats = split_list(value, s->stats, MAX_STATS);
+        if (s->nstats < 0)
+            return SPEC_ERR("output.stats: expected 1 to %d comma-separated names", MAX_STATS);
+    } else if (!strncmp(name, "ratio.", 6)) {
+        if (s->nratios == MAX_RATIOS)
+            return SPEC_ERR("more than %d ratio columns", MAX_RATIOS);
+        const char *slash = strchr(value, '/');
+        size_t ln = slash ? (size_t)(slash - value) : 0;
+        int k = s->nratios;
+        if (!slash || ln >= NAME_LEN || strlen(slash + 1) >= NAME_LEN || strlen(name + 6) >= NAME_LEN || !name[6])
+            return SPEC_ERR("output.%s: expected ratio.NAME = COLUMN / COLUMN", name);
+        fmt(s->ratio_name[k], NAME_LEN, "%s", name + 6);
+        memcpy(s->ratio_num[k], value, ln);
+        s->ratio_num[k][ln] = '\0';
+        trim(s->ratio_num[k]);
+        fmt(s->ratio_den[k], NAME_LEN, "%s", slash + 1);
+        trim(s->ratio_den[k]);
+        s->nratios++;
+    } else if (!strcmp(name, "cycles"))
+        fmt(s->cycles_path, sizeof s->cycles_path, "%s", value);
+    else if (!strcmp(name, "fragments"))
+        fmt(s->fragments_path, sizeof s->fragments_path, "%s", value);
+    else
+        return SPEC_ERR("unknown key output.%s (stats, ratio.NAME, cycles, fragments)", name);
+    return 1;
+}
+
+/* [plot.NAME]: one gnuplot figure. */
+static int spec_plot_key(spec *s, const char *section, const char *name, const char *value)
+{
+    plot *p = NULL;
+    for (int i = 0; i < s->nplots; i++)
+        if (!strcmp(s->plots[i].name, section + 5))
+            p = &s->plots[i];
+    if (!p) {
+        if (s->nplots == MAX_PLOTS)
+            return SPEC_ERR("more than %d plots", MAX_PLOTS);
+        p = &s->plots[s->nplots++];
+        memset(p, 0, sizeof *p);
+        fmt(p->name, sizeof p->name, "%s", section + 5);
+        for (const char *c = p->name; *c; c++)
+            if (!(*c >= 'a' && *c <= 'z') && !(*c >= '0' && *c <= '9') && *c != '_' && *c != '-')
+                return SPEC_ERR("plot name '%s': lower-case letters, digits, _ and -", p->name);
+    }
+    bool b;
+    if (!strcmp(name, "x"))
+        fmt(p->x, sizeof p->x, "%s", value);
+    else if (!strcmp(name, "y"))
+        fmt(p->y, sizeof p->y, "%s", value);
+    else if (!strcmp(name, "series"))
+        fmt(p->series, sizeof p->series, "%s", value);
+    else if (!strcmp(name, "title"))
+        fmt(p->title, sizeof p->title, "%s", value);
+    else if (!strcmp(name, "xlabel"))
+        fmt(p->xlabel, sizeof p->xlabel, "%s", value);
+    else if (!strcmp(name, "ylabel"))
+        fmt(p->ylabel, sizeof p->ylabel, "%s", value);
+    else if (!strcmp(name, "logx") || !strcmp(name, "logy")) {
+        if (!parse_bool(value, &b))
+            return SPEC_ERR("%s.%s '%s' is not a boolean", section, name, value);
+        *(name[3] == 'x' ? &p->logx : &p->logy) = b;
+    } else
+        return SPEC_ERR("unknown key %s in [%s] (x, y, series, title, xlabel, ylabel, logx, logy)", name, section);
+    return 1;
+}
+
 static int on_spec_value(void *user, const char *section, const char *name, const char *value)
 {
     spec *s = user;
@@ -285,159 +453,16 @@ static int on_spec_value(void *user, const char *section, const char *name, cons
         return SPEC_ERR("%s.%s: value longer than %d characters", section, name, VALUE_LEN - 1);
     if (strchr(value, '\t'))
         return SPEC_ERR("%s.%s: a tab in a value (the job list is tab-separated)", section, name);
-    if (!strcmp(section, "sweep")) {
-        if (!strcmp(name, "name"))
-            fmt(s->name, sizeof s->name, "%s", value);
-        else if (!strcmp(name, "mode")) {
-            if (strcmp(value, "functional") && strcmp(value, "cycle") && strcmp(value, "sampled"))
-                return SPEC_ERR("mode '%s': expected functional, cycle or sampled", value);
-            fmt(s->mode, sizeof s->mode, "%s", value);
-        } else if (!strcmp(name, "base_config"))
-            fmt(s->base_config, sizeof s->base_config, "%s", value);
-        else if (!strcmp(name, "out"))
-            fmt(s->out, sizeof s->out, "%s", value);
-        else if (!strcmp(name, "jobs")) {
-            char *end;
-            long j = strtol(value, &end, 10);
-            if (*end || j < 1 || j > 256)
-                return SPEC_ERR("jobs '%s': expected 1..256", value);
-            s->jobs = (int)j;
-        } else
-            return SPEC_ERR("unknown key sweep.%s (name, mode, base_config, out, jobs)", name);
-        return 1;
-    }
-    if (!strcmp(section, "traces")) {
-        if (s->ntraces == MAX_TRACES)
-            return SPEC_ERR("more than %d traces", MAX_TRACES);
-        trace_item *t = &s->traces[s->ntraces];
-        memset(t, 0, sizeof *t);
-        if (strlen(value) >= CELL_LEN - 16)
-            return SPEC_ERR("traces.%s: longer than %d characters", name, CELL_LEN - 17);
-        if (!strcmp(name, "trace")) {
-            /* The CSV names a file trace by its name without directory and
-             * ".trace", short enough for tables and plot keys. */
-            const char *base = strrchr(value, '/');
-            fmt(t->label, sizeof t->label, "%s", base ? base + 1 : value);
-            size_t ll = strlen(t->label);
-            if (ll > 6 && !strcmp(t->label + ll - 6, ".trace"))
-                t->label[ll - 6] = '\0';
-            absolute(value, t->path, sizeof t->path);
-        } else if (!strcmp(name, "scene")) {
-            const char *colon = strchr(value, ':');
-            size_t l = colon ? (size_t)(colon - value) : strlen(value);
-            if (l == 0 || l >= sizeof t->scene)
-                return SPEC_ERR("scene '%s': expected NAME or NAME:SCALE", value);
-            memcpy(t->scene, value, l);
-            fmt(t->scale, sizeof t->scale, "%s", colon ? colon + 1 : "small");
-            for (const char *c = t->scene; *c; c++)
-                if (!(*c >= 'a' && *c <= 'z') && !(*c >= '0' && *c <= '9') && *c != '_')
-                    return SPEC_ERR("scene '%s': a scene name is lower-case letters and digits", value);
-            for (const char *c = t->scale; *c; c++)
-                if (!(*c >= 'a' && *c <= 'z') && !(*c >= '0' && *c <= '9'))
-                    return SPEC_ERR("scene '%s': scale is small, paper or a number", value);
-            fmt(t->label, sizeof t->label, "%s:%s", t->scene, t->scale);
-        } else
-            return SPEC_ERR("unknown key traces.%s (trace, scene)", name);
-        s->ntraces++;
-        return 1;
-    }
-    if (!strncmp(section, "axis.", 5)) {
-        const char *key = section + 5;
-        axis *a = NULL;
-        for (int i = 0; i < s->naxes; i++)
-            if (!strcmp(s->axes[i].name, key))
-                a = &s->axes[i];
-        if (a || strcmp(name, "values"))
-            return a ? SPEC_ERR("axis %s given twice", key)
-                     : SPEC_ERR("unknown key %s in [%s] (only values)", name, section);
-        if (s->naxes == MAX_AXES)
-            return SPEC_ERR("more than %d axes", MAX_AXES);
-        a = &s->axes[s->naxes];
-        fmt(a->name, sizeof a->name, "%s", key);
-        a->nvalues = split_list(value, a->values, MAX_VALUES);
-        if (a->nvalues < 0)
-            return SPEC_ERR("[%s] values: expected 1 to %d comma-separated values", section, MAX_VALUES);
-        if (strcmp(key, "config") != 0) {
-            /* The config parser's own check, so an axis gives the same
-             * message for an unknown key or a bad value as an INI file. */
-            for (int i = 0; i < a->nvalues; i++) {
-                fs_run_config scratch;
-                fs_run_config_defaults(&scratch);
-                char assign[2 * NAME_LEN + 2], msg[400];
-                fmt(assign, sizeof assign, "%s=%s", key, a->values[i]);
-                if (fs_run_config_set(&scratch, assign, msg, sizeof msg) != 0) {
-                    const char *m = strncmp(msg, "--set: ", 7) ? msg : msg + 7;
-                    return SPEC_ERR("%s", m);
-                }
-            }
-        }
-        s->naxes++;
-        return 1;
-    }
-    if (!strcmp(section, "output")) {
-        if (!strcmp(name, "stats")) {
-            s->nstats = split_list(value, s->stats, MAX_STATS);
-            if (s->nstats < 0)
-                return SPEC_ERR("output.stats: expected 1 to %d comma-separated names", MAX_STATS);
-        } else if (!strncmp(name, "ratio.", 6)) {
-            if (s->nratios == MAX_RATIOS)
-                return SPEC_ERR("more than %d ratio columns", MAX_RATIOS);
-            const char *slash = strchr(value, '/');
-            size_t ln = slash ? (size_t)(slash - value) : 0;
-            int k = s->nratios;
-            if (!slash || ln >= NAME_LEN || strlen(slash + 1) >= NAME_LEN || strlen(name + 6) >= NAME_LEN || !name[6])
-                return SPEC_ERR("output.%s: expected ratio.NAME = COLUMN / COLUMN", name);
-            fmt(s->ratio_name[k], NAME_LEN, "%s", name + 6);
-            memcpy(s->ratio_num[k], value, ln);
-            s->ratio_num[k][ln] = '\0';
-            trim(s->ratio_num[k]);
-            fmt(s->ratio_den[k], NAME_LEN, "%s", slash + 1);
-            trim(s->ratio_den[k]);
-            s->nratios++;
-        } else if (!strcmp(name, "cycles"))
-            fmt(s->cycles_path, sizeof s->cycles_path, "%s", value);
-        else if (!strcmp(name, "fragments"))
-            fmt(s->fragments_path, sizeof s->fragments_path, "%s", value);
-        else
-            return SPEC_ERR("unknown key output.%s (stats, ratio.NAME, cycles, fragments)", name);
-        return 1;
-    }
-    if (!strncmp(section, "plot.", 5)) {
-        plot *p = NULL;
-        for (int i = 0; i < s->nplots; i++)
-            if (!strcmp(s->plots[i].name, section + 5))
-                p = &s->plots[i];
-        if (!p) {
-            if (s->nplots == MAX_PLOTS)
-                return SPEC_ERR("more than %d plots", MAX_PLOTS);
-            p = &s->plots[s->nplots++];
-            memset(p, 0, sizeof *p);
-            fmt(p->name, sizeof p->name, "%s", section + 5);
-            for (const char *c = p->name; *c; c++)
-                if (!(*c >= 'a' && *c <= 'z') && !(*c >= '0' && *c <= '9') && *c != '_' && *c != '-')
-                    return SPEC_ERR("plot name '%s': lower-case letters, digits, _ and -", p->name);
-        }
-        bool b;
-        if (!strcmp(name, "x"))
-            fmt(p->x, sizeof p->x, "%s", value);
-        else if (!strcmp(name, "y"))
-            fmt(p->y, sizeof p->y, "%s", value);
-        else if (!strcmp(name, "series"))
-            fmt(p->series, sizeof p->series, "%s", value);
-        else if (!strcmp(name, "title"))
-            fmt(p->title, sizeof p->title, "%s", value);
-        else if (!strcmp(name, "xlabel"))
-            fmt(p->xlabel, sizeof p->xlabel, "%s", value);
-        else if (!strcmp(name, "ylabel"))
-            fmt(p->ylabel, sizeof p->ylabel, "%s", value);
-        else if (!strcmp(name, "logx") || !strcmp(name, "logy")) {
-            if (!parse_bool(value, &b))
-                return SPEC_ERR("%s.%s '%s' is not a boolean", section, name, value);
-            *(name[3] == 'x' ? &p->logx : &p->logy) = b;
-        } else
-            return SPEC_ERR("unknown key %s in [%s] (x, y, series, title, xlabel, ylabel, logx, logy)", name, section);
-        return 1;
-    }
+    if (!strcmp(section, "sweep"))
+        return spec_sweep_key(s, name, value);
+    if (!strcmp(section, "traces"))
+        return spec_trace_key(s, name, value);
+    if (!strncmp(section, "axis.", 5))
+        return spec_axis_key(s, section, name, value);
+    if (!strcmp(section, "output"))
+        return spec_output_key(s, name, value);
+    if (!strncmp(section, "plot.", 5))
+        return spec_plot_key(s, section, name, value);
     return SPEC_ERR("unknown section [%s] (sweep, traces, axis.SECTION.KEY, axis.config, output, plot.NAME)", section);
 }
 
@@ -1262,11 +1287,46 @@ static int make_scenes(spec *s, const char *out)
 
 /* ---------- entry ---------- */
 
-int fs_cli_sweep(int argc, char **argv)
+typedef struct sweep_opts {
+    const char *spec_path, *out, *runner, *mode;
+    int jobs; /* -j; 0: the spec's, or 2 */
+    bool no_run, gather_only;
+} sweep_opts;
+
+/* The value of -j, --out, --mode or --runner; 0, or -1 (printed). */
+static int sweep_opt_value(sweep_opts *o, const char *a, const char *v)
 {
-    const char *spec_path = NULL, *out_opt = NULL, *runner = "auto", *mode_opt = NULL;
-    int jobs = 0;
-    bool no_run = false, gather_only = false;
+    if (a[1] == 'j') {
+        char *end;
+        long j = strtol(v, &end, 10);
+        if (*end || j < 1 || j > 256) {
+            fprintf(stderr, "%s: -j '%s': expected 1..256\n", prog, v);
+            return -1;
+        }
+        o->jobs = (int)j;
+    } else if (!strcmp(a, "--out")) {
+        o->out = v;
+    } else if (!strcmp(a, "--mode")) {
+        if (strcmp(v, "functional") && strcmp(v, "cycle") && strcmp(v, "sampled")) {
+            fprintf(stderr, "%s: --mode '%s': expected functional, cycle or sampled\n", prog, v);
+            return -1;
+        }
+        o->mode = v;
+    } else if (strcmp(v, "auto") && strcmp(v, "parallel") && strcmp(v, "builtin")) {
+        fprintf(stderr, "%s: --runner '%s': expected auto, parallel or builtin\n", prog, v);
+        return -1;
+    } else {
+        o->runner = v;
+    }
+    return 0;
+}
+
+/* 0: run the sweep; otherwise the exit status (--help: 0 after *done; a
+ * --run-job's own status; 2 on a bad option, printed). */
+static int parse_sweep_opts(int argc, char **argv, sweep_opts *o, bool *done)
+{
+    *o = (sweep_opts){NULL, NULL, "auto", NULL, 0, false, false};
+    *done = true;
     for (int i = 0; i < argc;) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         i++; /* past the option; past its value too where it takes one */
@@ -1287,120 +1347,62 @@ int fs_cli_sweep(int argc, char **argv)
                 return 2;
             }
             i++;
-            if (a[1] == 'j') {
-                char *end;
-                long j = strtol(v, &end, 10);
-                if (*end || j < 1 || j > 256) {
-                    fprintf(stderr, "%s: -j '%s': expected 1..256\n", prog, v);
-                    return 2;
-                }
-                jobs = (int)j;
-            } else if (!strcmp(a, "--out"))
-                out_opt = v;
-            else if (!strcmp(a, "--mode")) {
-                if (strcmp(v, "functional") && strcmp(v, "cycle") && strcmp(v, "sampled")) {
-                    fprintf(stderr, "%s: --mode '%s': expected functional, cycle or sampled\n", prog, v);
-                    return 2;
-                }
-                mode_opt = v;
-            }
-            else if (strcmp(v, "auto") && strcmp(v, "parallel") && strcmp(v, "builtin")) {
-                fprintf(stderr, "%s: --runner '%s': expected auto, parallel or builtin\n", prog, v);
+            if (sweep_opt_value(o, a, v) != 0)
                 return 2;
-            } else
-                runner = v;
-        } else if (!strcmp(a, "--no-run"))
-            no_run = true;
-        else if (!strcmp(a, "--gather"))
-            gather_only = true;
-        else if (a[0] == '-' && a[1]) {
+        } else if (!strcmp(a, "--no-run")) {
+            o->no_run = true;
+        } else if (!strcmp(a, "--gather")) {
+            o->gather_only = true;
+        } else if (a[0] == '-' && a[1]) {
             fprintf(stderr, "%s: unknown option %s (see --help)\n", prog, a);
             return 2;
-        } else if (!spec_path)
-            spec_path = a;
-        else {
-            fprintf(stderr, "%s: more than one spec given (%s, %s)\n", prog, spec_path, a);
+        } else if (!o->spec_path) {
+            o->spec_path = a;
+        } else {
+            fprintf(stderr, "%s: more than one spec given (%s, %s)\n", prog, o->spec_path, a);
             return 2;
         }
     }
-    if (!spec_path) {
+    if (!o->spec_path) {
         fprintf(stderr, "%s: no spec given (see --help)\n", prog);
         return 2;
     }
-    spec *s = malloc(sizeof *s);
-    if (!s || load_spec(s, spec_path) != 0) {
-        free(s);
-        return 2;
+    *done = false;
+    return 0;
+}
+
+/* Runs the n jobs of OUT/jobs.tsv; 0, or -1 (printed). */
+static int run_jobs(const spec *s, const sweep_opts *o, const char *out, long n)
+{
+    int j = o->jobs ? o->jobs : s->jobs ? s->jobs : 2;
+    bool use_parallel = !strcmp(o->runner, "parallel") || (!strcmp(o->runner, "auto") && have_program("parallel"));
+    if (!strcmp(o->runner, "parallel") && !have_program("parallel")) {
+        fprintf(stderr, "%s: --runner parallel: GNU parallel is not installed (make deps)\n", prog);
+        return -1;
     }
-    if (mode_opt)
-        fmt(s->mode, sizeof s->mode, "%s", mode_opt);
-    long n = job_count(s);
-    int rc = 2;
-    row *rows = NULL;
-    char out_rel[PATH_LEN], out[PATH_LEN], spec_abs[PATH_LEN];
-    if (out_opt)
-        fmt(out_rel, sizeof out_rel, "%s", out_opt);
-    else if (s->out[0])
-        fmt(out_rel, sizeof out_rel, "%s", s->out);
-    else
-        fmt(out_rel, sizeof out_rel, "out/sweeps/%s", s->name);
-    if (strlen(out_rel) >= VALUE_LEN) {
-        fprintf(stderr, "%s: output directory name longer than %d characters\n", prog, VALUE_LEN - 1);
-        goto done;
+    /* Stale results of an earlier run must not be gathered as this one's. */
+    for (long k = 0; k < n; k++) {
+        char r[PATH_LEN + 32];
+        fmt(r, sizeof r, "%s/jobs/%ld/result", out, k);
+        unlink(r);
     }
-    absolute(out_rel, out, sizeof out);
-    absolute(spec_path, spec_abs, sizeof spec_abs);
-    if (n > 10000) {
-        fprintf(stderr, "%s: %s: %ld jobs; at most 10000\n", prog, spec_path, n);
-        goto done;
+    double t0 = now_seconds();
+    int ran = use_parallel ? run_with_parallel(out, n, j) : run_builtin(out, n, j);
+    if (ran != 0) {
+        fprintf(stderr, "%s: the %s runner could not start\n", prog, use_parallel ? "GNU parallel" : "built-in");
+        return -1;
     }
-    for (long j = 0; j < n; j++)
-        if (check_job_config(s, j) != 0)
-            goto done;
-    if (make_dirs(out) != 0) {
-        fprintf(stderr, "%s: cannot create %s: %s\n", prog, out, strerror(errno));
-        goto done;
-    }
-    if (!gather_only) {
-        if (make_scenes(s, out) != 0 || write_jobs(s, out) != 0 ||
-            write_cluster_scripts(s, out, spec_abs, n) != 0) {
-            fprintf(stderr, "%s: cannot write the job list or scripts in %s\n", prog, out);
-            goto done;
-        }
-        printf("%s: %ld jobs in %s/jobs.tsv; cluster: %s/slurm.sh (sbatch --array=0-%ld), %s/parallel_ssh.sh\n",
-               s->name, n, out, out, n - 1, out);
-    } else {
-        /* Scene traces live in OUT/traces; labels only need their names. */
-    }
-    if (!gather_only && !no_run) {
-        int j = jobs ? jobs : s->jobs ? s->jobs : 2;
-        bool use_parallel = !strcmp(runner, "parallel") || (!strcmp(runner, "auto") && have_program("parallel"));
-        if (!strcmp(runner, "parallel") && !have_program("parallel")) {
-            fprintf(stderr, "%s: --runner parallel: GNU parallel is not installed (make deps)\n", prog);
-            goto done;
-        }
-        /* Stale results of an earlier run must not be gathered as this one's. */
-        for (long k = 0; k < n; k++) {
-            char r[PATH_LEN + 32];
-            fmt(r, sizeof r, "%s/jobs/%ld/result", out, k);
-            unlink(r);
-        }
-        double t0 = now_seconds();
-        int ran = use_parallel ? run_with_parallel(out, n, j) : run_builtin(out, n, j);
-        if (ran != 0) {
-            fprintf(stderr, "%s: the %s runner could not start\n", prog, use_parallel ? "GNU parallel" : "built-in");
-            goto done;
-        }
-        printf("%s: ran %ld jobs with %s (-j %d) in %.1f s\n", s->name, n,
-               use_parallel ? "GNU parallel" : "the built-in process pool", j, now_seconds() - t0);
-    }
-    if (no_run) {
-        rc = 0;
-        goto done;
-    }
-    rows = calloc((size_t)n, sizeof *rows);
+    printf("%s: ran %ld jobs with %s (-j %d) in %.1f s\n", s->name, n,
+           use_parallel ? "GNU parallel" : "the built-in process pool", j, now_seconds() - t0);
+    return 0;
+}
+
+/* results.csv and the plots from the jobs' results: the exit status. */
+static int gather_and_plot(const spec *s, const char *out, long n)
+{
+    row *rows = calloc((size_t)(n ? n : 1), sizeof *rows);
     if (!rows)
-        goto done;
+        return 2;
     char cols[MAX_AXES + MAX_STATS + MAX_RATIOS + 8][NAME_LEN];
     int ncols;
     long failed = gather(s, out, rows, cols, &ncols);
@@ -1412,9 +1414,70 @@ int fs_cli_sweep(int argc, char **argv)
         else
             plot_failed = 1;
     }
-    rc = failed || plot_failed ? 1 : 0;
-done:
     free(rows);
+    return failed || plot_failed ? 1 : 0;
+}
+
+/* The job list and cluster scripts in OUT, each job's config checked
+ * first; 0, or -1 (printed). */
+static int prepare_jobs(spec *s, const sweep_opts *o, const char *out, long n)
+{
+    char spec_abs[PATH_LEN];
+    absolute(o->spec_path, spec_abs, sizeof spec_abs);
+    if (n > 10000) {
+        fprintf(stderr, "%s: %s: %ld jobs; at most 10000\n", prog, o->spec_path, n);
+        return -1;
+    }
+    for (long j = 0; j < n; j++)
+        if (check_job_config(s, j) != 0)
+            return -1;
+    if (make_dirs(out) != 0) {
+        fprintf(stderr, "%s: cannot create %s: %s\n", prog, out, strerror(errno));
+        return -1;
+    }
+    if (o->gather_only)
+        return 0; /* scene traces live in OUT/traces; labels only need their names */
+    if (make_scenes(s, out) != 0 || write_jobs(s, out) != 0 || write_cluster_scripts(s, out, spec_abs, n) != 0) {
+        fprintf(stderr, "%s: cannot write the job list or scripts in %s\n", prog, out);
+        return -1;
+    }
+    printf("%s: %ld jobs in %s/jobs.tsv; cluster: %s/slurm.sh (sbatch --array=0-%ld), %s/parallel_ssh.sh\n", s->name,
+           n, out, out, n - 1, out);
+    return 0;
+}
+
+int fs_cli_sweep(int argc, char **argv)
+{
+    sweep_opts o;
+    bool done;
+    int rc = parse_sweep_opts(argc, argv, &o, &done);
+    if (done)
+        return rc;
+    spec *s = malloc(sizeof *s);
+    if (!s || load_spec(s, o.spec_path) != 0) {
+        free(s);
+        return 2;
+    }
+    if (o.mode)
+        fmt(s->mode, sizeof s->mode, "%s", o.mode);
+    long n = job_count(s);
+    char out_rel[PATH_LEN], out[PATH_LEN];
+    if (o.out)
+        fmt(out_rel, sizeof out_rel, "%s", o.out);
+    else if (s->out[0])
+        fmt(out_rel, sizeof out_rel, "%s", s->out);
+    else
+        fmt(out_rel, sizeof out_rel, "out/sweeps/%s", s->name);
+    rc = 2;
+    if (strlen(out_rel) >= VALUE_LEN) {
+        fprintf(stderr, "%s: output directory name longer than %d characters\n", prog, VALUE_LEN - 1);
+        free(s);
+        return rc;
+    }
+    absolute(out_rel, out, sizeof out);
+    bool ran = prepare_jobs(s, &o, out, n) == 0 && (o.gather_only || o.no_run || run_jobs(s, &o, out, n) == 0);
+    if (ran)
+        rc = o.no_run ? 0 : gather_and_plot(s, out, n);
     free(s);
     return rc;
 }

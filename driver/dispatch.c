@@ -293,7 +293,18 @@ static int bad_argument(fs_context *c, fs_call *call, int k)
  * carries its data, which lives only as long as the call.  The context keeps
  * its own copy, and a draw may read no further than that copy holds. */
 
-static fs_client_array *array_of_slot(fs_context *c, int slot) { return fs_array_slot(&c->arrays, slot); }
+/* The arrays that may hold such a copy, as indices of c->array_copy:
+ * fs_client_array_at's (vertex, normal, colour, the texture coordinates of
+ * each unit, secondary colour, fog coordinate, edge flag, index). */
+#define N_COPIED_ARRAYS FS_CLIENT_ARRAYS
+_Static_assert(N_COPIED_ARRAYS == sizeof(((fs_context *)0)->array_copy) / sizeof(((fs_context *)0)->array_copy[0]),
+               "a copy per array");
+
+static fs_client_array *array_of_copy(fs_context *c, int i) { return fs_client_array_at(&c->arrays, i); }
+
+/* The copy a pointer call of fs_pointer_slot's slot writes: a texture
+ * coordinate pointer is the client active unit's (GL 1.5 spec 2.8). */
+static int copy_of_slot(const fs_context *c, int slot) { return fs_array_of_slot(slot, fs_client_active_unit(c)); }
 
 int fs_pointer_slot(int cmd, int *pk)
 {
@@ -316,9 +327,10 @@ static int dispatch_call(fs_context *c, fs_call *call);
 /* Executes a pointer call with data on a copy the context owns.  Of the two
  * copies per array the one the array does not point at is written, so a
  * call GL rejects leaves the array's data as it was. */
-static int dispatch_pointer_data(fs_context *c, fs_call *call, int slot, int pk)
+static int dispatch_pointer_data(fs_context *c, fs_call *call, int pointer_slot, int pk)
 {
-    fs_client_array *arr = array_of_slot(c, slot);
+    int slot = copy_of_slot(c, pointer_slot);
+    fs_client_array *arr = array_of_copy(c, slot);
     size_t n = call->a[pk].count;
     int k = arr->pointer == c->array_copy[slot].buf[0] && arr->pointer ? 1 : 0;
     if (n > c->array_copy[slot].cap[k] || !c->array_copy[slot].buf[k]) {
@@ -361,8 +373,8 @@ static bool array_covers(const fs_client_array *a, int64_t hi)
 static bool draw_reads_in_bounds(fs_context *c, const fs_call *call)
 {
     int64_t lo, hi = -1;
-    for (int slot = 0; slot < FS_ARRAY_SLOTS; slot++) {
-        const fs_client_array *a = array_of_slot(c, slot);
+    for (int slot = 0; slot < N_COPIED_ARRAYS; slot++) {
+        const fs_client_array *a = array_of_copy(c, slot);
         if (!a->enabled || a->bytes == SIZE_MAX)
             continue;
         if (hi < 0 && !fs_draw_vertex_range(call, &lo, &hi))
@@ -402,6 +414,19 @@ static int dispatch(fs_context *c, fs_call *call, bool in_bounds)
         local.a[pk].p = NULL;
         local.a[pk].is_data = 0;
         return dispatch_call(c, &local);
+    }
+    if ((call->cmd == FS_CMD_SelectBuffer || call->cmd == FS_CMD_FeedbackBuffer) &&
+        !call->a[call->nargs - 1].out) {
+        /* No scratch space for these outputs: GL writes them after the
+         * call.  A replayed call's buffer (FS_ARG_ADDR) is the traced
+         * program's, so nothing is written and the size is no allocation
+         * (a bad trace's 2^31 - 1); a program's NULL is its error. */
+        bool replayed = call->a[call->nargs - 1].is_data == FS_ARG_ADDR;
+        if (call->cmd == FS_CMD_SelectBuffer)
+            fs_render_mode_select_buffer(c, (GLsizei)call->a[0].i, NULL);
+        else
+            fs_render_mode_feedback_buffer(c, (GLsizei)call->a[0].i, (GLenum)call->a[1].i, NULL, replayed);
+        return 0;
     }
     if (call->cmd == FS_CMD_OcclusionBuffers && call->a[1].is_data != 0) {
         /* glOcclusionBuffers' second argument holds addresses the unit

@@ -9,6 +9,7 @@
 #include <string.h>
 #include "../pipeline/context.h"
 #include "../pipeline/pixel_transfer.h"
+#include "../pipeline/name_map.h"
 #include "display_list.h"
 
 /* GL leaves the nesting limit to the implementation (GL_MAX_LIST_NESTING,
@@ -34,12 +35,9 @@ typedef struct dl_list {
 } dl_list;
 
 typedef struct fs_dlist_state {
-    dl_list **slots; /* open addressing on name; NULL = empty */
-    size_t nslots, used; /* used: slots taken, tombstones included */
-    size_t names;        /* lists held */
+    fs_name_map names; /* the lists held, by name */
     dl_list *building; /* between glNewList and glEndList */
     GLenum mode;
-    GLuint base;
     int depth;
     bool oom; /* out of memory while compiling: EndList raises GL_OUT_OF_MEMORY */
 } fs_dlist_state;
@@ -67,85 +65,28 @@ void fs_dlist_free_all(fs_context *c)
     fs_dlist_state *s = c->lists;
     if (!s)
         return;
-    for (size_t i = 0; i < s->nslots; i++)
-        if (s->slots[i] && s->slots[i] != (dl_list *)s)
-            list_free(s->slots[i]);
-    free(s->slots);
+    size_t pos = 0;
+    for (dl_list *l; (l = fs_name_map_next(&s->names, &pos, NULL));)
+        list_free(l);
+    fs_name_map_clear(&s->names);
     list_free(s->building);
     free(s);
     c->lists = NULL;
 }
 
-/* A tombstone marks deleted slots so probing continues past them. */
-#define TOMBSTONE(s) ((dl_list *)(s))
-
-static size_t hash_name(GLuint name, size_t nslots)
-{
-    return (size_t)((name * 2654435761u) & (nslots - 1));
-}
-
-static dl_list **find_slot(fs_dlist_state *s, GLuint name)
-{
-    if (!s->nslots)
-        return NULL;
-    for (size_t i = hash_name(name, s->nslots), k = 0; k < s->nslots; k++, i = (i + 1) & (s->nslots - 1)) {
-        dl_list *l = s->slots[i];
-        if (!l)
-            return NULL;
-        if (l != TOMBSTONE(s) && l->name == name)
-            return &s->slots[i];
-    }
-    return NULL;
-}
-
 static dl_list *find_list(fs_dlist_state *s, GLuint name)
 {
-    dl_list **p = find_slot(s, name);
-    return p ? *p : NULL;
+    return fs_name_map_get(&s->names, name);
 }
 
 static int insert_list(fs_dlist_state *s, dl_list *l)
 {
-    if ((s->used + 1) * 2 > s->nslots) {
-        size_t n = s->nslots ? s->nslots * 2 : 64;
-        dl_list **slots = calloc(n, sizeof *slots);
-        if (!slots)
-            return -1;
-        for (size_t i = 0; i < s->nslots; i++) {
-            dl_list *o = s->slots[i];
-            if (!o || o == TOMBSTONE(s))
-                continue;
-            size_t j = hash_name(o->name, n);
-            while (slots[j])
-                j = (j + 1) & (n - 1);
-            slots[j] = o;
-        }
-        free(s->slots);
-        s->slots = slots;
-        s->nslots = n;
-        size_t live = 0;
-        for (size_t i = 0; i < n; i++)
-            live += slots[i] != NULL;
-        s->used = live;
-    }
-    size_t j = hash_name(l->name, s->nslots);
-    while (s->slots[j] && s->slots[j] != TOMBSTONE(s))
-        j = (j + 1) & (s->nslots - 1);
-    if (!s->slots[j])
-        s->used++;
-    s->slots[j] = l;
-    s->names++;
-    return 0;
+    return fs_name_map_put(&s->names, l->name, l);
 }
 
 static void delete_list(fs_dlist_state *s, GLuint name)
 {
-    dl_list **p = find_slot(s, name);
-    if (p) {
-        list_free(*p);
-        *p = TOMBSTONE(s);
-        s->names--;
-    }
+    list_free(fs_name_map_remove(&s->names, name));
 }
 
 bool fs_dlist_compiling(const fs_context *c)
@@ -246,9 +187,9 @@ void fs_dlist_compile(fs_context *c, const fs_call *call)
         if (!snap)
             return;
         if (fs_draw_vertex_range(&e->call, &lo, &hi)) {
-            for (int k = 0; k < FS_ARRAY_SLOTS; k++) {
-                const fs_client_array *a = fs_array_slot(&c->arrays, k);
-                snapshot_array(s, l, fs_array_slot(snap, k), a, a->size, lo, hi);
+            for (int k = 0; k < FS_CLIENT_ARRAYS; k++) {
+                const fs_client_array *a = fs_client_array_at(&c->arrays, k);
+                snapshot_array(s, l, fs_client_array_at(snap, k), a, k == 1 ? 3 : a->size, lo, hi);
             }
         } else {
             memset(snap, 0, sizeof *snap);
@@ -295,7 +236,7 @@ GLuint fs_exec_GenLists(fs_context *c, GLsizei range)
     /* Each reserved name is a list object (as in Mesa): at most
      * FS_MAX_NAMES held at once (fs_gen_names_ok). */
     fs_dlist_state *s = state(c);
-    if (!fs_gen_names_ok(c, range, s ? s->names : 0))
+    if (!fs_gen_names_ok(c, range, s ? s->names.held : 0))
         return 0;
     if (range == 0)
         return 0;
@@ -390,8 +331,7 @@ void fs_exec_CallLists(fs_context *c, GLsizei n, GLenum type, const GLvoid *list
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    fs_dlist_state *s = state(c);
-    GLuint base = s ? s->base : 0;
+    GLuint base = c->list_base;
     const GLubyte *b = lists;
     for (GLsizei i = 0; i < n; i++) {
         GLuint v;
@@ -425,16 +365,16 @@ void fs_exec_DeleteLists(fs_context *c, GLuint list, GLsizei range)
     uint64_t end = (uint64_t)list + (uint64_t)range;
     if (end > 0x100000000ull)
         end = 0x100000000ull;
-    if ((uint64_t)range > s->nslots) {
+    if ((uint64_t)range > s->names.cap) {
         /* A range wider than the table (glDeleteLists(1, 2147483647) from a
          * bad trace probed 2^31 names for minutes; found by fuzz_gl): visit
          * the lists held instead of the names asked for. */
-        for (size_t i = 0; i < s->nslots; i++) {
-            dl_list *l = s->slots[i];
-            if (l && l != TOMBSTONE(s) && l->name >= list && l->name < end) {
+        size_t pos = 0;
+        GLuint name;
+        for (dl_list *l; (l = fs_name_map_next(&s->names, &pos, &name));) {
+            if (name >= list && name < end) {
+                fs_name_map_take(&s->names, pos);
                 list_free(l);
-                s->slots[i] = TOMBSTONE(s);
-                s->names--;
             }
         }
         return;
@@ -445,9 +385,16 @@ void fs_exec_DeleteLists(fs_context *c, GLuint list, GLsizei range)
 
 void fs_exec_ListBase(fs_context *c, GLuint base)
 {
-    fs_dlist_state *s = state(c);
-    if (s)
-        s->base = base;
+    c->list_base = base;
+    fs_state_mark(c, GL_LIST_BIT);
+}
+
+void fs_dlist_building(const fs_context *c, GLenum *mode, GLuint *index)
+{
+    const fs_dlist_state *s = c->lists;
+    bool on = s && s->building;
+    *mode = on ? s->mode : 0;
+    *index = on ? s->building->name : 0;
 }
 
 GLboolean fs_exec_IsList(fs_context *c, GLuint list)

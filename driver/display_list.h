@@ -11,4 +11,7 @@ bool fs_dlist_execute_too(const fs_context *c);
  * read client arrays are stored with the array data they dereference. */
 void fs_dlist_compile(fs_context *c, const fs_call *call);
 void fs_dlist_free_all(fs_context *c);
+/* GL_LIST_MODE and GL_LIST_INDEX (table 6.32): the list being compiled
+ * and its mode, both 0 outside glNewList/glEndList. */
+void fs_dlist_building(const fs_context *c, GLenum *mode, GLuint *index);
 #endif

@@ -7,6 +7,7 @@
 #include <string.h>
 #include "gl_call.h"
 #include "../pipeline/context.h"
+#include "display_list.h"
 #include "../units/occlusion_unit.h"
 #include "../units/texture_unit.h"
 #include "../glext/GL_FRAGSIM_occlusion_unit.h"
@@ -119,7 +120,10 @@ static const fs_matrix *top_matrix(const fs_context *c, GLenum which)
     switch (which) {
     case GL_MODELVIEW_MATRIX: return &c->xf.modelview[c->xf.modelview_top];
     case GL_PROJECTION_MATRIX: return &c->xf.projection[c->xf.projection_top];
-    default: return &c->xf.texture[c->xf.texture_top];
+    default: { /* the active unit's (GL 1.5 spec 2.10.2) */
+        int u = fs_active_unit(c);
+        return &c->xf.texture[u][c->xf.texture_top[u]];
+    }
     }
 }
 
@@ -148,14 +152,23 @@ static bool get_computed(fs_context *c, GLenum pname, get_result *r)
     }
     case GL_MODELVIEW_STACK_DEPTH: put1(r, GET_NUM, c->xf.modelview_top + 1); return true;
     case GL_PROJECTION_STACK_DEPTH: put1(r, GET_NUM, c->xf.projection_top + 1); return true;
-    case GL_TEXTURE_STACK_DEPTH: put1(r, GET_NUM, c->xf.texture_top + 1); return true;
+    case GL_TEXTURE_STACK_DEPTH: put1(r, GET_NUM, c->xf.texture_top[fs_active_unit(c)] + 1); return true;
     /* GL 1.5 spec table 6.15 and 6.26 (texture unit, units/texture_object.c). */
     case GL_TEXTURE_2D: put1(r, GET_BOOL, *fs_texture_enable_flag(c, pname)); return true;
     case GL_TEXTURE_BINDING_2D: put1(r, GET_NUM, fs_texture_binding_2d(c)); return true;
     /* GL 1.5 spec table 6.30 and GL_FRAGSIM_occlusion_unit's New State. */
     /* GL_NUM_COMPRESSED_TEXTURE_FORMATS is 0: the list is empty. */
     case GL_COMPRESSED_TEXTURE_FORMATS: put(r, GET_ENUM, 0, v); return true;
-    case GL_RENDER_MODE: put1(r, GET_ENUM, fs_occlusion_render_mode(c)); return true;
+    case GL_LIST_MODE: case GL_LIST_INDEX: {
+        GLenum mode;
+        GLuint index;
+        fs_dlist_building(c, &mode, &index);
+        put1(r, pname == GL_LIST_MODE ? GET_ENUM : GET_NUM, pname == GL_LIST_MODE ? mode : index);
+        return true;
+    }
+    case GL_RENDER_MODE:
+        put1(r, GET_ENUM, fs_render_mode_diverts(&c->rmode) ? c->rmode.mode : fs_occlusion_render_mode(c));
+        return true;
     case GL_OCCLUSION_TEST_HP: put1(r, GET_BOOL, fs_occlusion_hp_enabled(c)); return true;
     /* Reading the result clears it (GL_HP_occlusion_test). */
     case GL_OCCLUSION_TEST_RESULT_HP: put1(r, GET_BOOL, fs_occlusion_hp_take_result(c)); return true;
@@ -221,7 +234,9 @@ void fs_exec_GetIntegerv(fs_context *c, GLenum pname, GLint *params)
         if (r.cls == GET_NORM) {
             params[i] = fs_norm_to_int(x);
         } else {
-            x = floor(x + 0.5);
+            /* To the nearest integer, halves away from zero, as OSMesa
+             * rounds (measured with the colour index: -2.5 gives -3). */
+            x = x < 0.0 ? ceil(x - 0.5) : floor(x + 0.5);
             params[i] = x > 2147483647.0 ? 2147483647 : x < -2147483648.0 ? (GLint)-2147483647 - 1 : (GLint)x;
         }
     }

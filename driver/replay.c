@@ -18,6 +18,8 @@
 #include "trace.h"
 #include "callset.h"
 #include "json_text.h"
+#include "../pipeline/rasterizer.h"
+#include "../pipeline/vertex_stage.h" /* FS_CLIENT_ARRAYS, fs_array_of_slot */
 
 enum skip_kind { SKIP_UNKNOWN, SKIP_UNSAFE, SKIP_WINSYS };
 
@@ -42,9 +44,14 @@ typedef struct array_track {
     size_t bytes; /* of the last pointer call's data */
 } array_track;
 
-/* In fs_pointer_slot's order. */
-enum { ARR_VERTEX, ARR_NORMAL, ARR_COLOR, ARR_TEXCOORD, ARR_SECONDARY, ARR_FOG, ARR_EDGE, ARR_INDEX, ARR_COUNT };
-_Static_assert(ARR_COUNT == 8, "one tracked array per slot of fs_pointer_slot (FS_ARRAY_SLOTS)");
+/* In fs_client_array_at's order: fs_pointer_slot's, with one texture
+ * coordinate array per unit (GL 1.5 spec 2.8: glClientActiveTexture selects
+ * the one the pointer and client-state calls name). */
+enum {
+    ARR_VERTEX, ARR_NORMAL, ARR_COLOR, ARR_TEXCOORD,
+    ARR_SECONDARY = ARR_TEXCOORD + FS_MAX_TEXTURE_UNITS, ARR_FOG, ARR_EDGE, ARR_INDEX, ARR_COUNT
+};
+_Static_assert(ARR_COUNT == FS_CLIENT_ARRAYS, "one tracked array per client array");
 
 /* What the replayer knows of buffer objects (GL 1.5 spec 2.9), to turn
  * apitrace's memcpy(dest, src, n) pseudo-calls (writes through a mapping,
@@ -74,6 +81,7 @@ struct fs_replayer {
     size_t nskips, skips_cap;
     arena_chunk *arena;
     array_track arr[ARR_COUNT];
+    int client_unit; /* glClientActiveTexture's unit */
     buffer_track buf;
     /* name -> command id, open addressing */
     struct { const char *name; int cmd; } *names;
@@ -447,6 +455,10 @@ static int convert(fs_replayer *r, const fs_tcall *tc, int cmd, fs_call *call)
             break;
         case FS_K_OV: case FS_K_OF: case FS_K_OD: case FS_K_OI: case FS_K_OU: case FS_K_OB: case FS_K_OP:
             a->out = NULL; /* the dispatcher provides scratch space */
+            /* ... except to the selection and feedback buffers, written
+             * after the call: the traced program's, never ours. */
+            if (info == &fs_cmd_table[FS_CMD_SelectBuffer] || info == &fs_cmd_table[FS_CMD_FeedbackBuffer])
+                a->is_data = FS_ARG_ADDR;
             break;
         default:
             if (to_array(r, tc, kind, v, a) != 0)
@@ -550,13 +562,13 @@ static int convert_memcpy(fs_replayer *r, const fs_tcall *tc, fs_call *call)
 
 /* ---- client-array safety ---- */
 
-static int client_state_slot(GLenum array)
+static int client_state_slot(const fs_replayer *r, GLenum array)
 {
     switch (array) {
     case GL_VERTEX_ARRAY: return ARR_VERTEX;
     case GL_NORMAL_ARRAY: return ARR_NORMAL;
     case GL_COLOR_ARRAY: return ARR_COLOR;
-    case GL_TEXTURE_COORD_ARRAY: return ARR_TEXCOORD;
+    case GL_TEXTURE_COORD_ARRAY: return ARR_TEXCOORD + r->client_unit;
     case GL_SECONDARY_COLOR_ARRAY: return ARR_SECONDARY;
     case GL_FOG_COORDINATE_ARRAY: return ARR_FOG;
     case GL_EDGE_FLAG_ARRAY: return ARR_EDGE;
@@ -569,12 +581,13 @@ static int client_state_slot(GLenum array)
  * call has it: the dispatcher copies it into the context (dispatch.c). */
 static void track_pointer(fs_replayer *r, const fs_call *call, int slot, int pk)
 {
-    array_track *t = &r->arr[slot];
+    int k = fs_array_of_slot(slot, r->client_unit);
+    array_track *t = &r->arr[k];
     const fs_arg *p = &call->a[pk];
     /* Normals have 3 components, fog coordinates, edge flags (bytes, no
      * type argument) and indices 1; the others give their size first. */
-    t->size = slot == ARR_NORMAL ? 3 : slot >= ARR_FOG ? 1 : (GLint)call->a[0].i;
-    t->type = slot == ARR_EDGE ? GL_UNSIGNED_BYTE : (GLenum)call->a[pk - 2].i;
+    t->size = k == ARR_NORMAL ? 3 : k >= ARR_FOG ? 1 : (GLint)call->a[0].i;
+    t->type = k == ARR_EDGE ? GL_UNSIGNED_BYTE : (GLenum)call->a[pk - 2].i;
     t->stride = (GLsizei)call->a[pk - 1].i;
     /* An offset into a bound buffer: the dispatcher checks the draw's reads
      * against the store. */
@@ -820,8 +833,11 @@ static int decode_next(fs_replayer *r, fs_call *call, bool pass1, const name_inf
     int pk, slot = fs_pointer_slot(cmd, &pk);
     if (slot >= 0)
         track_pointer(r, call, slot, pk);
+    if (cmd == FS_CMD_ClientActiveTexture && call->a[0].i >= GL_TEXTURE0 &&
+        call->a[0].i < GL_TEXTURE0 + FS_MAX_TEXTURE_UNITS)
+        r->client_unit = (int)(call->a[0].i - GL_TEXTURE0); /* another unit is an error, no change */
     if (cmd == FS_CMD_EnableClientState || cmd == FS_CMD_DisableClientState) {
-        int s = client_state_slot((GLenum)call->a[0].i);
+        int s = client_state_slot(r, (GLenum)call->a[0].i);
         if (s >= 0)
             r->arr[s].enabled = cmd == FS_CMD_EnableClientState;
     }

@@ -13,6 +13,14 @@
 #include <string.h>
 #include "shim.h"
 
+/* gl.h declares glLoadTransposeMatrix{f,d} and glMultTransposeMatrix{f,d}
+ * with an array parameter (const GLfloat m[16]); the generated definitions
+ * take the pointer, the same type (C11 6.7.6.3), which gcc 11 and later
+ * warn about. */
+#if defined(__GNUC__) && !defined(__clang__) && __GNUC__ >= 11
+#pragma GCC diagnostic ignored "-Warray-parameter"
+#endif
+
 /* Parameter lists: FS_PDECL gives ", T a, T b"; the leading comma is
  * dropped, and a command without arguments gets (void). */
 #define FS_SHIM_DROP1(...) FS_SHIM_DROP1_(__VA_ARGS__)

@@ -9,6 +9,7 @@
  * largest expansion: a 3-byte copy tag yields at most 64 bytes, so a
  * compressed byte stands for fewer than EXPANSION decompressed bytes.
  */
+#include <stdbool.h>
 #include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -585,6 +586,16 @@ static int skip_string(fs_trace_reader *r)
     return rd_bytes(r, NULL, (size_t)n);
 }
 
+/* The value of a SINT, which apitrace writes as the magnitude of a
+ * negative number: false when it is beyond INT64_MIN. */
+static inline bool sint_value(uint64_t magnitude, int64_t *v)
+{
+    if (magnitude > (uint64_t)INT64_MAX + 1)
+        return false;
+    *v = magnitude == (uint64_t)INT64_MAX + 1 ? INT64_MIN : -(int64_t)magnitude;
+    return true;
+}
+
 /* A signed integer written as a value: tag 0x03 (negative) or 0x04. */
 static int rd_sint(fs_trace_reader *r, int64_t *v)
 {
@@ -597,9 +608,8 @@ static int rd_sint(fs_trace_reader *r, int64_t *v)
     if (rd_uint(r, &u))
         return -1;
     if (tag == FS_TV_SINT) {
-        if (u > (uint64_t)INT64_MAX + 1)
+        if (!sint_value(u, v))
             return rfail_at(r, off, "negative integer out of range");
-        *v = u == (uint64_t)INT64_MAX + 1 ? INT64_MIN : -(int64_t)u;
     } else {
         *v = (int64_t)u;
     }
@@ -809,9 +819,8 @@ static int parse_value(fs_trace_reader *r, arena *a, fs_tval *v, int depth)
     case FS_TV_SINT:
         if (rd_uint(r, &n))
             return -1;
-        if (n > (uint64_t)INT64_MAX + 1)
+        if (!sint_value(n, &v->i))
             return rfail_at(r, off, "negative integer out of range");
-        v->i = n == (uint64_t)INT64_MAX + 1 ? INT64_MIN : -(int64_t)n;
         return 0;
     case FS_TV_UINT:
     case FS_TV_OPAQUE:
@@ -1194,6 +1203,38 @@ static inline int fast_value(fs_trace_reader *r, pending *p, arena *a, fs_tval *
     return fast_value_any(r, p, a, v, pp, end, allow);
 }
 
+/* An enum value: its signature id (defined before) and, from version 3
+ * on, the value as a SINT or UINT; its name from the signature. */
+static inline int fast_enum(const fs_trace_reader *r, fs_tval *v, const unsigned char **pp, const unsigned char *end)
+{
+    const unsigned char *q = *pp;
+    const fs_tsig *s;
+    uint64_t n;
+    if (!cur_uint(&q, end, &n) || n >= r->nenums || !(s = r->enums[n]))
+        return 0;
+    if (r->version < 3) {
+        v->i = s->values[0];
+    } else {
+        if (q >= end || (*q != FS_TV_SINT && *q != FS_TV_UINT))
+            return 0;
+        unsigned itag = *q++;
+        if (!cur_uint(&q, end, &n))
+            return 0;
+        if (itag == FS_TV_UINT)
+            v->i = (int64_t)n;
+        else if (!sint_value(n, &v->i))
+            return 0;
+    }
+    v->sig = s;
+    for (unsigned k = 0; k < s->n; k++)
+        if (s->values[k] == v->i) {
+            v->enum_name = s->names[k];
+            break;
+        }
+    *pp = q;
+    return 1;
+}
+
 static int fast_value_any(fs_trace_reader *r, pending *p, arena *a, fs_tval *v,
                           const unsigned char **pp, const unsigned char *end, unsigned allow)
 {
@@ -1210,9 +1251,8 @@ static int fast_value_any(fs_trace_reader *r, pending *p, arena *a, fs_tval *v,
     case FS_TV_TRUE:
         break;
     case FS_TV_SINT:
-        if (!cur_uint(&q, end, &n) || n > (uint64_t)INT64_MAX + 1)
+        if (!cur_uint(&q, end, &n) || !sint_value(n, &v->i))
             return 0;
-        v->i = n == (uint64_t)INT64_MAX + 1 ? INT64_MIN : -(int64_t)n;
         break;
     case FS_TV_UINT:
     case FS_TV_OPAQUE:
@@ -1234,34 +1274,10 @@ static int fast_value_any(fs_trace_reader *r, pending *p, arena *a, fs_tval *v,
         memcpy(&v->d, q, 8);
         q += 8;
         break;
-    case FS_TV_ENUM: {
-        const fs_tsig *s;
-        if (!cur_uint(&q, end, &n) || n >= r->nenums || !(s = r->enums[n]))
+    case FS_TV_ENUM:
+        if (!fast_enum(r, v, &q, end))
             return 0;
-        if (r->version < 3) {
-            v->i = s->values[0];
-        } else {
-            if (q >= end || (*q != FS_TV_SINT && *q != FS_TV_UINT))
-                return 0;
-            unsigned itag = *q++;
-            if (!cur_uint(&q, end, &n))
-                return 0;
-            if (itag == FS_TV_SINT) {
-                if (n > (uint64_t)INT64_MAX + 1)
-                    return 0;
-                v->i = n == (uint64_t)INT64_MAX + 1 ? INT64_MIN : -(int64_t)n;
-            } else {
-                v->i = (int64_t)n;
-            }
-        }
-        v->sig = s;
-        for (unsigned k = 0; k < s->n; k++)
-            if (s->values[k] == v->i) {
-                v->enum_name = s->names[k];
-                break;
-            }
         break;
-    }
     case FS_TV_BITMASK:
         if (!cur_uint(&q, end, &n) || n >= r->nbitmasks || !r->bitmasks[n])
             return 0;

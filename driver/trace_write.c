@@ -231,10 +231,127 @@ static const char *type_name(int t)
     return t >= 0 && t < 16 ? names[t] : "?";
 }
 
+static int put_value(fs_trace_writer *w, const fs_tval *v, int depth);
+
+/* enum_sig = id count (name value)+ on first occurrence. */
+static int put_enum(fs_trace_writer *w, const fs_tval *v)
+{
+    const fs_tsig *s = v->sig;
+    w->key_len = 0;
+    if (s) {
+        for (unsigned k = 0; k < s->n; k++)
+            if (key_str(w, s->names[k]) || key_add(w, &s->values[k], 8))
+                return -1;
+    } else if (v->enum_name) {
+        if (key_str(w, v->enum_name) || key_add(w, &v->i, 8))
+            return -1;
+    }
+    int is_new;
+    int64_t id = sig_id(w, &w->enums, &is_new);
+    if (id < 0)
+        return -1;
+    put_byte(w, FS_TV_ENUM);
+    put_uint(w, (uint64_t)id);
+    if (is_new) {
+        if (s) {
+            put_uint(w, s->n);
+            for (unsigned k = 0; k < s->n; k++) {
+                put_cstr(w, s->names[k]);
+                put_sint_value(w, s->values[k]);
+            }
+        } else if (v->enum_name) {
+            put_uint(w, 1);
+            put_cstr(w, v->enum_name);
+            put_sint_value(w, v->i);
+        } else {
+            put_uint(w, 0);
+        }
+    }
+    put_sint_value(w, v->i);
+    return 0;
+}
+
+/* bitmask_sig = id count (name uint)+ on first occurrence. */
+static int put_bitmask(fs_trace_writer *w, const fs_tval *v)
+{
+    const fs_tsig *s = v->sig;
+    w->key_len = 0;
+    if (s)
+        for (unsigned k = 0; k < s->n; k++)
+            if (key_str(w, s->names[k]) || key_add(w, &s->values[k], 8))
+                return -1;
+    int is_new;
+    int64_t id = sig_id(w, &w->bitmasks, &is_new);
+    if (id < 0)
+        return -1;
+    put_byte(w, FS_TV_BITMASK);
+    put_uint(w, (uint64_t)id);
+    if (is_new) {
+        put_uint(w, s ? s->n : 0);
+        for (unsigned k = 0; s && k < s->n; k++) {
+            put_cstr(w, s->names[k]);
+            put_uint(w, (uint64_t)s->values[k]);
+        }
+    }
+    put_uint(w, v->u);
+    return 0;
+}
+
+/* An array of values, or a wide string (its characters as UINTs). */
+static int put_array(fs_trace_writer *w, const fs_tval *v, int depth)
+{
+    if (!v->arr.elems && v->arr.n)
+        return fail(w, "%s value with no elements", type_name(v->type));
+    put_byte(w, v->type);
+    put_uint(w, v->arr.n);
+    for (size_t k = 0; k < v->arr.n; k++) {
+        const fs_tval *e = &v->arr.elems[k];
+        if (v->type == FS_TV_WSTRING) {
+            if (e->type != FS_TV_UINT)
+                return fail(w, "WSTRING character %zu is not a UINT", k);
+            put_uint(w, e->u);
+        } else if (put_value(w, e, depth + 1)) {
+            return -1;
+        }
+    }
+    return 0;
+}
+
+/* struct_sig = id struct_name count member_name* on first occurrence. */
+static int put_struct(fs_trace_writer *w, const fs_tval *v, int depth)
+{
+    const fs_tsig *s = v->sig;
+    if (!s || s->n != v->arr.n || (s->n && (!s->names || !v->arr.elems)))
+        return fail(w, "STRUCT value whose signature does not match its members");
+    w->key_len = 0;
+    if (key_str(w, s->name))
+        return -1;
+    for (unsigned k = 0; k < s->n; k++)
+        if (key_str(w, s->names[k]))
+            return -1;
+    int is_new;
+    int64_t id = sig_id(w, &w->structs, &is_new);
+    if (id < 0)
+        return -1;
+    put_byte(w, FS_TV_STRUCT);
+    put_uint(w, (uint64_t)id);
+    if (is_new) {
+        put_cstr(w, s->name);
+        put_uint(w, s->n);
+        for (unsigned k = 0; k < s->n; k++)
+            put_cstr(w, s->names[k]);
+    }
+    for (unsigned k = 0; k < s->n; k++)
+        if (put_value(w, &v->arr.elems[k], depth + 1))
+            return -1;
+    return 0;
+}
+
 static int put_value(fs_trace_writer *w, const fs_tval *v, int depth)
 {
     if (depth > MAX_DEPTH)
         return fail(w, "values nested deeper than %d", MAX_DEPTH);
+    int rc = 0;
     switch (v->type) {
     case FS_TV_NULL:
     case FS_TV_FALSE:
@@ -268,111 +385,19 @@ static int put_value(fs_trace_writer *w, const fs_tval *v, int depth)
         put_byte(w, v->type);
         put_string(w, v->str.ptr, v->str.len);
         break;
-    case FS_TV_ENUM: {
-        /* enum_sig = id count (name value)+ on first occurrence. */
-        const fs_tsig *s = v->sig;
-        w->key_len = 0;
-        if (s) {
-            for (unsigned k = 0; k < s->n; k++)
-                if (key_str(w, s->names[k]) || key_add(w, &s->values[k], 8))
-                    return -1;
-        } else if (v->enum_name) {
-            if (key_str(w, v->enum_name) || key_add(w, &v->i, 8))
-                return -1;
-        }
-        int is_new;
-        int64_t id = sig_id(w, &w->enums, &is_new);
-        if (id < 0)
-            return -1;
-        put_byte(w, FS_TV_ENUM);
-        put_uint(w, (uint64_t)id);
-        if (is_new) {
-            if (s) {
-                put_uint(w, s->n);
-                for (unsigned k = 0; k < s->n; k++) {
-                    put_cstr(w, s->names[k]);
-                    put_sint_value(w, s->values[k]);
-                }
-            } else if (v->enum_name) {
-                put_uint(w, 1);
-                put_cstr(w, v->enum_name);
-                put_sint_value(w, v->i);
-            } else {
-                put_uint(w, 0);
-            }
-        }
-        put_sint_value(w, v->i);
+    case FS_TV_ENUM:
+        rc = put_enum(w, v);
         break;
-    }
-    case FS_TV_BITMASK: {
-        /* bitmask_sig = id count (name uint)+ on first occurrence. */
-        const fs_tsig *s = v->sig;
-        w->key_len = 0;
-        if (s)
-            for (unsigned k = 0; k < s->n; k++)
-                if (key_str(w, s->names[k]) || key_add(w, &s->values[k], 8))
-                    return -1;
-        int is_new;
-        int64_t id = sig_id(w, &w->bitmasks, &is_new);
-        if (id < 0)
-            return -1;
-        put_byte(w, FS_TV_BITMASK);
-        put_uint(w, (uint64_t)id);
-        if (is_new) {
-            put_uint(w, s ? s->n : 0);
-            for (unsigned k = 0; s && k < s->n; k++) {
-                put_cstr(w, s->names[k]);
-                put_uint(w, (uint64_t)s->values[k]);
-            }
-        }
-        put_uint(w, v->u);
+    case FS_TV_BITMASK:
+        rc = put_bitmask(w, v);
         break;
-    }
     case FS_TV_ARRAY:
     case FS_TV_WSTRING:
-        if (!v->arr.elems && v->arr.n)
-            return fail(w, "%s value with no elements", type_name(v->type));
-        put_byte(w, v->type);
-        put_uint(w, v->arr.n);
-        for (size_t k = 0; k < v->arr.n; k++) {
-            const fs_tval *e = &v->arr.elems[k];
-            if (v->type == FS_TV_WSTRING) {
-                if (e->type != FS_TV_UINT)
-                    return fail(w, "WSTRING character %zu is not a UINT", k);
-                put_uint(w, e->u);
-            } else if (put_value(w, e, depth + 1)) {
-                return -1;
-            }
-        }
+        rc = put_array(w, v, depth);
         break;
-    case FS_TV_STRUCT: {
-        /* struct_sig = id struct_name count member_name* on first occurrence. */
-        const fs_tsig *s = v->sig;
-        if (!s || s->n != v->arr.n || (s->n && (!s->names || !v->arr.elems)))
-            return fail(w, "STRUCT value whose signature does not match its members");
-        w->key_len = 0;
-        if (key_str(w, s->name))
-            return -1;
-        for (unsigned k = 0; k < s->n; k++)
-            if (key_str(w, s->names[k]))
-                return -1;
-        int is_new;
-        int64_t id = sig_id(w, &w->structs, &is_new);
-        if (id < 0)
-            return -1;
-        put_byte(w, FS_TV_STRUCT);
-        put_uint(w, (uint64_t)id);
-        if (is_new) {
-            put_cstr(w, s->name);
-            put_uint(w, s->n);
-            for (unsigned k = 0; k < s->n; k++)
-                put_cstr(w, s->names[k]);
-        }
-        for (unsigned k = 0; k < s->n; k++)
-            if (put_value(w, &v->arr.elems[k], depth + 1))
-                return -1;
+    case FS_TV_STRUCT:
+        rc = put_struct(w, v, depth);
         break;
-    }
     case FS_TV_REPR:
         if (v->arr.n != 2 || !v->arr.elems)
             return fail(w, "REPR value needs exactly 2 elements");
@@ -383,7 +408,7 @@ static int put_value(fs_trace_writer *w, const fs_tval *v, int depth)
     default:
         return fail(w, "unknown value type %d", (int)v->type);
     }
-    return w->failed ? -1 : 0;
+    return rc || w->failed ? -1 : 0;
 }
 
 /* ---- public ---- */

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "buffer_object.h"
+#include "name_map.h"
 
 typedef struct fs_buffer_obj {
     GLuint name;
@@ -20,58 +21,16 @@ typedef struct fs_buffer_obj {
     bool mapped;             /* GL_BUFFER_MAPPED */
 } fs_buffer_obj;
 
-/* The names in use, open addressing on the name (0 marks a free slot,
- * FS_BUF_GONE one whose name was deleted). */
-#define FS_BUF_GONE ((fs_buffer_obj *)&fs_buffer_gone_)
-static const fs_buffer_obj fs_buffer_gone_;
-
 struct fs_buffer_objects {
-    fs_buffer_obj **slot;
-    size_t cap, held, used; /* used: held + deleted slots */
-    GLuint next_name;       /* names are handed out upwards from here */
+    fs_name_map names;
+    GLuint next_name; /* names are handed out upwards from here */
 };
-
-static size_t hash_name(GLuint name, size_t cap)
-{
-    return (size_t)(name * 2654435761u) & (cap - 1);
-}
 
 static fs_buffer_obj *lookup(const fs_context *c, GLuint name)
 {
-    const struct fs_buffer_objects *b = c->buffers;
-    if (!b || name == 0)
+    if (!c->buffers || name == 0)
         return NULL;
-    for (size_t i = hash_name(name, b->cap);; i = (i + 1) & (b->cap - 1)) {
-        fs_buffer_obj *o = b->slot[i];
-        if (!o)
-            return NULL;
-        if (o != FS_BUF_GONE && o->name == name)
-            return o;
-    }
-}
-
-static bool grow(struct fs_buffer_objects *b)
-{
-    size_t cap = b->cap ? 2 * b->cap : 64;
-    while (b->held * 2 >= cap)
-        cap *= 2;
-    fs_buffer_obj **s = calloc(cap, sizeof *s);
-    if (!s)
-        return false;
-    for (size_t i = 0; i < b->cap; i++) {
-        fs_buffer_obj *o = b->slot[i];
-        if (!o || o == FS_BUF_GONE)
-            continue;
-        size_t j = hash_name(o->name, cap);
-        while (s[j])
-            j = (j + 1) & (cap - 1);
-        s[j] = o;
-    }
-    free(b->slot);
-    b->slot = s;
-    b->cap = cap;
-    b->used = b->held;
-    return true;
+    return fs_name_map_get(&c->buffers->names, name);
 }
 
 /* A new entry for an unused name; NULL when out of memory. */
@@ -80,38 +39,31 @@ static fs_buffer_obj *insert(fs_context *c, GLuint name)
     if (!c->buffers && !(c->buffers = calloc(1, sizeof *c->buffers)))
         return NULL;
     struct fs_buffer_objects *b = c->buffers;
-    if ((b->used + 1) * 2 > b->cap && !grow(b))
-        return NULL;
     fs_buffer_obj *o = calloc(1, sizeof *o);
     if (!o)
         return NULL;
     o->name = name;
     o->usage = GL_STATIC_DRAW; /* table 2.6 */
     o->access = GL_READ_WRITE;
-    size_t i = hash_name(name, b->cap);
-    while (b->slot[i] && b->slot[i] != FS_BUF_GONE)
-        i = (i + 1) & (b->cap - 1);
-    if (!b->slot[i])
-        b->used++;
-    b->slot[i] = o;
-    b->held++;
+    if (fs_name_map_put(&b->names, name, o) != 0) {
+        free(o);
+        return NULL;
+    }
     if (name >= b->next_name)
         b->next_name = name == UINT32_MAX ? UINT32_MAX : name + 1;
     return o;
 }
 
-static void remove_name(fs_context *c, fs_buffer_obj *o)
+static void obj_free(fs_buffer_obj *o)
 {
-    struct fs_buffer_objects *b = c->buffers;
-    for (size_t i = hash_name(o->name, b->cap); b->slot[i]; i = (i + 1) & (b->cap - 1)) {
-        if (b->slot[i] == o) {
-            b->slot[i] = FS_BUF_GONE;
-            b->held--;
-            break;
-        }
-    }
     free(o->data);
     free(o);
+}
+
+static void remove_name(fs_context *c, fs_buffer_obj *o)
+{
+    fs_name_map_remove(&c->buffers->names, o->name);
+    obj_free(o);
 }
 
 void fs_buffer_objects_free(fs_context *c)
@@ -119,13 +71,10 @@ void fs_buffer_objects_free(fs_context *c)
     struct fs_buffer_objects *b = c->buffers;
     if (!b)
         return;
-    for (size_t i = 0; i < b->cap; i++) {
-        if (b->slot[i] && b->slot[i] != FS_BUF_GONE) {
-            free(b->slot[i]->data);
-            free(b->slot[i]);
-        }
-    }
-    free(b->slot);
+    size_t pos = 0;
+    for (fs_buffer_obj *o; (o = fs_name_map_next(&b->names, &pos, NULL));)
+        obj_free(o);
+    fs_name_map_clear(&b->names);
     free(b);
     c->buffers = NULL;
 }
@@ -133,7 +82,7 @@ void fs_buffer_objects_free(fs_context *c)
 /* ---- names (2.9) ---- */
 void fs_exec_GenBuffers(fs_context *c, GLsizei n, GLuint *buffers)
 {
-    if (!fs_gen_names_ok(c, n, c->buffers ? c->buffers->held : 0))
+    if (!fs_gen_names_ok(c, n, c->buffers ? c->buffers->names.held : 0))
         return;
     for (GLsizei i = 0; i < n; i++) {
         GLuint name = c->buffers && c->buffers->next_name ? c->buffers->next_name : 1;
@@ -158,11 +107,11 @@ static void unbind_everywhere(fs_context *c, GLuint name)
         A->array_buffer = 0;
     if (A->element_buffer == name)
         A->element_buffer = 0;
-    fs_client_array *arr[4] = {&A->vertex, &A->normal, &A->color, &A->texcoord};
-    for (int k = 0; k < 4; k++) {
-        if (arr[k]->buffer == name) {
-            arr[k]->buffer = 0;
-            arr[k]->bytes = 0;
+    for (int k = 0; k < FS_CLIENT_ARRAYS; k++) {
+        fs_client_array *a = fs_client_array_at(A, k);
+        if (a->buffer == name) {
+            a->buffer = 0;
+            a->bytes = 0;
         }
     }
 }
@@ -400,9 +349,9 @@ void fs_buffer_resolve_arrays(const fs_context *c, fs_array_state *out)
 {
     *out = c->arrays;
     out->element_buffer = 0; /* the indices were resolved before */
-    for (int k = 0; k < FS_ARRAY_SLOTS; k++)
-        if (fs_array_slot(out, k)->buffer)
-            resolve_array(c, fs_array_slot(out, k));
+    for (int k = 0; k < FS_CLIENT_ARRAYS; k++)
+        if (fs_client_array_at(out, k)->buffer)
+            resolve_array(c, fs_client_array_at(out, k));
 }
 
 const void *fs_buffer_element_data(const fs_context *c, uint64_t offset, size_t *bytes)

@@ -71,7 +71,7 @@ void fs_exec_Clear(fs_context *c, GLbitfield mask)
     c->stats.clears++;
     /* Outside GL_RENDER mode Mesa clears nothing (its glClear acts only in
      * GL_RENDER); occlusion modes follow GL_SELECT (see suppress_writes). */
-    if (c->frag.suppress_writes)
+    if (c->frag.suppress_writes || fs_render_mode_diverts(&c->rmode))
         return;
     int x0, y0, x1, y1;
     if (!fs_scissor_rect(c, &x0, &y0, &x1, &y1))

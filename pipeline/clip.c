@@ -10,7 +10,8 @@
  * unfused, while unclipped vertices keep the transform's fused result)
  * follow Mesa's draw module so that clipped edges land on the same
  * sub-pixel positions.  Lines are clipped by z only; their x/y extent is
- * bounded by the window (guard band, as llvmpipe does).  Points are
+ * bounded by the window (guard band, as llvmpipe does), except in selection
+ * and feedback (pipeline/render_mode.c), whose lines are clipped by all six.  Points are
  * dropped when their vertex is outside any plane (primitive.c).
  * Non-finite distances drop the primitive.
  */
@@ -52,17 +53,19 @@ typedef struct cvert {
     float clip[4];
     float win[5];
     float col[2][4];
-    float tc[4];
+    float tc[FS_MAX_TEXTURE_UNITS][4]; /* the first fs_vs_setup.ntex units */
     float fog;        /* fog coordinate (fs_pvert.fog) */
     float col2[2][4]; /* secondary colour (fs_pvert.col2) */
+    bool edge; /* the vertex's edge flag (GL 1.5 spec 2.6.2) */
 } cvert;
 
-static void from_pvert(cvert *d, const fs_pvert *v)
+static void from_pvert(const fs_vs_setup *s, cvert *d, const fs_pvert *v)
 {
+    d->edge = true;
     memcpy(d->clip, v->clip, sizeof d->clip);
     memcpy(d->win, v->win, sizeof d->win);
     memcpy(d->col, v->col, sizeof d->col);
-    memcpy(d->tc, v->tc, sizeof d->tc);
+    memcpy(d->tc, v->tc, (size_t)s->ntex * sizeof d->tc[0]);
     d->fog = v->fog;
     memcpy(d->col2, v->col2, sizeof d->col2);
 }
@@ -82,9 +85,11 @@ static void interp(const fs_vs_setup *s, cvert *d, float t, const cvert *out, co
     d->win[4] = d->clip[1] * oow * s->yr_scale + s->yr_trans;
     for (int k = 0; k < 4; k++) {
         d->col[0][k] = LERP(t, out->col[0][k], in->col[0][k]);
-        d->tc[k] = LERP(t, out->tc[k], in->tc[k]);
         d->col2[0][k] = LERP(t, out->col2[0][k], in->col2[0][k]);
     }
+    for (int u = 0; u < s->ntex; u++)
+        for (int k = 0; k < 4; k++)
+            d->tc[u][k] = LERP(t, out->tc[u][k], in->tc[u][k]);
     if (two)
         for (int k = 0; k < 4; k++) {
             d->col[1][k] = LERP(t, out->col[1][k], in->col[1][k]);
@@ -93,8 +98,8 @@ static void interp(const fs_vs_setup *s, cvert *d, float t, const cvert *out, co
     d->fog = LERP(t, out->fog, in->fog);
 }
 
-static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const float *col2, const float *tc,
-                       float fog)
+static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const float *col2, const float (*tc)[4],
+                       int ntex, float fog)
 {
     r->fog = fog;
     memcpy(r->color2, col2, sizeof r->color2);
@@ -104,7 +109,7 @@ static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const 
     r->inv_w = win[3];
     r->y_raster = win[4];
     memcpy(r->color, col, sizeof r->color);
-    memcpy(r->tex, tc, sizeof r->tex);
+    memcpy(r->tex, tc, (size_t)ntex * sizeof r->tex[0]);
 }
 
 /* Facing decides which colour two-sided lighting uses (2.14.1); the
@@ -119,65 +124,103 @@ static int back_side(const fs_context *c, const float *a, const float *b, const 
 
 /* What a triangle hands the rasterizer of each vertex: window position,
  * colours and secondary colours (front then back, 8 floats each), texture
- * coordinates and fog coordinate; and when flat, the provoking vertex's
- * colours and secondary colours instead. */
+ * coordinates (per unit) and fog coordinate; and when flat, the provoking
+ * vertex's colours and secondary colours instead. */
 typedef struct tri_src {
-    const float *win[3], *col[3], *col2[3], *tc[3];
+    const float *win[3], *col[3], *col2[3];
+    const float (*tc[3])[4];
     float fog[3];
     const float *flat_col, *flat_col2;
 } tri_src;
 
-static void emit3(fs_context *c, const fs_vs_setup *s, const tri_src *t)
+static void emit3(fs_context *c, const fs_vs_setup *s, const tri_src *t, unsigned edges)
 {
     int side = s->two_side ? back_side(c, t->win[0], t->win[1], t->win[2]) : 0;
+    /* Feedback reports each vertex's own colour also under flat shading
+     * (measured on OSMesa: Mesa's feedback stage comes before flat
+     * shading would apply). */
+    const bool flat = t->flat_col && !fs_render_mode_diverts(&c->rmode);
     fs_rvertex r[3];
     for (int i = 0; i < 3; i++)
-        to_rvertex(&r[i], t->win[i], (t->flat_col ? t->flat_col : t->col[i]) + 4 * side,
-                   (t->flat_col ? t->flat_col2 : t->col2[i]) + 4 * side, t->tc[i], t->fog[i]);
+        to_rvertex(&r[i], t->win[i], (flat ? t->flat_col : t->col[i]) + 4 * side,
+                   (flat ? t->flat_col2 : t->col2[i]) + 4 * side, t->tc[i], s->ntex, t->fog[i]);
+    if (fs_render_mode_diverts(&c->rmode)) {
+        fs_render_mode_triangle(c, &r[0], &r[1], &r[2]);
+        return;
+    }
     fs_vs_impl *vi = fs_vs(c);
     if (vi->tri_hook)
         vi->tri_hook(vi->hook_user, &r[0], &r[1], &r[2]);
-    fs_raster_triangle(c, &r[0], &r[1], &r[2]);
+    if (edges & FS_EDGES_ROUTE)
+        fs_raster_polygon(c, &r[0], &r[1], &r[2], edges & FS_EDGES_ALL);
+    else
+        fs_raster_triangle(c, &r[0], &r[1], &r[2]);
 }
 
 static void emit_cverts(fs_context *c, const fs_vs_setup *s, const cvert *a, const cvert *b, const cvert *d,
-                        const float *flat_col, const float *flat_col2)
+                        const float *flat_col, const float *flat_col2, unsigned edges)
 {
     const tri_src t = {{a->win, b->win, d->win}, {a->col[0], b->col[0], d->col[0]},
                        {a->col2[0], b->col2[0], d->col2[0]}, {a->tc, b->tc, d->tc},
                        {a->fog, b->fog, d->fog}, flat_col, flat_col2};
-    emit3(c, s, &t);
+    emit3(c, s, &t, edges);
+}
+
+/* The drawn edges of a triangle from its boundary-edge bits (0-2) and its
+ * vertices' edge flags (3-5): edge i starts at vertex i. */
+static inline unsigned drawn_edges(unsigned edges)
+{
+    return (edges & (edges >> 3) & FS_EDGES_ALL) | (edges & FS_EDGES_ROUTE);
 }
 
 /* An unclipped triangle goes straight from its fs_pverts, without cvert
  * copies: under a tile mask most triangles are only snapped and their
  * areas reported. */
 void fs_emit_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
-                      const fs_pvert *v1, const fs_pvert *v2, int provoking)
+                      const fs_pvert *v1, const fs_pvert *v2, int provoking, unsigned edges)
 {
     const fs_pvert *pv[3] = {v0, v1, v2};
     const fs_pvert *f = provoking >= 0 ? pv[provoking] : NULL;
     const tri_src t = {{v0->win, v1->win, v2->win}, {v0->col[0], v1->col[0], v2->col[0]},
                        {v0->col2[0], v1->col2[0], v2->col2[0]}, {v0->tc, v1->tc, v2->tc},
                        {v0->fog, v1->fog, v2->fog}, f ? f->col[0] : NULL, f ? f->col2[0] : NULL};
-    emit3(c, s, &t);
+    emit3(c, s, &t, drawn_edges(edges));
 }
 
 #define MAX_CLIPPED 16
 
+/* Emits the clipped polygon in[0..n-1] as a fan with the first vertex
+ * last, as Mesa's clipper does for the last-vertex convention.  Edge k
+ * (in[k] -> in[k+1]) is a boundary edge when bound[k]; each fan triangle
+ * (in[i-1], in[i], in[0]) carries edge i-1 as its edge 0, the closing edge
+ * n-1 as its edge 1 (last triangle) and edge 0 as its edge 2 (first). */
+static void emit_clipped(fs_context *c, const fs_vs_setup *s, cvert *const *in, const bool *bound, unsigned n,
+                         const float *flat, const float *flat2, unsigned route)
+{
+    for (unsigned i = 2; i < n; i++) {
+        unsigned e = (bound[i - 1] ? 1u : 0u) | (i == n - 1 && bound[n - 1] ? 2u : 0u) | (i == 2 && bound[0] ? 4u : 0u);
+        unsigned v = (in[i - 1]->edge ? 1u : 0u) | (in[i]->edge ? 2u : 0u) | (in[0]->edge ? 4u : 0u);
+        emit_cverts(c, s, in[i - 1], in[i], in[0], flat, flat2, (e & v) | route);
+    }
+}
+
 void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
-                      const fs_pvert *v1, const fs_pvert *v2, int provoking)
+                      const fs_pvert *v1, const fs_pvert *v2, int provoking, unsigned edges)
 {
     cvert store[3 + MAX_CLIPPED];
     cvert *la[MAX_CLIPPED + 1], *lb[MAX_CLIPPED + 1];
+    bool ea[MAX_CLIPPED + 1], eb[MAX_CLIPPED + 1];
     cvert **in = la, **out = lb;
+    bool *ein = ea, *eout = eb;
     int nstore = 3;
-    from_pvert(&store[0], v0);
-    from_pvert(&store[1], v1);
-    from_pvert(&store[2], v2);
-    in[0] = &store[0];
-    in[1] = &store[1];
-    in[2] = &store[2];
+    from_pvert(s, &store[0], v0);
+    from_pvert(s, &store[1], v1);
+    from_pvert(s, &store[2], v2);
+    for (int k = 0; k < 3; k++) {
+        in[k] = &store[k];
+        store[k].edge = (edges >> (3 + k)) & 1u;
+        ein[k] = (edges >> k) & 1u;
+    }
     unsigned n = 3;
     unsigned mask = v0->mask | v1->mask | v2->mask;
     const bool two = s->two_side;
@@ -199,6 +242,7 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
         }
         unsigned outn = 0;
         in[n] = in[0];
+        ein[n] = ein[0];
         for (unsigned i = 1; i <= n; i++) {
             cvert *cur = in[i];
             float dp = dot4(cur->clip, pl);
@@ -209,6 +253,7 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
             bool different;
             if (dp_prev >= 0.0f) {
                 if (outn >= MAX_CLIPPED) return;
+                eout[outn] = ein[i - 1];
                 out[outn++] = prev;
                 different = dp < 0.0f;
             } else {
@@ -217,6 +262,12 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
             if (different) {
                 if (outn >= MAX_CLIPPED || nstore >= 3 + MAX_CLIPPED) return;
                 cvert *nv = &store[nstore++];
+                /* The edge along the view volume's plane is no polygon
+                 * edge (GL 1.5 spec 2.12 keeps edge flags on the original
+                 * edges only): the vertex going out starts it with its
+                 * flag clear; one coming back in continues the clipped
+                 * edge with the outside vertex's flag (Mesa's clipper). */
+                eout[outn] = ein[i - 1];
                 out[outn++] = nv;
                 float denom = dp - dp_prev;
                 if (dp < 0.0f) {
@@ -225,11 +276,13 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
                         interp(s, nv, dp / denom, cur, prev, two);
                     else
                         interp(s, nv, -dp_prev / denom, prev, cur, two);
+                    nv->edge = false;
                 } else {
                     if (-dp_prev < dp)
                         interp(s, nv, -dp_prev / denom, prev, cur, two);
                     else
                         interp(s, nv, dp / denom, cur, prev, two);
+                    nv->edge = prev->edge;
                 }
             }
             prev = cur;
@@ -238,33 +291,40 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
         cvert **t = in;
         in = out;
         out = t;
+        bool *et = ein;
+        ein = eout;
+        eout = et;
         n = outn;
     }
     if (n < 3) {
         c->stats.triangles_rejected++;
         return;
     }
-    /* Emitted as a fan with the first vertex last, as Mesa's clipper does
-     * for the last-vertex convention. */
-    for (unsigned i = 2; i < n; i++)
-        emit_cverts(c, s, in[i - 1], in[i], in[0], provoking >= 0 ? &flat[0][0] : NULL, &flat2[0][0]);
+    emit_clipped(c, s, in, ein, n, provoking >= 0 ? &flat[0][0] : NULL, &flat2[0][0], edges & FS_EDGES_ROUTE);
 }
 
 /* flat: the provoking vertex when flat shading, else NULL. */
-static void emit_line2(fs_context *c, const cvert *a, const cvert *b, const fs_pvert *flat)
+static void emit_line2(fs_context *c, const fs_vs_setup *s, const cvert *a, const cvert *b, const fs_pvert *flat)
 {
+    if (fs_render_mode_diverts(&c->rmode))
+        flat = NULL; /* as emit3 */
     fs_rvertex r[2];
-    to_rvertex(&r[0], a->win, flat ? flat->col[0] : a->col[0], flat ? flat->col2[0] : a->col2[0], a->tc, a->fog);
-    to_rvertex(&r[1], b->win, flat ? flat->col[0] : b->col[0], flat ? flat->col2[0] : b->col2[0], b->tc, b->fog);
-    fs_raster_line(c, &r[0], &r[1]);
+    to_rvertex(&r[0], a->win, flat ? flat->col[0] : a->col[0], flat ? flat->col2[0] : a->col2[0], a->tc, s->ntex,
+               a->fog);
+    to_rvertex(&r[1], b->win, flat ? flat->col[0] : b->col[0], flat ? flat->col2[0] : b->col2[0], b->tc, s->ntex,
+               b->fog);
+    if (fs_render_mode_diverts(&c->rmode))
+        fs_render_mode_line(c, &r[0], &r[1]);
+    else
+        fs_raster_line(c, &r[0], &r[1]);
 }
 
 void fs_emit_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1)
 {
     cvert a, b;
-    from_pvert(&a, v0);
-    from_pvert(&b, v1);
-    emit_line2(c, &a, &b, s->flat ? v1 : NULL);
+    from_pvert(s, &a, v0);
+    from_pvert(s, &b, v1);
+    emit_line2(c, s, &a, &b, s->flat ? v1 : NULL);
 }
 
 void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1)
@@ -274,7 +334,11 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
         fs_emit_line(c, s, v0, v1);
         return;
     }
-    if ((m & ~0xfu) == 0) {
+    /* Selection and feedback see lines clipped against every plane: Mesa
+     * runs them through a draw context of its own, which has no guard band
+     * (measured: a line leaving the window ends on its edge). */
+    const bool all_planes = fs_render_mode_diverts(&c->rmode);
+    if ((m & ~0xfu) == 0 && !all_planes) {
         /* Only x/y planes: the guard band passes the line unclipped unless
          * it cannot be projected. */
         if ((v0->clip[3] <= 0.0f && v1->clip[3] <= 0.0f) || isnan(v0->clip[0]) || isnan(v0->clip[1]) ||
@@ -283,8 +347,8 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
         if (!(v0->clip[3] > 0.0f) || !(v1->clip[3] > 0.0f))
             return; /* fragsim cannot project a w <= 0 end point */
         cvert a, b;
-        from_pvert(&a, v0);
-        from_pvert(&b, v1);
+        from_pvert(s, &a, v0);
+        from_pvert(s, &b, v1);
         for (int k = 0; k < 2; k++) {
             cvert *d = k ? &b : &a;
             float oow = 1.0f / d->clip[3];
@@ -294,12 +358,12 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
             d->win[3] = oow;
             d->win[4] = fmaf(d->clip[1] * oow, s->yr_scale, s->yr_trans);
         }
-        emit_line2(c, &a, &b, s->flat ? v1 : NULL);
+        emit_line2(c, s, &a, &b, s->flat ? v1 : NULL);
         return;
     }
     if (v0->mask & v1->mask)
         return;
-    unsigned zm = m & 0x30u;
+    unsigned zm = all_planes ? m : m & 0x30u;
     float t0 = 0.0f, t1 = 0.0f;
     while (zm) {
         int plane = __builtin_ctz(zm);
@@ -319,8 +383,8 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
             return;
     }
     cvert a, b, ca, cb;
-    from_pvert(&a, v0);
-    from_pvert(&b, v1);
+    from_pvert(s, &a, v0);
+    from_pvert(s, &b, v1);
     cvert *pa = &a, *pb = &b;
     if (v0->mask) {
         interp(s, &ca, t0, &a, &b, false);
@@ -332,12 +396,11 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
     }
     if (!(pa->clip[3] > 0.0f) || !(pb->clip[3] > 0.0f))
         return;
-    emit_line2(c, pa, pb, s->flat ? v1 : NULL);
+    emit_line2(c, s, pa, pb, s->flat ? v1 : NULL);
 }
 
 void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)
 {
-    (void)s;
     fs_rvertex r;
     r.x = v->win[0];
     r.y = v->win[1];
@@ -345,8 +408,11 @@ void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)
     r.inv_w = v->win[3];
     r.y_raster = v->win[4];
     memcpy(r.color, v->col[0], sizeof r.color);
-    memcpy(r.tex, v->tc, sizeof r.tex);
+    memcpy(r.tex, v->tc, (size_t)s->ntex * sizeof r.tex[0]);
     r.fog = v->fog;
     memcpy(r.color2, v->col2[0], sizeof r.color2);
-    fs_raster_point(c, &r);
+    if (fs_render_mode_diverts(&c->rmode))
+        fs_render_mode_point(c, &r);
+    else
+        fs_raster_point(c, &r);
 }

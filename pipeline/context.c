@@ -23,6 +23,7 @@ fs_context *fs_context_create(const fs_config *cfg, int width, int height)
     fs_raster_state_init(&c->raster, (int)c->cfg.raster_subpixel_bits);
     fs_fragment_state_init(&c->frag);
     fs_vertex_stage_init(c);
+    fs_render_mode_init(c);
     fs_state_init(c); /* the initial values of GL 1.5 spec tables 6.5-6.32 */
     if (fs_texture_init(c) != 0) {
         fs_context_destroy(c);
@@ -60,7 +61,7 @@ void fs_context_destroy(fs_context *c)
     fs_vertex_stage_free(c);
     fs_framebuffer_free(&c->fb);
     free(c->scratch);
-    for (int i = 0; i < FS_ARRAY_SLOTS; i++)
+    for (size_t i = 0; i < sizeof c->array_copy / sizeof c->array_copy[0]; i++)
         for (int k = 0; k < 2; k++)
             free(c->array_copy[i].buf[k]);
     free(c);

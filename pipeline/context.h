@@ -19,6 +19,7 @@
 #include "state.h"
 #include "stored_state.h"
 #include "observer.h"
+#include "render_mode.h"
 
 struct fs_dlist_state;      /* driver/display_list.c */
 struct fs_capture;          /* driver/capture.c */
@@ -43,6 +44,9 @@ struct fs_context {
     fs_raster_state raster;
     fs_fragment_state frag;
     fs_framebuffer fb;
+    /* glRenderMode's GL_SELECT and GL_FEEDBACK, the name stack and their
+     * buffers (GL 1.5 spec 5.2, 5.3; pipeline/render_mode.c). */
+    fs_render_mode_state rmode;
 
     GLint pack_alignment, unpack_alignment, unpack_row_length, pack_row_length;
     /* The rest of the pixel-store state (GL 1.5 spec table 3.1 / 4.5; all
@@ -74,6 +78,9 @@ struct fs_context {
      * command (driver/dispatch.c), each made on first use.  The driver sets
      * driver_free when it makes one; fs_context_destroy calls it first. */
     struct fs_dlist_state *lists;
+    /* glListBase (GL 1.5 spec 5.4), here rather than in the driver's list
+     * state so that the table's GL_LIST_BIT group saves it. */
+    GLuint list_base;
     uint64_t *unsupported_cmds;
     void (*driver_free)(fs_context *c);
     struct fs_capture *capture;   /* non-NULL while recording a trace */
@@ -101,9 +108,11 @@ struct fs_context {
     void *scratch;                /* output buffer for replayed glGet and glReadPixels */
     size_t scratch_size;
     /* Copies of the array data replayed pointer calls carry, two per array
-     * (fs_array_slot's order): a call GL rejects must not overwrite the
-     * copy the array still points at (driver/dispatch.c). */
-    struct { void *buf[2]; size_t cap[2]; } array_copy[FS_ARRAY_SLOTS];
+     * (fs_client_array_at's order: vertex, normal, colour, the texcoord
+     * array of each texture unit, secondary colour, fog coordinate, edge
+     * flag, index): a call GL rejects must not overwrite the copy the
+     * array still points at (driver/dispatch.c). */
+    struct { void *buf[2]; size_t cap[2]; } array_copy[FS_CLIENT_ARRAYS];
 };
 
 /* Creates a context with a width x height framebuffer (cfg may be NULL for
@@ -151,6 +160,7 @@ static inline const fs_tile_mask *fs_tile_mask_active(const fs_context *c)
 /* Whether the observer skips a draw of n vertices in mode (observer.h). */
 static inline bool fs_draw_skipped(fs_context *c, GLenum mode, size_t n)
 {
-    return c->observer && !c->observer->ops->draw(c->observer->user, c, mode, n);
+    /* Selection and feedback need every primitive: none is skipped. */
+    return c->observer && !fs_render_mode_diverts(&c->rmode) && !c->observer->ops->draw(c->observer->user, c, mode, n);
 }
 #endif

@@ -18,7 +18,8 @@ void fs_vertex_stage_init(fs_context *c)
     x->matrix_mode = GL_MODELVIEW;
     fs_mat_identity(x->modelview[0].m);
     fs_mat_identity(x->projection[0].m);
-    fs_mat_identity(x->texture[0].m);
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
+        fs_mat_identity(x->texture[u][0].m);
     /* The viewport becomes the framebuffer size at the first draw unless
      * glViewport comes first (viewport.c). */
     x->depth_range[0] = 0.0;
@@ -57,18 +58,20 @@ void fs_vertex_stage_init(fs_context *c)
     memset(&c->current, 0, sizeof c->current);
     c->current.color[0] = c->current.color[1] = c->current.color[2] = c->current.color[3] = 1.0f;
     c->current.normal[2] = 1.0f;
-    c->current.texcoord[3] = 1.0f;
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
+        c->current.texcoord[u][3] = 1.0f;
     c->current.secondary_color[3] = 1.0f;
 
-    /* Tables 6.6-6.8: sizes and types in fs_array_slot's order (the edge
+    /* Tables 6.6-6.8: sizes and types in fs_pointer_slot's order (the edge
      * flag's bytes have no GL type of their own). */
     static const struct { GLint size; GLenum type; } array_init[FS_ARRAY_SLOTS] = {
         {4, GL_FLOAT}, {3, GL_FLOAT}, {4, GL_FLOAT}, {4, GL_FLOAT},
         {3, GL_FLOAT}, {1, GL_FLOAT}, {1, GL_UNSIGNED_BYTE}, {1, GL_FLOAT}};
     memset(&c->arrays, 0, sizeof c->arrays);
-    for (int k = 0; k < FS_ARRAY_SLOTS; k++) {
-        fs_array_slot(&c->arrays, k)->size = array_init[k].size;
-        fs_array_slot(&c->arrays, k)->type = array_init[k].type;
+    for (int k = 0; k < FS_CLIENT_ARRAYS; k++) {
+        int slot = k < 3 ? k : k < 3 + FS_MAX_TEXTURE_UNITS ? 3 : k + 1 - FS_MAX_TEXTURE_UNITS;
+        fs_client_array_at(&c->arrays, k)->size = array_init[slot].size;
+        fs_client_array_at(&c->arrays, k)->type = array_init[slot].type;
     }
 
     free(c->prim.impl);
@@ -81,6 +84,7 @@ void fs_vertex_stage_free(fs_context *c)
     fs_vs_impl *v = fs_vs(c);
     if (v) {
         free(v->iv);
+        free(v->iv_edge);
         free(v->pv);
         free(v->idx);
         free(v->mat_seg);
@@ -125,6 +129,12 @@ bool fs_vs_reserve_idx(fs_context *c, size_t n)
     return v && grow((void **)&v->idx, &v->idx_cap, n, sizeof *v->idx);
 }
 
+bool fs_vs_reserve_edge(fs_context *c, size_t n)
+{
+    fs_vs_impl *v = fs_vs(c);
+    return v && grow((void **)&v->iv_edge, &v->iv_edge_cap, n ? n : 1, 1);
+}
+
 void fs_exec_Begin(fs_context *c, GLenum mode)
 {
     if (c->prim.inside_begin) {
@@ -141,6 +151,7 @@ void fs_exec_Begin(fs_context *c, GLenum mode)
     if (fs_vs(c)) {
         fs_vs(c)->iv_n = 0;
         fs_vs(c)->mat_seg_n = 0;
+        fs_vs(c)->iv_edge_used = false;
     }
 }
 
@@ -195,6 +206,9 @@ void fs_exec_End(fs_context *c)
         return;
     }
     fs_vs_prepare(c, &v->setup);
+    if (v->iv_edge_used)
+        v->setup.edge = v->iv_edge;
+    v->iv_edge_used = false;
     bool lazy = false;
     if (v->mat_seg_n) {
         /* Materials changed within the primitive: each run of vertices is
@@ -212,6 +226,34 @@ void fs_exec_End(fs_context *c)
     fs_prim_draw(c, &v->setup, c->prim.mode, v->pv, lazy ? v->iv : NULL, NULL, n, c->prim.list_depth > 0);
 }
 
+/* The batch's vertices get edge flags of their own (GL 1.5 spec 2.6.2),
+ * those so far true.  False when out of memory. */
+static bool vertex_edge_flags_start(fs_vs_impl *v)
+{
+    if (!grow((void **)&v->iv_edge, &v->iv_edge_cap, v->iv_n + 1, 1))
+        return false;
+    memset(v->iv_edge, 1, v->iv_n);
+    v->iv_edge_used = true;
+    return true;
+}
+
+/* Records the edge flag of the batch's next vertex: nothing while the
+ * batch has none of its own and the current flag is true.  False only
+ * when out of memory. */
+static bool vertex_edge_flag(fs_context *c, fs_vs_impl *v)
+{
+    if (!v->iv_edge_used) {
+        if (c->st.edge_flag)
+            return true;
+        if (!vertex_edge_flags_start(v))
+            return false;
+    }
+    if (!grow((void **)&v->iv_edge, &v->iv_edge_cap, v->iv_n + 1, 1))
+        return false;
+    v->iv_edge[v->iv_n] = c->st.edge_flag;
+    return true;
+}
+
 /* Appends a vertex with the current attributes (GL 1.5 spec 2.7).  Outside
  * Begin/End a vertex has no effect. */
 static void vertex4(fs_context *c, float x, float y, float z, float w)
@@ -223,14 +265,19 @@ static void vertex4(fs_context *c, float x, float y, float z, float w)
         fs_error(c, GL_OUT_OF_MEMORY);
         return;
     }
+    if (!vertex_edge_flag(c, v)) {
+        fs_error(c, GL_OUT_OF_MEMORY);
+        return;
+    }
     fs_ivert *o = &v->iv[v->iv_n++];
     o->obj[0] = x; o->obj[1] = y; o->obj[2] = z; o->obj[3] = w;
     memcpy(o->col, c->current.color, sizeof o->col);
     memcpy(o->nrm, c->current.normal, sizeof o->nrm);
-    memcpy(o->tc, c->current.texcoord, sizeof o->tc);
+    /* The units the draw reads (fs_raster_state.tex_units; enables do not
+     * change between Begin and End, 2.6.3). */
+    memcpy(o->tc, c->current.texcoord, (size_t)c->raster.tex_units * sizeof o->tc[0]);
     memcpy(o->col2, c->current.secondary_color, sizeof o->col2);
     o->fogc = c->current.fog_coord;
-    o->edge = c->st.edge_flag;
     c->prim.count++;
 }
 
@@ -312,19 +359,32 @@ void fs_exec_Normal3s(fs_context *c, GLshort x, GLshort y, GLshort z) { normal3(
 void fs_exec_Normal3fv(fs_context *c, const GLfloat *v) { normal3(c, v[0], v[1], v[2]); }
 void fs_exec_Normal3dv(fs_context *c, const GLdouble *v) { normal3(c, (float)v[0], (float)v[1], (float)v[2]); }
 
-/* ---- the edge flag (2.6.2; stored: polygon edges matter only in the
- * GL_LINE and GL_POINT polygon modes, counted as unsupported) ---- */
-void fs_exec_EdgeFlag(fs_context *c, GLboolean flag) { c->st.edge_flag = flag != GL_FALSE; }
-void fs_exec_EdgeFlagv(fs_context *c, const GLubyte *flag) { c->st.edge_flag = flag[0] != GL_FALSE; }
-
-/* ---- texture coordinates ---- */
-static void texcoord4(fs_context *c, float s, float t, float r, float q)
+/* ---- the edge flag (2.6.2): each vertex carries the current one; it
+ * decides the edges drawn in the GL_LINE and GL_POINT polygon modes ---- */
+static void edge_flag(fs_context *c, bool flag)
 {
-    c->current.texcoord[0] = s;
-    c->current.texcoord[1] = t;
-    c->current.texcoord[2] = r;
-    c->current.texcoord[3] = q;
+    c->st.edge_flag = flag;
+    /* Given between Begin and End, the flag is per-vertex data of the
+     * batch (Mesa's vbo makes it a vertex attribute), whatever its values. */
+    if (c->prim.inside_begin && fs_vs(c) && !fs_vs(c)->iv_edge_used)
+        vertex_edge_flags_start(fs_vs(c));
 }
+
+void fs_exec_EdgeFlag(fs_context *c, GLboolean flag) { edge_flag(c, flag != GL_FALSE); }
+void fs_exec_EdgeFlagv(fs_context *c, const GLubyte *flag) { edge_flag(c, flag[0] != GL_FALSE); }
+
+/* ---- texture coordinates (2.7): glTexCoord sets unit 0's, glMultiTexCoord
+ * (texture_coords.c) those of any unit ---- */
+void fs_current_texcoord(fs_context *c, int unit, float s, float t, float r, float q)
+{
+    float *v = c->current.texcoord[unit];
+    v[0] = s;
+    v[1] = t;
+    v[2] = r;
+    v[3] = q;
+}
+
+static void texcoord4(fs_context *c, float s, float t, float r, float q) { fs_current_texcoord(c, 0, s, t, r, q); }
 
 void fs_exec_TexCoord1f(fs_context *c, GLfloat s) { texcoord4(c, s, 0.0f, 0.0f, 1.0f); }
 void fs_exec_TexCoord2f(fs_context *c, GLfloat s, GLfloat t) { texcoord4(c, s, t, 0.0f, 1.0f); }
@@ -334,3 +394,20 @@ void fs_exec_TexCoord2d(fs_context *c, GLdouble s, GLdouble t) { texcoord4(c, (f
 void fs_exec_TexCoord2i(fs_context *c, GLint s, GLint t) { texcoord4(c, (float)s, (float)t, 0.0f, 1.0f); }
 void fs_exec_TexCoord2fv(fs_context *c, const GLfloat *v) { texcoord4(c, v[0], v[1], 0.0f, 1.0f); }
 void fs_exec_TexCoord2dv(fs_context *c, const GLdouble *v) { texcoord4(c, (float)v[0], (float)v[1], 0.0f, 1.0f); }
+
+/* ---- the colour index (2.7): stored for glGet, the window being RGBA ---- */
+void fs_exec_Indexf(fs_context *c, GLfloat c_) { c->st.current_index = c_; }
+
+/* ---- rectangles (2.10) ----
+ * glRect(x1, y1, x2, y2) is exactly the sequence Begin(POLYGON),
+ * Vertex2(x1, y1), Vertex2(x2, y1), Vertex2(x2, y2), Vertex2(x1, y2),
+ * End(), so it takes the immediate-mode path (and gets its errors). */
+void fs_exec_Rectf(fs_context *c, GLfloat x1, GLfloat y1, GLfloat x2, GLfloat y2)
+{
+    fs_exec_Begin(c, GL_POLYGON);
+    vertex4(c, x1, y1, 0.0f, 1.0f);
+    vertex4(c, x2, y1, 0.0f, 1.0f);
+    vertex4(c, x2, y2, 0.0f, 1.0f);
+    vertex4(c, x1, y2, 0.0f, 1.0f);
+    fs_exec_End(c);
+}

@@ -400,7 +400,10 @@ void fs_lighting_setup(fs_context *c, fs_vs_setup *s)
         memcpy(o->pos, l->position, 16);
         memcpy(o->att, l->attenuation, sizeof o->att);
         o->positional = l->position[3] != 0.0f;
-        o->spot = o->positional && l->spot_cutoff != 180.0f;
+        /* Infinite lights are spot lights too in llvmpipe (measured: piglit's
+         * infinite-spot-light reads half the ambient red, its spot factor,
+         * where the spec's attenuation would leave all of it). */
+        o->spot = l->spot_cutoff != 180.0f;
         o->spot_exp = l->spot_exponent;
         o->cos_cutoff = cosf(l->spot_cutoff * (float)(FS_PI / 180.0));
         memcpy(o->spot_dir, l->spot_direction, sizeof o->spot_dir);
@@ -454,14 +457,17 @@ static void light_side(const fs_vs_setup *s, const fs_material *m, const float e
                 vp[0] *= inv; vp[1] *= inv; vp[2] *= inv;
             }
             att = 1.0f / (l->att[0] + l->att[1] * d + l->att[2] * d2);
-            if (l->spot) {
-                float sd = -(vp[0] * l->spot_dir[0] + vp[1] * l->spot_dir[1] + vp[2] * l->spot_dir[2]);
-                if (sd < l->cos_cutoff)
-                    continue; /* outside the cone: the whole term is zero */
-                att *= l->spot_exp == 0.0f ? 1.0f : powf(sd, l->spot_exp);
-            }
         } else {
             vp[0] = l->vp_inf[0]; vp[1] = l->vp_inf[1]; vp[2] = l->vp_inf[2];
+        }
+        if (l->spot) {
+            /* The direction from the light to the vertex against the
+             * spot direction (2.14.1); for an infinite light the light's
+             * own direction. */
+            float sd = -(vp[0] * l->spot_dir[0] + vp[1] * l->spot_dir[1] + vp[2] * l->spot_dir[2]);
+            if (sd < l->cos_cutoff)
+                continue; /* outside the cone: the whole term is zero */
+            att *= l->spot_exp == 0.0f ? 1.0f : powf(sd, l->spot_exp);
         }
         float ar = l->amb[0] * m->ambient[0], ag = l->amb[1] * m->ambient[1], ab = l->amb[2] * m->ambient[2];
         float ndotvp = n[0] * vp[0] + n[1] * vp[1] + n[2] * vp[2];

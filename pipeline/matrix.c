@@ -10,6 +10,7 @@
  * rotations about a coordinate axis.
  */
 #include <math.h>
+#include <stdbool.h>
 #include <string.h>
 #include "vertex_internal.h"
 
@@ -68,7 +69,10 @@ static fs_matrix *top(fs_context *c)
     fs_transform_state *x = &c->xf;
     switch (x->matrix_mode) {
     case GL_PROJECTION: return &x->projection[x->projection_top];
-    case GL_TEXTURE: return &x->texture[x->texture_top];
+    case GL_TEXTURE: {
+        int u = fs_active_unit(c); /* the active unit's stack (2.10.2) */
+        return &x->texture[u][x->texture_top[u]];
+    }
     default: return &x->modelview[x->modelview_top];
     }
 }
@@ -78,7 +82,10 @@ const fs_matrix *fs_current_matrix(const fs_context *c, GLenum mode)
     const fs_transform_state *x = &c->xf;
     switch (mode) {
     case GL_PROJECTION: return &x->projection[x->projection_top];
-    case GL_TEXTURE: return &x->texture[x->texture_top];
+    case GL_TEXTURE: {
+        int u = fs_active_unit(c);
+        return &x->texture[u][x->texture_top[u]];
+    }
     default: return &x->modelview[x->modelview_top];
     }
 }
@@ -129,6 +136,28 @@ void fs_exec_MultMatrixd(fs_context *c, const GLdouble *m)
         f[i] = (float)m[i];
     mult(c, f);
 }
+
+/* GL 1.3's transposed forms (2.11.2): LoadTransposeMatrix(m) is
+ * LoadMatrix(m^T) and MultTransposeMatrix(m) is MultMatrix(m^T), m given
+ * row by row; the double forms convert each element to float as
+ * glLoadMatrixd does. */
+static void transposed(fs_context *c, const GLfloat *mf, const GLdouble *md, bool load)
+{
+    float t[16];
+    for (int i = 0; i < 16; i++) {
+        int k = (i % 4) * 4 + i / 4;
+        t[i] = mf ? mf[k] : (float)md[k];
+    }
+    if (load)
+        fs_exec_LoadMatrixf(c, t);
+    else
+        mult(c, t);
+}
+
+void fs_exec_LoadTransposeMatrixf(fs_context *c, const GLfloat *m) { transposed(c, m, NULL, true); }
+void fs_exec_LoadTransposeMatrixd(fs_context *c, const GLdouble *m) { transposed(c, NULL, m, true); }
+void fs_exec_MultTransposeMatrixf(fs_context *c, const GLfloat *m) { transposed(c, m, NULL, false); }
+void fs_exec_MultTransposeMatrixd(fs_context *c, const GLdouble *m) { transposed(c, NULL, m, false); }
 
 void fs_exec_Translatef(fs_context *c, GLfloat x, GLfloat y, GLfloat z)
 {
@@ -222,7 +251,13 @@ void fs_exec_PushMatrix(fs_context *c)
     fs_matrix *stack;
     switch (x->matrix_mode) {
     case GL_PROJECTION: t = &x->projection_top; depth = FS_PROJECTION_STACK_DEPTH; stack = x->projection; break;
-    case GL_TEXTURE: t = &x->texture_top; depth = FS_TEXTURE_STACK_DEPTH; stack = x->texture; break;
+    case GL_TEXTURE: {
+        int u = fs_active_unit(c);
+        t = &x->texture_top[u];
+        depth = FS_TEXTURE_STACK_DEPTH;
+        stack = x->texture[u];
+        break;
+    }
     default: t = &x->modelview_top; depth = FS_MODELVIEW_STACK_DEPTH; stack = x->modelview; break;
     }
     if (*t + 1 >= depth) {
@@ -237,7 +272,7 @@ void fs_exec_PopMatrix(fs_context *c)
 {
     fs_transform_state *x = &c->xf;
     int *t = x->matrix_mode == GL_PROJECTION ? &x->projection_top
-           : x->matrix_mode == GL_TEXTURE ? &x->texture_top : &x->modelview_top;
+           : x->matrix_mode == GL_TEXTURE ? &x->texture_top[fs_active_unit(c)] : &x->modelview_top;
     if (*t == 0) {
         fs_error(c, GL_STACK_UNDERFLOW);
         return;

@@ -38,6 +38,8 @@ typedef struct prim_ctx {
     bool quiet;          /* a quiet draw (observer.h): a triangle outside the
                             mask only reports its area (a batch outside it,
                             iv NULL, likewise) */
+    bool unfilled;       /* the draw module's route (fs_raster_draw_pipeline):
+                            triangles carry their edges */
 } prim_ctx;
 
 static inline size_t I(const prim_ctx *p, size_t i)
@@ -100,7 +102,26 @@ static void quiet_area(fs_context *c, const fs_pvert *v0, const fs_pvert *v1, co
     FS_OBSERVE(c, triangle_area, 0.5 * fabs((double)a2), 0, 0);
 }
 
-static void tri(const prim_ctx *p, size_t a, size_t b, size_t cc)
+/* The vertices' edge flags as bits 3-5 of a triangle's edges (clip.c). */
+static unsigned vertex_edges(const prim_ctx *p, size_t a, size_t b, size_t cc)
+{
+    const uint8_t *e = p->s->edge;
+    if (!e)
+        return p->c->st.edge_flag ? FS_EDGES_ALL << 3 : 0;
+    return (e[I(p, a)] ? 8u : 0u) | (e[I(p, b)] ? 16u : 0u) | (e[I(p, cc)] ? 32u : 0u);
+}
+
+/* What clip.c takes as a triangle's edges: 0 off the draw module's route. */
+static inline unsigned route_edges(const prim_ctx *p, size_t a, size_t b, size_t cc, unsigned bound)
+{
+    return p->unfilled ? FS_EDGES_ROUTE | bound | vertex_edges(p, a, b, cc) : 0;
+}
+
+/* A triangle with its boundary edges `bound` (bit i: edge from its vertex
+ * i to i+1 mod 3), as Mesa's draw module decomposes each primitive type:
+ * every edge of independent triangles, strips and fans, the outer edges
+ * of quads, quad strips and polygons (GL 1.5 spec 2.6.2, 3.5.4). */
+static void tri_e(const prim_ctx *p, size_t a, size_t b, size_t cc, unsigned bound)
 {
     fs_context *c = p->c;
     const fs_pvert *v0 = V(p, a), *v1 = V(p, b), *v2 = V(p, cc);
@@ -126,18 +147,31 @@ static void tri(const prim_ctx *p, size_t a, size_t b, size_t cc)
             fs_raster_triangle_dropped(c, x, y);
             return;
         }
-        fs_emit_triangle(c, p->s, v0, v1, v2, p->prov);
+        fs_emit_triangle(c, p->s, v0, v1, v2, p->prov, route_edges(p, a, b, cc, bound));
     } else if (all) {
         c->stats.triangles_rejected++;
     } else {
         c->stats.triangles_clipped++;
-        fs_clip_triangle(c, p->s, v0, v1, v2, p->prov);
+        fs_clip_triangle(c, p->s, v0, v1, v2, p->prov, route_edges(p, a, b, cc, bound));
     }
 }
+
+static inline void tri(const prim_ctx *p, size_t a, size_t b, size_t cc) { tri_e(p, a, b, cc, FS_EDGES_ALL); }
 
 static void line(const prim_ctx *p, size_t a, size_t b)
 {
     fs_clip_line(p->c, p->s, V(p, a), V(p, b));
+}
+
+/* Whether the draw's triangles take the draw module's pipeline stages
+ * (fs_raster_draw_pipeline), or, measured on OSMesa, at least its
+ * decomposition: a polygon mode other than GL_FILL whose face is culled
+ * does not, unless the vertices carry edge flags of their own. */
+static bool draw_module_route(const fs_context *c, const fs_vs_setup *s)
+{
+    const fs_raster_state *r = &c->raster;
+    return fs_raster_draw_pipeline(r) ||
+           (s->edge && (r->polygon_mode[0] != GL_FILL || r->polygon_mode[1] != GL_FILL));
 }
 
 void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv, fs_ivert *iv,
@@ -145,10 +179,17 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
 {
     const fs_tile_mask *m = fs_vs_tile_mask(c, mode);
     prim_ctx p = {c, s, pv, iv, idx, s->flat ? 2 : -1, m != NULL, m && !c->raster.reference_path && !fs_vs(c)->tri_hook,
-                  m && m->quiet};
-    /* Only quads and quad strips split by the route (see the top). */
-    bool pipeline = false;
-    for (size_t i = 0; i < count && !pipeline && (mode == GL_QUADS || mode == GL_QUAD_STRIP); i++)
+                  m && m->quiet, draw_module_route(c, s)};
+    /* Only quads and quad strips split by the route (see the top); the
+     * draw module's stages take every triangle through its pipeline.
+     * Measured on OSMesa: a filled draw whose vertices carry edge flags of
+     * their own keeps the unclipped route's split even when clipped.
+     * Selection and feedback always take the draw pipeline's route (Mesa
+     * feeds them from its draw module; measured: a quad comes out as
+     * (0,1,3),(1,2,3)). */
+    bool pipeline = p.unfilled || fs_render_mode_diverts(&c->rmode);
+    c->raster.offset_latch = -1;
+    for (size_t i = 0; i < count && !pipeline && !s->edge && (mode == GL_QUADS || mode == GL_QUAD_STRIP); i++)
         pipeline = V(&p, i)->mask != 0;
     size_t i;
     switch (mode) {
@@ -200,8 +241,8 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
                 tri(&p, i - 3, i - 2, i - 1);
                 tri(&p, i - 3, i - 1, i);
             } else {
-                tri(&p, i - 3, i - 2, i);
-                tri(&p, i - 2, i - 1, i);
+                tri_e(&p, i - 3, i - 2, i, 5u);
+                tri_e(&p, i - 2, i - 1, i, 3u);
             }
         }
         break;
@@ -211,14 +252,16 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
                 tri(&p, i - 3, i - 2, i);
                 tri(&p, i - 1, i - 3, i);
             } else {
-                tri(&p, i - 1, i - 3, i);
-                tri(&p, i - 3, i - 2, i);
+                tri_e(&p, i - 1, i - 3, i, 5u);
+                tri_e(&p, i - 3, i - 2, i, 3u);
             }
         }
         break;
     case GL_POLYGON:
+        /* Fan (i-1, i, 0): edge 0 is always outer, edge 1 (i -> 0) only
+         * in the last triangle, edge 2 (0 -> 1) only in the first. */
         for (i = 2; i < count; i++)
-            tri(&p, i - 1, i, 0);
+            tri_e(&p, i - 1, i, 0, 1u | (i + 1 == count ? 2u : 0u) | (i == 2 ? 4u : 0u));
         break;
     default:
         break;

@@ -1,7 +1,9 @@
 /*
- * Line segments (GL 1.5 spec 3.4), modelled on llvmpipe's lp_setup_line.c
- * (Mesa 22.3, read for the rules): a non-antialiased line is a
- * parallelogram of width w (rounded to an integer) along the minor axis,
+ * Line segments (GL 1.5 spec 3.4, 3.4.2 for wide lines), modelled on
+ * llvmpipe's lp_setup_line.c (Mesa 22.3, read for the rules): a
+ * non-antialiased line of any width is a parallelogram of width w
+ * (rounded half away from zero to an integer, at least 1) along the minor
+ * axis, centred on the segment (GL's wide-line rule),
  * whose end edges are moved by half a pixel so that the diamond-exit rule
  * (3.4.1) decides whether the first and last pixels are drawn; it is then
  * rasterized with the triangle fill convention.  Attributes are planes along
@@ -67,11 +69,10 @@ void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
     const int W = c->fb.width, H = c->fb.height;
     const int order = r->subpixel_bits;
     const float one = (float)(1 << order);
-    float width = r->line_width;
-    if (width != 1.0f) {
-        fs_unsupported(c, "wide lines");
-        width = 1.0f;
-    }
+    /* Any width: the parallelogram's minor-axis extent is the width
+     * rounded to whole pixels, at least one (llvmpipe draws wide lines
+     * itself: its draw module's wide-line threshold is never reached). */
+    float width = r->line_width > 1.0f ? r->line_width : 1.0f;
     float p1x = va->x, p1y = r->use_y_raster ? va->y_raster : fs_raster_y(H, va->y);
     float p2x = vb->x, p2y = r->use_y_raster ? vb->y_raster : fs_raster_y(H, vb->y);
     if (!(fabsf(p1x) < 1e6f) || !(fabsf(p1y) < 1e6f) || !(fabsf(p2x) < 1e6f) || !(fabsf(p2y) < 1e6f)) {
@@ -246,6 +247,7 @@ void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
     s.height = H;
     s.use_tex = r->interpolate_tex;
     s.use_fog = r->interpolate_fog;
+    s.tex_mask = r->tex_mask;
     s.zoffset = 0.0f;
     line_coef(&s.z, &li, va->z, vb->z);
     s.perspective = !(va->inv_w == 1.0f && vb->inv_w == 1.0f);
@@ -262,12 +264,13 @@ void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
     if (s.use_color2)
         line_color_planes(s.color2, 3, &li, va->color2, vb->color2, va, vb, &s);
     for (int k = 0; k < 4; k++) {
-        if (s.use_tex) {
-            if (s.perspective)
-                line_coef(&s.tex[k], &li, va->tex[k] * va->inv_w, vb->tex[k] * vb->inv_w);
-            else
-                line_coef(&s.tex[k], &li, va->tex[k], vb->tex[k]);
-        }
+        if (s.use_tex)
+            FS_FOR_EACH_UNIT(u, s.tex_mask) {
+                if (s.perspective)
+                    line_coef(&s.tex[u][k], &li, va->tex[u][k] * va->inv_w, vb->tex[u][k] * vb->inv_w);
+                else
+                    line_coef(&s.tex[u][k], &li, va->tex[u][k], vb->tex[u][k]);
+            }
     }
     fs_raster_planes(c, &s, &e);
 }

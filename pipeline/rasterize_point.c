@@ -64,6 +64,7 @@ void fs_raster_point(fs_context *c, const fs_rvertex *v)
     s.height = H;
     s.use_tex = r->interpolate_tex;
     s.use_fog = r->interpolate_fog;
+    s.tex_mask = r->tex_mask;
     s.zoffset = 0.0f;
     fs_plane_constant(&s.z, v->z);
     /* Perspective-correct constants are stored premultiplied by 1/w and
@@ -79,7 +80,8 @@ void fs_raster_point(fs_context *c, const fs_rvertex *v)
         if (k < 3)
             fs_plane_constant(&s.color2[k], s.perspective && !s.color_constant ? v->color2[k] * v->inv_w : v->color2[k]);
         if (s.use_tex)
-            fs_plane_constant(&s.tex[k], s.perspective ? v->tex[k] * v->inv_w : v->tex[k]);
+            FS_FOR_EACH_UNIT(u, s.tex_mask)
+                fs_plane_constant(&s.tex[u][k], s.perspective ? v->tex[u][k] * v->inv_w : v->tex[u][k]);
     }
     fs_raster_planes(c, &s, &e);
 }

@@ -55,6 +55,8 @@ void fs_raster_state_init(fs_raster_state *r, int subpixel_bits)
     r->line_width = 1.0f;
     r->subpixel_bits = subpixel_bits < 1 ? 8 : subpixel_bits > 12 ? 12 : subpixel_bits;
     r->interpolate_tex = false;
+    r->tex_mask = 0;
+    r->tex_units = 1;
     r->reference_path = false;
     r->use_y_raster = false;
 #if FS_RASTER_HAVE_FMA
@@ -135,10 +137,10 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
         if (s->perspective) {                                                     \
             float oow_ = 1.0f / PLANE_AT(&s->w, px, py);                          \
             for (int k_ = 0; k_ < 4; k_++)                                        \
-                out_[k_] = PLANE_AT(&s->tex[k_], px, py) * oow_;                  \
+                out_[k_] = PLANE_AT(&s->tex[u][k_], px, py) * oow_;               \
         } else {                                                                  \
             for (int k_ = 0; k_ < 4; k_++)                                        \
-                out_[k_] = PLANE_AT(&s->tex[k_], px, py);                         \
+                out_[k_] = PLANE_AT(&s->tex[u][k_], px, py);                      \
         }                                                                         \
     } while (0)
 
@@ -173,29 +175,32 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
     }                                                                             \
     /* Texture coordinates of all four pixels, covered or not: lambda comes \
      * from the quad's differences (GL 1.5 spec 3.8.8; llvmpipe shades   \
-     * whole quads). */                                                          \
+     * whole quads), for each enabled unit. */                                   \
     if (s->use_tex)                                                               \
-        for (int i = 0; i < 4; i++) {                                             \
-            float px = (float)(q->x + (i & 1));                                   \
-            float py = (float)fs_raster_row_to_gl(s->height, q->y + (i >> 1));    \
-            FS_TEX_AT(PLANE_AT, px, py, q->tex[i]);                               \
-        }                                                                         \
-    /* Odd heights: the rows that complete llvmpipe's quads (fs_quad). */     \
-    if (s->use_tex && (s->height & 1))                                            \
-        for (int i = 0; i < 4; i++) {                                             \
-            float px = (float)(q->x + (i & 1));                                   \
-            int gy = i < 2 ? q->y - 1 : q->y + 2;                                 \
-            float py = (float)fs_raster_row_to_gl(s->height, gy);                 \
-            FS_TEX_AT(PLANE_AT, px, py, i < 2 ? q->tex_below[i & 1] : q->tex_above[i & 1]); \
-        }                                                                         \
-    /* The quad sharing llvmpipe's vector, when texturing asks (fs_quad). */  \
-    if (s->use_tex && tex_pair)                                                   \
-        for (int r = (s->height & 1) ? 0 : 1; r < ((s->height & 1) ? 4 : 3); r++) \
-            for (int j = 0; j < 2; j++) {                                         \
-                float px = (float)((q->x ^ 2) + j);                               \
-                float py = (float)fs_raster_row_to_gl(s->height, q->y - 1 + r);   \
-                FS_TEX_AT(PLANE_AT, px, py, q->tex_pair[r][j]);                   \
-            }
+        FS_FOR_EACH_UNIT(u, s->tex_mask) {                                        \
+            fs_quad_tex *qt = &q->unit[u];                                        \
+            for (int i = 0; i < 4; i++) {                                         \
+                float px = (float)(q->x + (i & 1));                               \
+                float py = (float)fs_raster_row_to_gl(s->height, q->y + (i >> 1)); \
+                FS_TEX_AT(PLANE_AT, px, py, qt->tex[i]);                          \
+            }                                                                     \
+            /* Odd heights: the rows that complete llvmpipe's quads (fs_quad). */ \
+            if (s->height & 1)                                                    \
+                for (int i = 0; i < 4; i++) {                                     \
+                    float px = (float)(q->x + (i & 1));                           \
+                    int gy = i < 2 ? q->y - 1 : q->y + 2;                         \
+                    float py = (float)fs_raster_row_to_gl(s->height, gy);         \
+                    FS_TEX_AT(PLANE_AT, px, py, i < 2 ? qt->tex_below[i & 1] : qt->tex_above[i & 1]); \
+                }                                                                 \
+            /* The quad sharing llvmpipe's vector, when texturing asks (fs_quad). */ \
+            if (tex_pair)                                                         \
+                for (int r = (s->height & 1) ? 0 : 1; r < ((s->height & 1) ? 4 : 3); r++) \
+                    for (int j = 0; j < 2; j++) {                                 \
+                        float px = (float)((q->x ^ 2) + j);                       \
+                        float py = (float)fs_raster_row_to_gl(s->height, q->y - 1 + r); \
+                        FS_TEX_AT(PLANE_AT, px, py, qt->tex_pair[r][j]);          \
+                    }                                                             \
+        }
 
 static void emit_pixels(const fs_prim_setup *s, fs_quad *q, unsigned m, int depth_bits, bool tex_pair)
 {
@@ -468,11 +473,6 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     const int *idx = t.idx;
     const int64_t *x = t.x, *y = t.y;
     tri_edges e = t.e;
-    GLenum mode = r->polygon_mode[front ? 0 : 1];
-    if (mode == GL_LINE)
-        fs_unsupported(c, "glPolygonMode(GL_LINE)");
-    else if (mode == GL_POINT)
-        fs_unsupported(c, "glPolygonMode(GL_POINT)");
 
     for (int i = 0; i < 3; i++) {
         int j = (i + 1) % 3;
@@ -535,8 +535,16 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     s.height = H;
     s.use_tex = r->interpolate_tex;
     s.use_fog = r->interpolate_fog;
+    s.tex_mask = r->tex_mask;
     s.zoffset = 0.0f;
-    if (r->offset_fill && mode == GL_FILL && (r->offset_factor != 0.0f || r->offset_units != 0.0f)) {
+    /* llvmpipe's triangle setup offsets by the factor and units whenever
+     * any of the three offset enables is on (Mesa's state tracker passes
+     * them on only then; lp_state_setup.c reads the values, not which
+     * enable: measured on OSMesa, GL_POLYGON_OFFSET_POINT alone moves
+     * filled triangles).  On the draw-module route the offset is already
+     * in the vertices' depth (polygon_mode.c) and the setup applies none. */
+    if ((r->offset_fill || r->offset_line || r->offset_point) && !fs_raster_draw_pipeline(r) &&
+        (r->offset_factor != 0.0f || r->offset_units != 0.0f)) {
         /* GL 1.5 spec 3.5.5: o = m*factor + r*units with m the max depth
          * slope; llvmpipe (lp_do_offset_tri) takes m = max(|dz/dx|, |dz/dy|)
          * from the plane and r = 2 / (2^bits - 1) (util_get_depth_format_mrd
@@ -567,16 +575,19 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
         color_planes(s.color2, 3, &g, abd, offsetof(fs_rvertex, color2), &s);
     if (s.perspective) {
         if (s.use_tex)
-            for (int k = 0; k < 4; k++) {
-                float ta = a->tex[k] * a->inv_w, tb = b->tex[k] * b->inv_w, td = d->tex[k] * d->inv_w;
-                calc_coef(&s.tex[k], &g, ta, tb, td);
-            }
+            FS_FOR_EACH_UNIT(u, s.tex_mask)
+                for (int k = 0; k < 4; k++) {
+                    float ta = a->tex[u][k] * a->inv_w, tb = b->tex[u][k] * b->inv_w;
+                    float td = d->tex[u][k] * d->inv_w;
+                    calc_coef(&s.tex[u][k], &g, ta, tb, td);
+                }
         if (s.use_fog)
             calc_coef(&s.fog, &g, a->fog * a->inv_w, b->fog * b->inv_w, d->fog * d->inv_w);
     } else {
         if (s.use_tex)
-            for (int k = 0; k < 4; k++)
-                calc_coef(&s.tex[k], &g, a->tex[k], b->tex[k], d->tex[k]);
+            FS_FOR_EACH_UNIT(u, s.tex_mask)
+                for (int k = 0; k < 4; k++)
+                    calc_coef(&s.tex[u][k], &g, a->tex[u][k], b->tex[u][k], d->tex[u][k]);
         if (s.use_fog)
             calc_coef(&s.fog, &g, a->fog, b->fog, d->fog);
     }

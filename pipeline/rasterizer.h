@@ -19,12 +19,25 @@
 
 typedef struct fs_context fs_context;
 
+/* GL_MAX_TEXTURE_UNITS: the fixed-function texture units, as llvmpipe's
+ * compatibility context reports them (measured on OSMesa: GL_MAX_TEXTURE_UNITS
+ * and GL_MAX_TEXTURE_COORDS 8).  Each has its own coordinates, matrix
+ * stack, binding and environment (GL 1.5 spec 2.7, 2.10.2, 3.8.13). */
+#define FS_MAX_TEXTURE_UNITS 8
+/* Runs the statement after it with u = each set bit of mask, lowest first
+ * (texturing applies unit after unit, 3.8.13). */
+#define FS_FOR_EACH_UNIT(u, mask)                                                   \
+    for (unsigned u##_left_ = (mask), u = 0; u##_left_ && ((u = (unsigned)__builtin_ctz(u##_left_)), 1); \
+         u##_left_ &= u##_left_ - 1)
+
 typedef struct fs_rvertex {
     float x, y;     /* window coordinates in pixels, GL y-up */
     float z;        /* window depth in [0,1] (after glDepthRange) */
     float inv_w;    /* 1 / clip w, for perspective-correct interpolation */
     float color[4]; /* RGBA, clamped to [0,1] */
-    float tex[4];   /* s, t, r, q of texture unit 0 (after the texture matrix) */
+    /* s, t, r, q of each texture unit (after its texture matrix); only the
+     * units below fs_raster_state.tex_units are set. */
+    float tex[FS_MAX_TEXTURE_UNITS][4];
     /* Optional, read only when fs_raster_state.use_y_raster is set: the
      * window y in llvmpipe's y-down frame exactly as llvmpipe computes it,
      * fma(y_ndc, -height/2, fb_height - (viewport_y + height/2)).  Deriving
@@ -39,13 +52,8 @@ typedef struct fs_rvertex {
     float color2[4];
 } fs_rvertex;
 
-/* Pixel i of a quad: 0 = (x,y), 1 = (x+1,y), 2 = (x,y+1), 3 = (x+1,y+1). */
-typedef struct fs_quad {
-    int x, y;           /* lower-left pixel; both even */
-    unsigned mask;      /* bit i set: pixel i is covered */
-    bool front_facing;
-    uint32_t z[4];      /* depth in the depth buffer's fixed-point units */
-    float color[4][4];  /* [pixel][rgba] in [0,1] */
+/* One texture unit's coordinates in a quad. */
+typedef struct fs_quad_tex {
     float tex[4][4];    /* [pixel][strq], interpolated perspective-correctly (not divided by q) */
     /* Only when the framebuffer height is odd: strq of the two pixels of
      * the row below the quad (y - 1) and above it (y + 2).  llvmpipe's 2x2
@@ -60,6 +68,18 @@ typedef struct fs_quad {
      * y + 2 only for odd heights).  Its lambda decides how llvmpipe's
      * float path samples this quad (units/texture_sample.c). */
     float tex_pair[4][2][4];
+} fs_quad_tex;
+
+/* Pixel i of a quad: 0 = (x,y), 1 = (x+1,y), 2 = (x,y+1), 3 = (x+1,y+1). */
+typedef struct fs_quad {
+    int x, y;           /* lower-left pixel; both even */
+    unsigned mask;      /* bit i set: pixel i is covered */
+    bool front_facing;
+    uint32_t z[4];      /* depth in the depth buffer's fixed-point units */
+    float color[4][4];  /* [pixel][rgba] in [0,1] */
+    /* The coordinates of the texture units in fs_raster_state.tex_mask
+     * (the others are left unset). */
+    fs_quad_tex unit[FS_MAX_TEXTURE_UNITS];
     /* Only while fs_raster_state.interpolate_fog is set: the fog coordinate
      * of each covered pixel, interpolated perspective-correctly like a
      * colour (pipeline/fog.c applies it after texturing, GL 1.5 spec 3.10). */
@@ -77,14 +97,24 @@ typedef struct fs_raster_state {
     GLenum cull_mode;           /* GL_BACK */
     GLenum front_face;          /* GL_CCW */
     bool offset_fill;           /* GL_POLYGON_OFFSET_FILL */
+    bool offset_line, offset_point; /* GL_POLYGON_OFFSET_LINE, _POINT (3.5.5) */
+    /* The draw module's offset stage decides whether to offset from the
+     * first triangle it sees after a flush (per draw here): -1 undecided,
+     * else 0 or 1 for the rest of the draw (polygon_mode.c). */
+    signed char offset_latch;
     float offset_factor, offset_units;
     GLenum polygon_mode[2];     /* front, back: GL_FILL */
     float point_size, line_width;
     int subpixel_bits;          /* from the config, default 8 */
     /* Set by texturing when a texture unit is enabled: interpolating the four
      * texture coordinates costs as much as the colour, so it is skipped
-     * while nothing reads them (fs_quad.tex is then left unset). */
+     * while nothing reads them (fs_quad.unit is then left unset).
+     * tex_mask: bit u for each enabled unit u, whose coordinates the
+     * rasterizer interpolates; tex_units: 1 + the highest enabled unit (at
+     * least 1), the units whose coordinates the vertex stage carries. */
     bool interpolate_tex;
+    unsigned tex_mask;
+    int tex_units;
     /* Set by texturing when fs_quad.tex_pair is needed (see there). */
     bool tex_pair_lod;
     /* Set by the vertex stage while GL_FOG is enabled: the fog coordinate
@@ -127,6 +157,43 @@ static inline bool fs_raster_culled(const fs_raster_state *r, bool front)
 }
 
 void fs_raster_state_init(fs_raster_state *r, int subpixel_bits);
+
+/* Whether triangles take llvmpipe's draw-module route (Mesa's
+ * lp_state_rasterizer.c hands polygon modes POINT and LINE to the draw
+ * module's pipeline stages): polygon offset and the polygon mode are then
+ * applied to the clipped triangle's vertices (pipeline/polygon_mode.c),
+ * not by the triangle setup. */
+/* The polygon mode llvmpipe uses for a face: Mesa's state tracker gives a
+ * culled face the other face's mode (so culling the face whose mode is
+ * not GL_FILL leaves the triangle setup's route). */
+static inline GLenum fs_raster_face_mode(const fs_raster_state *r, bool back)
+{
+    GLenum front_mode = r->polygon_mode[0], back_mode = r->polygon_mode[1];
+    if (r->cull_enabled && r->cull_mode != GL_BACK)
+        front_mode = back_mode;
+    if (r->cull_enabled && r->cull_mode != GL_FRONT)
+        back_mode = front_mode;
+    return back ? back_mode : front_mode;
+}
+
+static inline bool fs_raster_draw_pipeline(const fs_raster_state *r)
+{
+    return fs_raster_face_mode(r, false) != GL_FILL || fs_raster_face_mode(r, true) != GL_FILL;
+}
+
+/* Edge bits of a triangle handed to fs_raster_polygon: bit i draws edge
+ * v[i] -> v[i+1 mod 3] in GL_LINE mode and vertex v[i] in GL_POINT mode
+ * (the decomposition's boundary edges and the vertices' edge flags, GL 1.5
+ * spec 2.6.2 and 3.5.4, already combined). */
+#define FS_EDGES_ALL 7u
+/* Set in the edges the vertex stage hands on (clip.c) when the triangle
+ * takes the draw module's route to fs_raster_polygon. */
+#define FS_EDGES_ROUTE 0x40u
+/* The draw module's post-clip stages for one triangle (polygon_mode.c):
+ * facing and culling, polygon offset, then the face's polygon mode:
+ * filled, its flagged edges as lines, or its flagged vertices as points. */
+void fs_raster_polygon(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2,
+                       unsigned edges);
 
 /* Decides facing, culls, applies polygon offset and rasterizes.  Vertices are
  * in the order the primitive gave them (their winding decides facing). */

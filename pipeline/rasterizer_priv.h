@@ -24,7 +24,8 @@ typedef struct fs_plane {
 } fs_plane;
 
 typedef struct fs_prim_setup {
-    fs_plane z, w, color[4], tex[4];
+    fs_plane z, w, color[4];
+    fs_plane tex[FS_MAX_TEXTURE_UNITS][4]; /* the units in tex_mask */
     fs_plane fog;        /* the fog coordinate, when use_fog */
     bool use_fog;        /* interpolate it (fs_raster_state.interpolate_fog) */
     fs_plane color2[3];  /* the secondary colour, when use_color2 (as color[]) */
@@ -33,6 +34,7 @@ typedef struct fs_prim_setup {
     bool perspective;    /* false when every 1/w is 1: the division is exact then */
     bool color_constant; /* flat shading: colour planes constant, not divided by 1/w */
     bool use_tex;        /* interpolate texture coordinates */
+    unsigned tex_mask;   /* of these units (fs_raster_state.tex_mask) */
     bool front;
     int height;          /* framebuffer height, for the y flip */
 } fs_prim_setup;

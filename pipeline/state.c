@@ -45,19 +45,33 @@ static const fs_state_info rows[] = {
 #define FS_STATE_CONST(name, type, count, values) \
     {name, #name, 0, FS_CLS_##type, count, FS_STATE_CONSTANT, FS_CAP_NO},
 #define FS_STATE_PUSH(groups, member) {0, #member, groups, FS_GET_NUM, 0, FS_STATE_PUSH_ONLY, FS_CAP_NO},
+#define FS_STATE_TU(name, groups, type, count, array, elem, init, cap, unit) \
+    {name, #name, groups, FS_CLS_##type, count, FS_STATE_FIELD, FS_CAP_##cap},
+#define FS_STATE_PUSH_TU(groups, array, elem) {0, #array #elem, groups, FS_GET_NUM, 0, FS_STATE_PUSH_ONLY, FS_CAP_NO},
 #include "state.def"
 };
 #define N_ROWS ((int)(sizeof rows / sizeof rows[0]))
 
-/* Where each row lives in fs_context (size 0: not stored there). */
-static const struct store { enum store_type type; size_t offset, size; } store[] = {
+/* Where each row lives in fs_context (size 0: not stored there).  A
+ * per-unit row (FS_STATE_TU) lives at offset + u * stride for each texture
+ * unit u; unit says which unit glGet answers for (0: not per unit). */
+enum unit_sel { U_NONE, U_ACTIVE, U_CLIENT };
+static const struct store {
+    enum store_type type;
+    size_t offset, size, stride;
+    enum unit_sel unit;
+} store[] = {
 #define FS_STATE(name, groups, type, count, member, init, cap) \
-    {T_##type, offsetof(fs_context, member), MEMBER_SIZE(member)},
+    {T_##type, offsetof(fs_context, member), MEMBER_SIZE(member), 0, U_NONE},
 #define FS_STATE_RT(name, groups, type, count, member, cap) \
-    {T_##type, offsetof(fs_context, member), MEMBER_SIZE(member)},
-#define FS_STATE_GET(name, groups, type, count) {T_NONE, 0, 0},
-#define FS_STATE_CONST(name, type, count, values) {T_NONE, 0, 0},
-#define FS_STATE_PUSH(groups, member) {T_NONE, offsetof(fs_context, member), MEMBER_SIZE(member)},
+    {T_##type, offsetof(fs_context, member), MEMBER_SIZE(member), 0, U_NONE},
+#define FS_STATE_GET(name, groups, type, count) {T_NONE, 0, 0, 0, U_NONE},
+#define FS_STATE_CONST(name, type, count, values) {T_NONE, 0, 0, 0, U_NONE},
+#define FS_STATE_PUSH(groups, member) {T_NONE, offsetof(fs_context, member), MEMBER_SIZE(member), 0, U_NONE},
+#define FS_STATE_TU(name, groups, type, count, array, elem, init, cap, unit) \
+    {T_##type, offsetof(fs_context, array[0] elem), MEMBER_SIZE(array[0] elem), MEMBER_SIZE(array[0]), U_##unit},
+#define FS_STATE_PUSH_TU(groups, array, elem) \
+    {T_NONE, offsetof(fs_context, array[0] elem), MEMBER_SIZE(array[0] elem), MEMBER_SIZE(array[0]), U_ACTIVE},
 #include "state.def"
 };
 
@@ -66,6 +80,9 @@ static const struct store { enum store_type type; size_t offset, size; } store[]
     _Static_assert(MEMBER_SIZE(member) == (count) * sizeof(FS_CTYPE_##type), #name " size");
 #define FS_STATE_RT(name, groups, type, count, member, cap) \
     _Static_assert(MEMBER_SIZE(member) == (count) * sizeof(FS_CTYPE_##type), #name " size");
+#define FS_STATE_TU(name, groups, type, count, array, elem, init, cap, unit) \
+    _Static_assert(MEMBER_SIZE(array[0] elem) == (count) * sizeof(FS_CTYPE_##type), #name " size"); \
+    _Static_assert(MEMBER_SIZE(array) == FS_MAX_TEXTURE_UNITS * MEMBER_SIZE(array[0]), #name " units");
 #include "state.def"
 
 const fs_state_info *fs_state_rows(int *count)
@@ -80,6 +97,12 @@ void fs_state_init(fs_context *c)
     {                                                                                \
         static const FS_CTYPE_##type v[count] = {FS_UNPAREN init};                     \
         memcpy(&c->member, v, sizeof v);                                             \
+    }
+#define FS_STATE_TU(name, groups, type, count, array, elem, init, cap, unit)           \
+    {                                                                                \
+        static const FS_CTYPE_##type v[count] = {FS_UNPAREN init};                     \
+        for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)                               \
+            memcpy(&c->array[u] elem, v, sizeof v);                                  \
     }
 #include "state.def"
     /* Nothing is derived yet: the first validation derives everything. */
@@ -100,9 +123,20 @@ int fs_state_count(GLenum pname)
     return i < 0 ? 1 : rows[i].count;
 }
 
+/* Where row's value lives now: a per-unit row's for the unit it follows. */
+static size_t field_offset(const fs_context *c, int row)
+{
+    const struct store *s = &store[row];
+    switch (s->unit) {
+    case U_ACTIVE: return s->offset + (size_t)fs_active_unit(c) * s->stride;
+    case U_CLIENT: return s->offset + (size_t)fs_client_active_unit(c) * s->stride;
+    default: return s->offset;
+    }
+}
+
 static double load(const fs_context *c, int row, int k)
 {
-    const char *p = (const char *)c + store[row].offset;
+    const char *p = (const char *)c + field_offset(c, row);
     switch (store[row].type) {
     case T_B: return ((const bool *)(const void *)p)[k];
     case T_BI: case T_I: return ((const GLint *)(const void *)p)[k];
@@ -152,7 +186,7 @@ bool *fs_state_cap_flag(fs_context *c, GLenum cap, bool client_too, const fs_sta
         return fs_texture_enable_flag(c, cap); /* the texture unit's own flag */
     if (i < 0 || rows[i].cap == FS_CAP_NO || (rows[i].cap == FS_CAP_CLI && !client_too))
         return NULL;
-    return (bool *)(void *)((char *)c + store[i].offset);
+    return (bool *)(void *)((char *)c + field_offset(c, i));
 }
 
 void *fs_state_field(fs_context *c, GLenum pname, uint32_t groups, const fs_state_info **row)
@@ -162,7 +196,7 @@ void *fs_state_field(fs_context *c, GLenum pname, uint32_t groups, const fs_stat
         return NULL;
     if (row)
         *row = &rows[i];
-    return (char *)c + store[i].offset;
+    return (char *)c + field_offset(c, i);
 }
 
 void fs_state_mark(fs_context *c, uint32_t groups) { c->dirty |= groups; }
@@ -174,8 +208,9 @@ void fs_state_mark(fs_context *c, uint32_t groups) { c->dirty |= groups; }
 typedef struct attrib_record {
     uint32_t mask;
     unsigned char *data;
-    /* GL_TEXTURE_BIT / GL_ENABLE_BIT state the texture unit keeps. */
-    bool texture_2d;
+    /* GL_TEXTURE_BIT / GL_ENABLE_BIT state the texture unit keeps: the
+     * enables of every unit's targets, the rest of the texture group. */
+    uint64_t texture_enables;
     fs_texture_attrib texture;
 } attrib_record;
 
@@ -187,6 +222,9 @@ struct fs_attrib_stack {
 
 static bool saved(int i, uint32_t mask) { return (rows[i].groups & mask) && store[i].size; }
 
+/* The bytes a push saves of row i: every texture unit's for a per-unit row. */
+static size_t saved_size(int i) { return store[i].size * (store[i].stride ? FS_MAX_TEXTURE_UNITS : 1); }
+
 /* Copies the rows of the groups in mask from the context into rec (save)
  * or back (restore). */
 static void copy_rows(fs_context *c, attrib_record *rec, bool save)
@@ -195,12 +233,14 @@ static void copy_rows(fs_context *c, attrib_record *rec, bool save)
     for (int i = 0; i < N_ROWS; i++) {
         if (!saved(i, rec->mask))
             continue;
-        char *field = (char *)c + store[i].offset;
-        if (save)
-            memcpy(rec->data + at, field, store[i].size);
-        else
-            memcpy(field, rec->data + at, store[i].size);
-        at += store[i].size;
+        for (int u = 0; u < (store[i].stride ? FS_MAX_TEXTURE_UNITS : 1); u++) {
+            char *field = (char *)c + store[i].offset + (size_t)u * store[i].stride;
+            if (save)
+                memcpy(rec->data + at, field, store[i].size);
+            else
+                memcpy(field, rec->data + at, store[i].size);
+            at += store[i].size;
+        }
     }
 }
 
@@ -209,7 +249,7 @@ static bool push(fs_context *c, attrib_record *rec, uint32_t mask)
     size_t bytes = 0;
     for (int i = 0; i < N_ROWS; i++)
         if (saved(i, mask))
-            bytes += store[i].size;
+            bytes += saved_size(i);
     rec->data = malloc(bytes ? bytes : 1);
     if (!rec->data) {
         fs_error(c, GL_OUT_OF_MEMORY);
@@ -217,7 +257,7 @@ static bool push(fs_context *c, attrib_record *rec, uint32_t mask)
     }
     rec->mask = mask;
     copy_rows(c, rec, true);
-    rec->texture_2d = *fs_texture_enable_flag(c, GL_TEXTURE_2D);
+    rec->texture_enables = fs_texture_enables(c);
     if (mask & GL_TEXTURE_BIT)
         fs_texture_attrib_save(c, &rec->texture);
     return true;
@@ -228,10 +268,8 @@ static void pop(fs_context *c, attrib_record *rec)
     copy_rows(c, rec, false);
     if (rec->mask & GL_TEXTURE_BIT)
         fs_texture_attrib_restore(c, &rec->texture);
-    if (rec->mask & (GL_TEXTURE_BIT | GL_ENABLE_BIT)) {
-        *fs_texture_enable_flag(c, GL_TEXTURE_2D) = rec->texture_2d;
-        fs_texture_enables_changed(c); /* the rasterizer interpolates texture coordinates */
-    }
+    if (rec->mask & (GL_TEXTURE_BIT | GL_ENABLE_BIT))
+        fs_texture_set_enables(c, rec->texture_enables); /* and what the rasterizer interpolates */
     fs_state_mark(c, rec->mask);
     free(rec->data);
     rec->data = NULL;

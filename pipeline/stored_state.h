@@ -1,9 +1,9 @@
 /*
  * State fragsim stores for glGet and glPushAttrib (pipeline/state.def) but
  * does not model yet: what uses it (stippled lines, the accumulation
- * buffer, colour index mode, glDrawPixels' zoom, multisampling, several
- * texture units) is absent or counted as unsupported where it would change
- * the image; fog and the colour sum are modelled.  Each part has the file
+ * buffer, colour index mode, glDrawPixels' zoom, multisampling) is absent
+ * or counted as unsupported where it would change the image; fog and the
+ * colour sum are modelled.  Each part has the file
  * of its commands.
  */
 #ifndef FS_STORED_STATE_H
@@ -50,11 +50,17 @@ typedef struct fs_stored_state {
     bool sample_coverage_invert; /* false */
     /* 3.9, table 6.10: GL_COLOR_SUM (pipeline/color_sum.c). */
     bool color_sum;
-    /* 2.7, table 6.5 (pipeline/texture_select.c): the one texture unit. */
+    /* 2.7, table 6.5 (pipeline/texture_select.c): the units glActiveTexture
+     * and glClientActiveTexture select (read as indices through
+     * fs_active_unit and fs_client_active_unit, vertex_stage.h). */
     GLenum active_texture, client_active_texture; /* GL_TEXTURE0 */
     /* 2.6.2, table 6.5: polygon edges are drawn only in GL_LINE/GL_POINT
      * polygon mode, which is counted as unsupported. */
     bool edge_flag;              /* true */
+    /* 2.7, table 6.5 (pipeline/immediate.c): the current colour index,
+     * kept as the float glIndex gives; the window is RGBA, so it only
+     * answers glGet. */
+    float current_index;         /* 1 */
 } fs_stored_state;
 
 #endif

@@ -108,7 +108,7 @@ void fs_exec_TexCoordPointer(fs_context *c, GLint size, GLenum type, GLsizei str
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    set_array(c, &c->arrays.texcoord, size, type, stride, pointer);
+    set_array(c, &c->arrays.texcoord[fs_client_active_unit(c)], size, type, stride, pointer);
 }
 
 /* GL 1.4's arrays and the edge flag and index arrays, with the errors
@@ -152,7 +152,7 @@ static fs_client_array *array_of(fs_context *c, GLenum array)
     case GL_VERTEX_ARRAY: return &c->arrays.vertex;
     case GL_NORMAL_ARRAY: return &c->arrays.normal;
     case GL_COLOR_ARRAY: return &c->arrays.color;
-    case GL_TEXTURE_COORD_ARRAY: return &c->arrays.texcoord;
+    case GL_TEXTURE_COORD_ARRAY: return &c->arrays.texcoord[fs_client_active_unit(c)];
     case GL_SECONDARY_COLOR_ARRAY: return &c->arrays.secondary_color;
     case GL_FOG_COORDINATE_ARRAY: return &c->arrays.fog_coord;
     case GL_EDGE_FLAG_ARRAY: return &c->arrays.edge_flag;
@@ -262,9 +262,8 @@ static void fetch_positions(const fs_context *c, size_t first, size_t n, fs_iver
     }
 }
 
-/* The secondary colour (its alpha is 1 whatever a size-4 array holds), the
- * fog coordinate and the edge flag from their arrays, else the current
- * values (2.8). */
+/* The secondary colour (its alpha is 1 whatever a size-4 array holds) and
+ * the fog coordinate from their arrays, else the current values (2.8). */
 static void fetch_gl14_attributes(const fs_context *c, size_t i, fs_ivert *o)
 {
     const fs_array_state *A = &c->arrays;
@@ -280,17 +279,19 @@ static void fetch_gl14_attributes(const fs_context *c, size_t i, fs_ivert *o)
         fetch(&A->fog_coord, i, f, false);
         o->fogc = f[0];
     }
-    o->edge = c->st.edge_flag;
-    if (A->edge_flag.enabled) {
-        float e[4];
-        fetch(&A->edge_flag, i, e, false);
-        o->edge = e[0] != 0.0f;
-    }
+}
+
+/* Element i's edge flag from the enabled edge flag array (2.8). */
+static bool array_edge_flag(const fs_context *c, size_t i)
+{
+    float e[4];
+    fetch(&c->arrays.edge_flag, i, e, false);
+    return e[0] != 0.0f;
 }
 
 /* Its other attributes from the enabled arrays, the current values
  * elsewhere. */
-static void fetch_attributes(const fs_context *c, size_t i, fs_ivert *o)
+static void fetch_attributes(const fs_context *c, size_t i, fs_ivert *o, int ntex)
 {
     const fs_array_state *A = &c->arrays;
     if (A->color.enabled) {
@@ -306,12 +307,14 @@ static void fetch_attributes(const fs_context *c, size_t i, fs_ivert *o)
     } else {
         memcpy(o->nrm, c->current.normal, sizeof o->nrm);
     }
-    if (A->texcoord.enabled) {
-        o->tc[0] = o->tc[1] = o->tc[2] = 0.0f;
-        o->tc[3] = 1.0f;
-        fetch(&A->texcoord, i, o->tc, false);
-    } else {
-        memcpy(o->tc, c->current.texcoord, sizeof o->tc);
+    for (int u = 0; u < ntex; u++) {
+        if (A->texcoord[u].enabled) {
+            o->tc[u][0] = o->tc[u][1] = o->tc[u][2] = 0.0f;
+            o->tc[u][3] = 1.0f;
+            fetch(&A->texcoord[u], i, o->tc[u], false);
+        } else {
+            memcpy(o->tc[u], c->current.texcoord[u], sizeof o->tc[u]);
+        }
     }
     fetch_gl14_attributes(c, i, o);
 }
@@ -319,7 +322,7 @@ static void fetch_attributes(const fs_context *c, size_t i, fs_ivert *o)
 static void fetch_vertex(const fs_context *c, size_t i, fs_ivert *o)
 {
     fetch_position(c, i, o);
-    fetch_attributes(c, i, o);
+    fetch_attributes(c, i, o, c->raster.tex_units);
 }
 
 /* ---- transformation ---- */
@@ -329,13 +332,17 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     const float *mv = x->modelview[x->modelview_top].m;
     memcpy(s->mv, mv, sizeof s->mv);
     fs_mat_mul(s->mvp, x->projection[x->projection_top].m, mv);
-    memcpy(s->tex, x->texture[x->texture_top].m, sizeof s->tex);
     float id[16];
     fs_mat_identity(id);
-    s->tex_identity = memcmp(s->tex, id, sizeof id) == 0;
+    s->ntex = c->raster.tex_units;
+    for (int u = 0; u < s->ntex; u++) {
+        memcpy(s->tex[u], x->texture[u][x->texture_top[u]].m, sizeof s->tex[u]);
+        s->tex_identity[u] = memcmp(s->tex[u], id, sizeof id) == 0;
+    }
     fs_viewport_xform(c, s->vp_scale, s->vp_trans);
     s->has_fma = c->raster.has_fma;
     s->has_avx2 = c->raster.has_avx2;
+    s->edge = NULL;
     /* llvmpipe draws OSMesa's buffer y-down: Mesa's state tracker negates the
      * y scale and takes the translation from the framebuffer height. */
     s->yr_scale = -s->vp_scale[1];
@@ -425,10 +432,12 @@ static inline void vs_attributes(const fs_vs_setup *s, const fs_ivert *v, fs_pve
         for (int k = 0; k < 4; k++)
             o->col[0][k] = clamp01(v->col[k]);
     }
-    if (s->tex_identity)
-        memcpy(o->tc, v->tc, sizeof o->tc);
-    else
-        fs_mat_xform4(o->tc, s->tex, v->tc);
+    for (int u = 0; u < s->ntex; u++) {
+        if (s->tex_identity[u])
+            memcpy(o->tc[u], v->tc[u], sizeof o->tc[u]);
+        else
+            fs_mat_xform4(o->tc[u], s->tex[u], v->tc[u]);
+    }
     if (s->fog)
         o->fog = s->fog_from_coord ? fabsf(v->fogc) : vs_fog_coord(s, v);
     if (s->color_sum && !s->lighting)
@@ -462,7 +471,7 @@ void fs_vs_attributes(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pver
 {
     const fs_vs_impl *v = fs_vs(c);
     if (v->deferred)
-        fetch_attributes(c, v->src_indices ? index_at(v->src_indices, v->src_type, k) : v->src_first + k, &iv[k]);
+        fetch_attributes(c, v->src_indices ? index_at(v->src_indices, v->src_type, k) : v->src_first + k, &iv[k], s->ntex);
     vs_attributes(s, &iv[k], &pv[k]);
     pv[k].lazy = false;
 }
@@ -527,8 +536,8 @@ __attribute__((target("avx2,fma"))) static inline __m256i xform_mask8(const __m2
  * are false on NaN, as C's), so every bit is the same as one at a time.
  * b: the batch's bounds, for the tile mask.  Under a tile mask most
  * batches need only this pass, which was then a third of the run's time. */
-__attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out,
-                                                                 size_t n, vs_bounds *b)
+__attribute__((target("avx2,fma"), always_inline)) static inline size_t
+vs_positions8_core(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n, vs_bounds *b, const bool bounds)
 {
     enum { STRIDE = sizeof(fs_ivert) / sizeof(float) };
     _Static_assert(sizeof(fs_ivert) % sizeof(float) == 0, "fs_ivert is floats");
@@ -543,8 +552,8 @@ __attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setu
     const __m256 sy = _mm256_set1_ps(s->vp_scale[1]), ty = _mm256_set1_ps(s->vp_trans[1]);
     const __m256 sz = _mm256_set1_ps(s->vp_scale[2]), tz = _mm256_set1_ps(s->vp_trans[2]);
     const __m256 sr = _mm256_set1_ps(s->yr_scale), tr = _mm256_set1_ps(s->yr_trans);
-    __m256 x0 = _mm256_set1_ps(b->x0), x1 = _mm256_set1_ps(b->x1);
-    __m256 y0 = _mm256_set1_ps(b->y0), y1 = _mm256_set1_ps(b->y1);
+    __m256 x0 = _mm256_set1_ps(bounds ? b->x0 : 0), x1 = _mm256_set1_ps(bounds ? b->x1 : 0);
+    __m256 y0 = _mm256_set1_ps(bounds ? b->y0 : 0), y1 = _mm256_set1_ps(bounds ? b->y1 : 0);
     __m256i any = _mm256_setzero_si256(), all = _mm256_set1_epi32(-1);
     size_t k = 0;
     for (; k + 8 <= n; k += 8) {
@@ -558,13 +567,14 @@ __attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setu
         const __m256 wy = _mm256_fmadd_ps(_mm256_mul_ps(c[1], iw), sy, ty);
         const __m256 wz = _mm256_fmadd_ps(_mm256_mul_ps(c[2], iw), sz, tz);
         const __m256 wr = _mm256_fmadd_ps(_mm256_mul_ps(c[1], iw), sr, tr);
-        /* bounds_add, lane by lane */
-        any = _mm256_or_si256(any, mk);
-        all = _mm256_and_si256(all, mk);
-        x0 = _mm256_blendv_ps(x0, wx, _mm256_cmp_ps(wx, x0, _CMP_LT_OQ));
-        x1 = _mm256_blendv_ps(x1, wx, _mm256_cmp_ps(wx, x1, _CMP_GT_OQ));
-        y0 = _mm256_blendv_ps(y0, wy, _mm256_cmp_ps(wy, y0, _CMP_LT_OQ));
-        y1 = _mm256_blendv_ps(y1, wy, _mm256_cmp_ps(wy, y1, _CMP_GT_OQ));
+        if (bounds) { /* bounds_add, lane by lane */
+            any = _mm256_or_si256(any, mk);
+            all = _mm256_and_si256(all, mk);
+            x0 = _mm256_blendv_ps(x0, wx, _mm256_cmp_ps(wx, x0, _CMP_LT_OQ));
+            x1 = _mm256_blendv_ps(x1, wx, _mm256_cmp_ps(wx, x1, _CMP_GT_OQ));
+            y0 = _mm256_blendv_ps(y0, wy, _mm256_cmp_ps(wy, y0, _CMP_LT_OQ));
+            y1 = _mm256_blendv_ps(y1, wy, _mm256_cmp_ps(wy, y1, _CMP_GT_OQ));
+        }
         /* Rows clip[0..3], win[0..3] to one 8-float store per vertex. */
         const __m256 t0 = _mm256_unpacklo_ps(c[0], c[1]), t1 = _mm256_unpackhi_ps(c[0], c[1]);
         const __m256 t2 = _mm256_unpacklo_ps(c[2], c[3]), t3 = _mm256_unpackhi_ps(c[2], c[3]);
@@ -587,6 +597,8 @@ __attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setu
             out[k + (size_t)j].mask = mm[j];
         }
     }
+    if (!bounds)
+        return k;
     float bx0[8], bx1[8], by0[8], by1[8];
     uint32_t ba[8], bl[8];
     _mm256_storeu_ps(bx0, x0);
@@ -608,6 +620,20 @@ __attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setu
     }
     return k;
 }
+
+/* The two instances: with the batch's bounds for a tile mask, and without
+ * for the plain functional run, which has no use for them. */
+__attribute__((target("avx2,fma"))) static size_t vs_positions8_bounded(const fs_vs_setup *s, const fs_ivert *in,
+                                                                        fs_pvert *out, size_t n, vs_bounds *b)
+{
+    return vs_positions8_core(s, in, out, n, b, true);
+}
+
+__attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out,
+                                                                 size_t n)
+{
+    return vs_positions8_core(s, in, out, n, NULL, false);
+}
 #endif
 
 static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n,
@@ -616,9 +642,8 @@ static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *
     if (!tiles) {
         size_t i = 0;
 #if FS_VS_HAVE_FMA
-        vs_bounds unused = {0, 0, 0, 0, 0, 0};
         if (s->has_avx2)
-            i = vs_positions8(s, in, out, n, &unused);
+            i = vs_positions8(s, in, out, n);
 #endif
         for (; i < n; i++)
             vs_position(s, &in[i], &out[i]);
@@ -637,7 +662,7 @@ static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *
     size_t i = 0;
 #if FS_VS_HAVE_FMA
     if (s->has_avx2)
-        i = vs_positions8(s, in, out, n, &b);
+        i = vs_positions8_bounded(s, in, out, n, &b);
 #endif
     for (; i < n; i++) {
         vs_position(s, &in[i], &out[i]);
@@ -653,7 +678,7 @@ static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *
          * away outside the mask. */
         if (!need) {
             memset(out[i].col, 0, sizeof out[i].col);
-            memset(out[i].tc, 0, sizeof out[i].tc);
+            memset(out[i].tc, 0, (size_t)s->ntex * sizeof out[i].tc[0]);
             out[i].fog = 0.0f;
             memset(out[i].col2, 0, sizeof out[i].col2);
         }
@@ -686,7 +711,7 @@ const fs_tile_mask *fs_vs_tile_mask(const fs_context *c, GLenum mode)
     if (mode < GL_TRIANGLES || mode > GL_POLYGON)
         return NULL;
     const fs_tile_mask *t = fs_tile_mask_active(c);
-    if (!t || c->raster.polygon_mode[0] != GL_FILL || c->raster.polygon_mode[1] != GL_FILL)
+    if (!t || fs_render_mode_diverts(&c->rmode) || c->raster.polygon_mode[0] != GL_FILL || c->raster.polygon_mode[1] != GL_FILL)
         return NULL;
     return t;
 }
@@ -704,13 +729,16 @@ void fs_exec_ArrayElement(fs_context *c, GLint i)
     fs_ivert v;
     if (c->arrays.vertex.enabled)
         fetch_position(c, (size_t)i, &v);
-    fetch_attributes(c, (size_t)i, &v);
+    fetch_attributes(c, (size_t)i, &v, FS_MAX_TEXTURE_UNITS);
     if (c->arrays.color.enabled) fs_exec_Color4fv(c, v.col);
     if (c->arrays.normal.enabled) fs_exec_Normal3fv(c, v.nrm);
-    if (c->arrays.texcoord.enabled) memcpy(c->current.texcoord, v.tc, sizeof v.tc);
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
+        if (c->arrays.texcoord[u].enabled)
+            memcpy(c->current.texcoord[u], v.tc[u], sizeof v.tc[u]);
     if (c->arrays.secondary_color.enabled) memcpy(c->current.secondary_color, v.col2, sizeof v.col2);
     if (c->arrays.fog_coord.enabled) c->current.fog_coord = v.fogc;
-    if (c->arrays.edge_flag.enabled) c->st.edge_flag = v.edge;
+    /* Through glEdgeFlag, so the batch's vertices keep their flags (immediate.c). */
+    if (c->arrays.edge_flag.enabled) fs_exec_EdgeFlag(c, array_edge_flag(c, (size_t)i));
     if (c->arrays.vertex.enabled) fs_exec_Vertex4fv(c, v.obj);
 }
 
@@ -723,6 +751,20 @@ static void draw_batch(fs_context *c, GLenum mode, size_t n, const uint32_t *idx
         return;
     }
     fs_vs_prepare(c, &v->setup);
+    if (c->arrays.edge_flag.enabled) {
+        /* The batch vertices' edge flags from the array (GL 1.5 spec 2.6.2,
+         * 2.8): batch vertex k is element src_indices[k] or src_first + k
+         * (defer_from). */
+        if (!fs_vs_reserve_edge(c, n)) {
+            v->deferred = false;
+            fs_error(c, GL_OUT_OF_MEMORY);
+            return;
+        }
+        for (size_t k = 0; k < n; k++)
+            v->iv_edge[k] = array_edge_flag(c, v->src_indices ? index_at(v->src_indices, v->src_type, k)
+                                                              : v->src_first + k);
+        v->setup.edge = v->iv_edge;
+    }
     bool lazy = fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_mask(c, mode));
     fs_prim_draw(c, &v->setup, mode, v->pv, lazy ? v->iv : NULL, idx, count, elements);
     v->deferred = false;

@@ -15,7 +15,11 @@
 
 /* Colour components of each type as floats (GL 1.5 spec table 2.9). */
 #define UB2F(x) ((float)(x) / 255.0f)
-#define B2F(x) ((2.0f * (float)(x) + 1.0f) / 255.0f)
+/* Signed bytes are scaled by the float nearest 1/255, not divided by 255:
+ * the two differ in the last bit for about a third of the values, and
+ * OSMesa's current colour and normal are the product (measured,
+ * tests/test_gl_forms.c: 100 gives 0.788235366, not 0.788235307). */
+#define B2F(x) ((2.0f * (float)(x) + 1.0f) * (1.0f / 255.0f))
 #define US2F(x) ((float)(x) / 65535.0f)
 #define S2F(x) ((2.0f * (float)(x) + 1.0f) / 65535.0f)
 #define UI2F(x) ((float)((double)(x) / 4294967295.0))
@@ -40,12 +44,11 @@ typedef struct fs_ivert {
     float obj[4];
     float col[4];
     float nrm[3];
-    float tc[4];
-    /* GL 1.4 (2.7): the secondary colour (alpha 1) and the fog coordinate;
-     * and the edge flag (2.6.2), which polygon mode GL_LINE/GL_POINT reads. */
+    float tc[FS_MAX_TEXTURE_UNITS][4]; /* the first fs_vs_setup.ntex units are set */
+    /* GL 1.4 (2.7): the secondary colour (alpha 1) and the fog coordinate.
+     * (The edge flag, 2.6.2, is fs_vs_setup.edge's.) */
     float col2[4];
     float fogc;
-    bool edge;
 } fs_ivert;
 
 /* A vertex after transformation and lighting. */
@@ -54,7 +57,7 @@ typedef struct fs_pvert {
     float win[5];     /* x, y, z in window space, 1/w, and y in llvmpipe's y-down frame
                          (fs_rvertex.y_raster); valid when mask == 0 */
     float col[2][4];  /* front and back colour, clamped */
-    float tc[4];
+    float tc[FS_MAX_TEXTURE_UNITS][4]; /* the first fs_vs_setup.ntex units */
     /* Fog (GL 1.5 spec 3.10), set while GL_FOG is enabled (fs_vs_setup.fog):
      * the fog coordinate c, |z_e| or the vertex's fog coordinate. */
     float fog;
@@ -85,8 +88,12 @@ typedef struct fs_vs_setup {
     bool has_fma;       /* the CPU has FMA: fs_vs_process's FMA variant */
     bool has_avx2;      /* ... and AVX2: positions 8 at a time */
     bool nmat_valid;
-    float tex[16];
-    bool tex_identity;
+    /* The texture units whose coordinates are carried: 1 + the highest
+     * enabled unit, at least 1 (fs_raster_state.tex_units), and each one's
+     * texture matrix (2.10.2). */
+    int ntex;
+    float tex[FS_MAX_TEXTURE_UNITS][16];
+    bool tex_identity[FS_MAX_TEXTURE_UNITS];
     float vp_scale[3], vp_trans[3];
     float yr_scale, yr_trans; /* viewport y in llvmpipe's y-down frame */
     /* lighting */
@@ -106,6 +113,10 @@ typedef struct fs_vs_setup {
      * GL_SEPARATE_SPECULAR_COLOR; each vertex gets fs_pvert.col2. */
     bool color_sum;
     bool separate_specular; /* lighting's specular term goes to col2 (2.14.1) */
+    /* Per-draw input: the batch vertices' edge flags (GL 1.5 spec 2.6.2),
+     * or NULL when every vertex has the current edge flag.  Reset by
+     * fs_vs_prepare. */
+    const uint8_t *edge;
 } fs_vs_setup;
 
 /* The material from batch vertex `start` on, after a glMaterial between
@@ -119,6 +130,13 @@ typedef struct fs_mat_seg {
 typedef struct fs_vs_impl {
     fs_ivert *iv;
     size_t iv_n, iv_cap;
+    /* Immediate mode: each batch vertex's edge flag, kept only once one
+     * of them is false (NULL edges until then: all true).  An array draw
+     * with the edge flag array enabled fills it from the array
+     * (vertex_array.c), as no immediate batch is open then. */
+    uint8_t *iv_edge;
+    size_t iv_edge_cap;
+    bool iv_edge_used;
     /* glMaterial between Begin and End (GL 1.5 spec 2.6.3) applies to the
      * vertices that follow: the materials of the batch, in order (none
      * when the primitive changed no material). */
@@ -148,6 +166,7 @@ static inline fs_vs_impl *fs_vs(fs_context *c) { return (fs_vs_impl *)c->prim.im
 bool fs_vs_reserve_iv(fs_context *c, size_t n);
 bool fs_vs_reserve_pv(fs_context *c, size_t n);
 bool fs_vs_reserve_idx(fs_context *c, size_t n);
+bool fs_vs_reserve_edge(fs_context *c, size_t n); /* iv_edge */
 
 /* matrix.c */
 void fs_mat_identity(float m[16]);
@@ -208,13 +227,18 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
 bool fs_prim_mode_valid(GLenum mode);
 /* clip.c */
 unsigned fs_clip_mask(const float clip[4]);
+/* edges: 0 for the triangle setup's route; on the draw module's
+ * (FS_EDGES_ROUTE set, rasterizer.h) bits 0-2 the triangle's boundary
+ * edges (edge i from vertex i to vertex i+1 mod 3, as the primitive's
+ * decomposition gives them) and bits 3-5 the three vertices' edge flags
+ * (GL 1.5 spec 2.6.2). */
 void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
-                      const fs_pvert *v1, const fs_pvert *v2, int provoking);
+                      const fs_pvert *v1, const fs_pvert *v2, int provoking, unsigned edges);
 void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1);
 /* Emits an unclipped triangle (all masks zero). provoking: index 0..2 of the
  * vertex whose colour flat shading uses, or -1 for smooth shading. */
 void fs_emit_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
-                      const fs_pvert *v1, const fs_pvert *v2, int provoking);
+                      const fs_pvert *v1, const fs_pvert *v2, int provoking, unsigned edges);
 void fs_emit_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1);
 void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v);
 /* The executors of the current attributes (immediate.c; prototypes as the
@@ -223,4 +247,7 @@ void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v);
 void fs_exec_Color4fv(fs_context *c, const GLfloat *v);
 void fs_exec_Normal3fv(fs_context *c, const GLfloat *v);
 void fs_exec_Vertex4fv(fs_context *c, const GLfloat *v);
+void fs_exec_EdgeFlag(fs_context *c, GLboolean flag);
+/* Sets the current texture coordinates of a unit (immediate.c). */
+void fs_current_texcoord(fs_context *c, int unit, float s, float t, float r, float q);
 #endif

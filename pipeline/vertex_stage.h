@@ -27,8 +27,11 @@ typedef struct fs_transform_state {
     GLenum matrix_mode;
     fs_matrix modelview[FS_MODELVIEW_STACK_DEPTH];
     fs_matrix projection[FS_PROJECTION_STACK_DEPTH];
-    fs_matrix texture[FS_TEXTURE_STACK_DEPTH];
-    int modelview_top, projection_top, texture_top; /* index of the current matrix */
+    /* One texture matrix stack per texture unit (GL 1.5 spec 2.10.2);
+     * glMatrixMode(GL_TEXTURE) selects the active unit's. */
+    fs_matrix texture[FS_MAX_TEXTURE_UNITS][FS_TEXTURE_STACK_DEPTH];
+    int modelview_top, projection_top; /* index of the current matrix */
+    int texture_top[FS_MAX_TEXTURE_UNITS];
     GLint viewport[4];       /* the framebuffer size until glViewport (see viewport_set) */
     bool viewport_set;       /* glViewport called; before that the first draw
                               * takes the framebuffer size, as OSMesa's first
@@ -64,7 +67,8 @@ typedef struct fs_lighting_state {
 } fs_lighting_state;
 
 typedef struct fs_current_state {
-    float color[4], normal[3], texcoord[4];
+    float color[4], normal[3];
+    float texcoord[FS_MAX_TEXTURE_UNITS][4]; /* per texture unit (2.7) */
     /* GL 1.4's attributes (2.7; pipeline/color_sum.c, pipeline/fog.c): the
      * secondary colour (0, 0, 0, 1), set as r, g, b with alpha 1, and the
      * fog coordinate (0); neither clamped when set. */
@@ -87,10 +91,13 @@ typedef struct fs_client_array {
 } fs_client_array;
 
 typedef struct fs_array_state {
-    fs_client_array vertex, normal, color, texcoord;
+    fs_client_array vertex, normal, color;
+    /* One texture coordinate array per texture unit, the one
+     * glClientActiveTexture selects taking glTexCoordPointer (2.8). */
+    fs_client_array texcoord[FS_MAX_TEXTURE_UNITS];
     /* GL 1.4's arrays and the edge flag and colour index arrays (2.8):
-     * secondary colour and fog coordinate are fetched; the edge flag is
-     * stored (polygon mode LINE reads it) and the index, which an RGBA
+     * secondary colour, fog coordinate and edge flag are fetched (polygon
+     * mode GL_LINE/GL_POINT reads the edge flag); the index, which an RGBA
      * context ignores, only answers glGet. */
     fs_client_array secondary_color, fog_coord, edge_flag, index;
     /* GL_ARRAY_BUFFER_BINDING, GL_ELEMENT_ARRAY_BUFFER_BINDING (2.9),
@@ -100,14 +107,27 @@ typedef struct fs_array_state {
 
 /* The client arrays in one fixed order, for code that treats them alike
  * (replayed array data, buffer offsets, display-list snapshots, capture):
- * vertex, normal, colour, texture coordinates, secondary colour, fog
- * coordinate, edge flag, index. */
-#define FS_ARRAY_SLOTS 8
-static inline fs_client_array *fs_array_slot(fs_array_state *a, int slot)
+ * vertex, normal, colour, each unit's texture coordinates, secondary
+ * colour, fog coordinate, edge flag, index. */
+#define FS_CLIENT_ARRAYS (7 + FS_MAX_TEXTURE_UNITS)
+static inline fs_client_array *fs_client_array_at(fs_array_state *A, int k)
 {
-    fs_client_array *const s[FS_ARRAY_SLOTS] = {&a->vertex, &a->normal, &a->color, &a->texcoord,
-                                                &a->secondary_color, &a->fog_coord, &a->edge_flag, &a->index};
-    return s[slot];
+    if (k < 3)
+        return k == 0 ? &A->vertex : k == 1 ? &A->normal : &A->color;
+    if (k < 3 + FS_MAX_TEXTURE_UNITS)
+        return &A->texcoord[k - 3];
+    fs_client_array *const s[4] = {&A->secondary_color, &A->fog_coord, &A->edge_flag, &A->index};
+    return s[k - 3 - FS_MAX_TEXTURE_UNITS];
+}
+
+/* The array a pointer call of fs_pointer_slot's slot (vertex, normal,
+ * colour, texture coordinates, secondary colour, fog coordinate, edge
+ * flag, index: FS_ARRAY_SLOTS of them) sets, as an index of
+ * fs_client_array_at: a texture coordinate pointer is the unit's (2.8). */
+#define FS_ARRAY_SLOTS 8
+static inline int fs_array_of_slot(int slot, int unit)
+{
+    return slot < 3 ? slot : slot == 3 ? 3 + unit : slot - 1 + FS_MAX_TEXTURE_UNITS;
 }
 
 /* Immediate-mode primitive assembly state; the vertex agent owns its fields. */
@@ -131,6 +151,11 @@ void fs_vertex_stage_free(fs_context *c);
 
 /* Helpers shared with the driver (glGet, glEnable(GL_COLOR_MATERIAL)). */
 const fs_matrix *fs_current_matrix(const fs_context *c, GLenum mode);
+/* The active texture unit (glActiveTexture) and the client one
+ * (glClientActiveTexture) as indices 0 .. FS_MAX_TEXTURE_UNITS - 1
+ * (pipeline/texture_select.c). */
+int fs_active_unit(const fs_context *c);
+int fs_client_active_unit(const fs_context *c);
 /* Copies the current colour into the material properties that track it
  * (GL 1.5 spec 2.14.3); called on glColor and on enabling GL_COLOR_MATERIAL. */
 void fs_color_material_update(fs_context *c);

@@ -31,6 +31,10 @@ int fs_cycle_config_check(const fs_cycle_config *cfg, char *err, size_t errlen)
             return -1;
         }
     }
+    if (cfg->readback_ps_per_byte != 0 && cfg->clock_khz == 0) {
+        snprintf(err, errlen, "readback.ps_per_byte: a time per byte needs clock.khz to become cycles");
+        return -1;
+    }
     if (cfg->texture_cache_bytes != 0 &&
         cfg->texture_cache_line_bytes * cfg->texture_cache_ways > cfg->texture_cache_bytes) {
         snprintf(err, errlen, "texture.cache_ways: %ld ways of %ld-byte lines do not fit in texture.cache_bytes = %ld",

@@ -273,6 +273,7 @@ bool fs_cyc_frame_simulated(const fs_cycle *cy, uint64_t f);
 uint64_t fs_cyc_front_end_per_triangle(const fs_cycle_config *cfg, GLenum mode, size_t n); /* 1/256 cycles */
 uint64_t fs_cyc_front_end_cycles(const fs_cycle_config *cfg, size_t vertices);
 uint64_t fs_cyc_setup_cycles(const fs_cycle_config *cfg);
+uint64_t fs_cyc_readback_cycles(const fs_cycle_config *cfg, uint64_t bytes);
 uint64_t fs_cyc_raster_cycles(const fs_cycle_config *cfg, unsigned fragments);
 int fs_cyc_route(const fs_cycle *cy, int x, int y);     /* image engine of a pixel */
 int fs_cyc_texture_init(fs_cycle *cy, char *err, size_t errlen);

@@ -517,7 +517,26 @@ void fs_cycle_read_pixels(void *user, fs_context *c, uint64_t bytes)
     fs_cyc_mem *m = cy->fbmem;
     uint64_t ready = fs_cyc_mem_reserve(m, t, bytes) + m->latency;
     cy->acc.fb_bytes += bytes;
+    if (cy->cfg.readback_ps_per_byte > 0)
+        ready = t + fs_cyc_readback_cycles(&cy->cfg, bytes);
+    cy->acc.readback_cycles += ready - t;
     wait_until(cy, ready);
+}
+
+/* The calibrated read-back: the read path's setup and a time per byte,
+ * faster for the first readback.fast_bytes (Huettner 1999, footnote 5 of
+ * 3.1.10 gives two read sizes per machine: configs/o2.ini and
+ * infinite_reality.ini say how their keys follow from them).  Exact in
+ * 128-bit integers, rounded up to whole cycles. */
+uint64_t fs_cyc_readback_cycles(const fs_cycle_config *cfg, uint64_t bytes)
+{
+    uint64_t fast = bytes < (uint64_t)cfg->readback_fast_bytes ? bytes : (uint64_t)cfg->readback_fast_bytes;
+    unsigned __int128 ps = (unsigned __int128)cfg->readback_setup_ns * 1000u +
+                           (unsigned __int128)fast * (uint64_t)cfg->readback_fast_ps_per_byte +
+                           (unsigned __int128)(bytes - fast) * (uint64_t)cfg->readback_ps_per_byte;
+    /* cycles = ps * kHz / 10^9, rounded up */
+    unsigned __int128 c = (ps * (uint64_t)cfg->clock_khz + 999999999u) / 1000000000u;
+    return c > UINT64_MAX / 2 ? UINT64_MAX / 2 : (uint64_t)c;
 }
 
 void fs_cycle_render_mode(void *user, fs_context *c, GLenum mode)

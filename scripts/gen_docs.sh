@@ -14,6 +14,28 @@ BUILD=${1:-build}
     echo '```'
     "$BUILD/fragsim" config --list
     echo '```'
+    # Where each value of the machine configurations comes from: the
+    # comment above each key in the INI file (tests/cli_cycle.sh checks
+    # that every key has one saying source, assumed or chosen).
+    for ini in configs/o2.ini configs/infinite_reality.ini; do
+        echo
+        echo "## $ini: where the values come from"
+        echo
+        awk '/^\[/ { exit } /^;/ { t = $0; sub(/^; ?/, "", t); print t }' "$ini"
+        echo
+        echo "| key | value | from |"
+        echo "|---|---|---|"
+        awk '
+            /^\[/ { sec = substr($0, 2, index($0, "]") - 2); why = ""; next }
+            /^;/ { if (sec != "") { t = $0; sub(/^; ?/, "", t); why = why (why == "" ? "" : " ") t }; next }
+            /^[a-z_]+ *=/ {
+                k = $0; sub(/ *=.*/, "", k); v = $0; sub(/^[^=]*= */, "", v)
+                if (why != "") last = why
+                printf "| %s.%s | %s | %s |\n", sec, k, v, last
+                why = ""
+            }
+            /^$/ { why = "" }' "$ini"
+    done
 } >docs/config.md
 {
     echo "# Statistics"

@@ -92,6 +92,31 @@ test_default_ini() {
     diff "$WORK/d1/stats.json" "$WORK/d2/stats.json" >/dev/null || fail "default.ini is not the defaults"
 }
 
+# Every key of the machine configurations says where its value comes from
+# (issue 21: sourced, or labelled assumed), in the comment above it; and
+# docs/config.md's tables of them are current.
+test_config_sources() {
+    local ini
+    for ini in "$ROOT/configs/o2.ini" "$ROOT/configs/infinite_reality.ini"; do
+        # (keys right below one another share the comment above the first)
+        awk '/^;/ { c = c " " $0; next }
+             /^[a-z_]+ *=/ { if (c == "") c = last
+                             if (c !~ /(source|assumed|chosen)/) { print FILENAME ": " $0; bad = 1 }
+                             last = c; c = ""; next }
+             { c = ""; last = "" }
+             END { exit bad }' "$ini" || fail "a key without its source or 'assumed' above it"
+        local name; name=$(basename "$ini")
+        awk -v f="configs/$name" '$0 == "## " f ": where the values come from" { found = 1 } END { exit !found }' \
+            "$ROOT/docs/config.md" || fail "docs/config.md has no table for $name (scripts/gen_docs.sh)"
+        # each key's row carries the INI's value
+        awk '/^\[/ { sec = substr($0, 2, index($0, "]") - 2) } /^[a-z_]+ *=/ { k = $0; sub(/ *=.*/, "", k)
+             v = $0; sub(/^[^=]*= */, "", v); print "| " sec "." k " | " v " |" }' "$ini" >"$WORK/rows"
+        while IFS= read -r row; do
+            grep -qF "$row" "$ROOT/docs/config.md" || fail "docs/config.md is stale for $name: no row '$row'"
+        done <"$WORK/rows"
+    done
+}
+
 test_stats_list() {
     "$FRAGSIM" stats --list >"$WORK/l" || fail "stats --list failed"
     for k in cycles fragment_busy occlusion_stalled texture_idle raster_fifo_hwm tex_cache_hit_permille query_latency; do
@@ -143,6 +168,7 @@ run_test test_cycle_identical_o2
 run_test test_cycle_identical_ir
 run_test test_config_errors
 run_test test_default_ini
+run_test test_config_sources
 run_test test_stats_list
 run_test test_sampled_error
 finish

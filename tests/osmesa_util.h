@@ -24,6 +24,20 @@
 #define G(name, ...) do { if (c) fsgl##name(c, __VA_ARGS__); else gl##name(__VA_ARGS__); } while (0)
 #define G0(name) do { if (c) fsgl##name(c); else gl##name(); } while (0)
 #define GR(name, ...) (c ? fsgl##name(c, __VA_ARGS__) : gl##name(__VA_ARGS__))
+/* GA(DECL, Name, NARGS, (KIND, name, count)...): G with the arguments of a
+ * gl_commands*.def row, each declared first as a local a0, a1, ... by
+ * DECL(k, KIND, name, count) (so they are drawn in order) and then passed. */
+#define GA_USE_(k, kind, name, cnt) , a##k
+#define GA_DROP1_(...) GA_DROP1__(__VA_ARGS__)
+#define GA_DROP1__(empty, ...) __VA_ARGS__
+#define GA(decl, name, nargs, ...)                                              \
+    do {                                                                        \
+        FS_MAP(nargs, decl, __VA_ARGS__)                                        \
+        if (c)                                                                  \
+            fsgl##name(c FS_MAP(nargs, GA_USE_, __VA_ARGS__));                  \
+        else                                                                    \
+            gl##name(GA_DROP1_(FS_MAP(nargs, GA_USE_, __VA_ARGS__)));           \
+    } while (0)
 
 typedef struct osm {
     OSMesaContext ctx;
@@ -70,6 +84,16 @@ static inline void img_compare(const uint8_t *a, const uint8_t *b, long n, img_d
         d->differ_gt1 += m > 1;
         d->maxd = m > d->maxd ? m : d->maxd;
     }
+}
+
+/* Pixels of an RGBA8 image of n pixels whose colour is not black (that a
+ * comparison drew something at all). */
+static inline long img_lit_pixels(const uint8_t *rgba, long n)
+{
+    long lit = 0;
+    for (long i = 0; i < n; i++)
+        lit += (rgba[i * 4] | rgba[i * 4 + 1] | rgba[i * 4 + 2]) != 0;
+    return lit;
 }
 
 /* One drawing on both: draw(NULL, ...) on a new OSMesa context, then

@@ -633,7 +633,79 @@ TEST(draw_sample_fill_keeps_sampled_tiles_exact)
     fs_context_destroy(cs);
 }
 
+
+/* Huettner 1999, footnote 5 of 3.1.10: reading a 500x500 buffer takes
+ * 0.0254 s on an O2 and 0.00322 s on an InfiniteReality; a 100x100 one
+ * 2.1294e-05 s and 0.0001762 s.  The virtual occlusion buffer read is of
+ * the stencil buffer (3.2), one byte per pixel.  configs/o2.ini and
+ * infinite_reality.ini reproduce the four times: glReadPixels of the
+ * stencil, its read-back cycles at the config's clock, within 0.05%. */
+TEST(readback_reproduces_footnote_5)
+{
+    static const struct { const char *ini; int side; double seconds; } want[] = {
+        {"configs/o2.ini", 500, 0.0254},
+        {"configs/o2.ini", 100, 2.1294e-05},
+        {"configs/infinite_reality.ini", 500, 0.00322},
+        {"configs/infinite_reality.ini", 100, 0.0001762},
+    };
+    static uint8_t img[500 * 500];
+    for (size_t k = 0; k < sizeof want / sizeof want[0]; k++) {
+        fs_run_config cfg;
+        char err[512];
+        fs_run_config_defaults(&cfg);
+        if (fs_run_config_load(&cfg, want[k].ini, err, sizeof err) != 0)
+            SKIP("configs/ not found (run from the repository root)");
+        REQUIRE(fs_run_config_check(&cfg, err, sizeof err) == 0);
+        REQUIRE(cfg.cycle.clock_khz > 0 && cfg.cycle.readback_ps_per_byte > 0);
+        fs_cycle *cy;
+        fs_context *c = new_context_sized(&cfg, 512, &cy, FS_CYCLE_FULL);
+        REQUIRE(cy != NULL);
+        fsglReadPixels(c, 0, 0, want[k].side, want[k].side, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, img);
+        CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+        fs_cycle_stats st;
+        fs_cycle_totals(cy, &st);
+        double sec = (double)st.readback_cycles / ((double)cfg.cycle.clock_khz * 1000.0);
+        printf("    %s, %dx%d: %llu cycles, %.7g s (dissertation %.7g s)\n", want[k].ini, want[k].side, want[k].side,
+               (unsigned long long)st.readback_cycles, sec, want[k].seconds);
+        CHECK(fabs(sec / want[k].seconds - 1.0) < 0.0005);
+        fs_cycle_destroy(cy);
+        fs_context_destroy(c);
+    }
+}
+
+/* The calibrated cost in closed form: setup, the fast bytes, the rest;
+ * rounded up to whole cycles; the key without a clock is refused. */
+TEST(readback_closed_form)
+{
+    fs_cycle_config cfg;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.clock_khz = 100000; /* 100 MHz: 10 ns per cycle */
+    cfg.readback_setup_ns = 1000;
+    cfg.readback_fast_bytes = 100;
+    cfg.readback_fast_ps_per_byte = 1000;
+    cfg.readback_ps_per_byte = 20000;
+    /* 1000 ns + 50 ns = 105 cycles; 1000 + 100 + 2 * 20 ns = 114 cycles */
+    CHECK_EQ_UINT(fs_cyc_readback_cycles(&cfg, 50), 105);
+    CHECK_EQ_UINT(fs_cyc_readback_cycles(&cfg, 102), 114);
+    CHECK_EQ_UINT(fs_cyc_readback_cycles(&cfg, 0), 100);
+    cfg.readback_setup_ns = 1; /* 0.1 cycle rounds up to 1 */
+    cfg.readback_fast_bytes = 0;
+    CHECK_EQ_UINT(fs_cyc_readback_cycles(&cfg, 0), 1);
+    /* 2^40 bytes at 10^9 ps each at 10 GHz: no overflow, saturates */
+    cfg.clock_khz = 10000000;
+    cfg.readback_ps_per_byte = 1000000000;
+    CHECK(fs_cyc_readback_cycles(&cfg, (uint64_t)1 << 40) > ((uint64_t)1 << 60));
+    fs_run_config rc;
+    char err[256];
+    fs_run_config_defaults(&rc);
+    rc.cycle.readback_ps_per_byte = 5;
+    CHECK(fs_run_config_check(&rc, err, sizeof err) != 0);
+    CHECK(strstr(err, "clock.khz") != NULL);
+}
+
 TEST_LIST = {
+    TEST_ENTRY(readback_reproduces_footnote_5),
+    TEST_ENTRY(readback_closed_form),
     TEST_ENTRY(single_stage_closed_form),
     TEST_ENTRY(two_stage_bottleneck),
     TEST_ENTRY(fifo_high_water_mark),

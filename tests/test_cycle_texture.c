@@ -104,7 +104,7 @@ static fs_context *texture_5(int w, int h, uint32_t seed, GLenum min, GLenum wra
     fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)min);
     fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, (GLint)wrap_s);
     fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, (GLint)wrap_t);
-    if (fsglGetError(c) != GL_NO_ERROR || !fs_tex_complete(c->texture->bound)) {
+    if (fsglGetError(c) != GL_NO_ERROR || !fs_tex_complete(fs_tex_bound_2d(c))) {
         fs_context_destroy(c);
         return NULL;
     }
@@ -116,7 +116,7 @@ TEST(footprint_texels_brute_force)
     /* A non-square texture, REPEAT in s and CLAMP_TO_EDGE in t. */
     fs_context *c = texture_5(128, 32, 11, GL_LINEAR_MIPMAP_LINEAR, GL_REPEAT, GL_CLAMP_TO_EDGE);
     REQUIRE(c);
-    fs_tex_object *t = c->texture->bound;
+    fs_tex_object *t = fs_tex_bound_2d(c);
     fs_mip_view mv;
     memset(&mv, 0, sizeof mv);
     mv.levels = t->last_level + 1;
@@ -457,7 +457,7 @@ TEST(texture_layout_queries)
 {
     fs_context *c = texture_5(16, 4, 3, GL_NEAREST_MIPMAP_NEAREST, GL_REPEAT, GL_CLAMP);
     REQUIRE(c);
-    const fs_tex_object *t = c->texture->bound;
+    const fs_tex_object *t = fs_tex_bound_2d(c);
     CHECK_EQ_UINT(fs_tex_object_name(t), 5);
     static const int want[6][2] = {{16, 4}, {8, 2}, {4, 1}, {2, 1}, {1, 1}, {0, 0}};
     for (int l = 0; l < 6; l++) {

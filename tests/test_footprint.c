@@ -527,7 +527,7 @@ TEST(gl_parameters_and_errors)
     REQUIRE(c);
     CHECK(strstr((const char *)fsglGetString(c, GL_EXTENSIONS), "GL_FRAGSIM_footprint_filter") != NULL);
     fsglBindTexture(c, GL_TEXTURE_2D, 1);
-    const fs_tex_object *t = c->texture->bound;
+    const fs_tex_object *t = fs_tex_bound_2d(c);
     CHECK_EQ_INT(t->footprint_budget, 16);
     CHECK_EQ_INT(t->footprint_snap, GL_FOOTPRINT_SNAP_INTEGER_FRAGSIM);
     fsglTexParameteri(c, GL_TEXTURE_2D, GL_TEXTURE_FOOTPRINT_BUDGET_FRAGSIM, 32);

@@ -220,10 +220,14 @@ TEST(errors_and_state)
     CHECK_EQ_UINT(b1[8], 0xFFFFFFFFu);
     CHECK_EQ_UINT(b1[9], 0xABABABABu);
     CHECK_EQ_INT(fsglRenderMode(c, GL_RENDER), 0);
-    /* GL_SELECT is not modelled: counted, mode unchanged */
-    uint64_t uns = c->stats.unsupported_calls;
+    /* GL_SELECT beside the occlusion modes (pipeline/render_mode.c):
+     * without glSelectBuffer it is GL_INVALID_OPERATION, and entered all
+     * the same, as OSMesa does (tests/test_render_mode.c) */
     CHECK_EQ_INT(fsglRenderMode(c, GL_SELECT), 0);
-    CHECK_EQ_UINT(c->stats.unsupported_calls, uns + 1);
+    CHECK_EQ_INT(fsglGetError(c), GL_INVALID_OPERATION);
+    fsglGetIntegerv(c, GL_RENDER_MODE, &v);
+    CHECK_EQ_INT(v, GL_SELECT);
+    CHECK_EQ_INT(fsglRenderMode(c, GL_RENDER), 0);
     fsglGetIntegerv(c, GL_RENDER_MODE, &v);
     CHECK_EQ_INT(v, GL_RENDER);
     /* glScissors(0) returns to the scissor box as the only tile */

@@ -23,23 +23,11 @@
 #include <stdio.h>
 #include "check.h"
 #include "osmesa_util.h"
+#include "test_rng.h"
 #include "../pipeline/context.h"
 
 #define N_SCENES 200
 
-typedef struct rng { uint64_t s; } rng;
-
-static uint32_t rnd(rng *r)
-{
-    /* xorshift64*: small, fixed-sequence, no libc state. */
-    r->s ^= r->s >> 12;
-    r->s ^= r->s << 25;
-    r->s ^= r->s >> 27;
-    return (uint32_t)((r->s * 2685821657736338717ull) >> 32);
-}
-
-static float rndf(rng *r, float lo, float hi) { return lo + (hi - lo) * (float)(rnd(r) >> 8) / 16777216.0f; }
-static int rndi(rng *r, int n) { return (int)(rnd(r) % (uint32_t)n); }
 
 typedef struct scene {
     int w, h;                    /* window */

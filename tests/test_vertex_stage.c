@@ -977,7 +977,7 @@ TEST(fma_variant_identical)
     for (int i = 0; i < N; i++) {
         bool same = a[i].mask == b[i].mask && same_floats(a[i].clip, b[i].clip, 4) && same_floats(a[i].win, b[i].win, 5) &&
                     same_floats(a[i].col[0], b[i].col[0], 4) && same_floats(a[i].col[1], b[i].col[1], 4) &&
-                    same_floats(a[i].tc, b[i].tc, 4);
+                    same_floats(a[i].tc[0], b[i].tc[0], 4);
         differ += !same;
     }
     printf("    fma_variant_identical: %d vertices, hardware FMA %s, AVX2 %s, %ld differ\n", N, hw ? "yes" : "no",

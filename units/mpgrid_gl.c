@@ -80,7 +80,7 @@ static fs_tex_object *bound_grid(fs_context *c, GLenum target, bool need_grid)
         fs_error(c, GL_INVALID_ENUM);
         return NULL;
     }
-    fs_tex_object *t = c->texture->bound;
+    fs_tex_object *t = fs_tex_bound_2d(c);
     if (need_grid && !t->mpgrid) {
         fs_error(c, GL_INVALID_OPERATION);
         return NULL;
@@ -102,7 +102,7 @@ void fs_exec_MPGridTexture(fs_context *c, GLenum target, GLsizei n, GLsizei m, G
         fs_error(c, GL_INVALID_VALUE);
         return;
     }
-    if (t == &c->texture->default_2d) {
+    if (t == &c->texture->default_obj[FS_TEX_2D]) {
         /* Texture object 0 stays a conventional texture. */
         fs_error(c, GL_INVALID_OPERATION);
         return;
@@ -341,7 +341,7 @@ void fs_exec_GetMPGridiv(fs_context *c, GLenum target, GLenum pname, GLint *para
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    const struct fs_mpgrid_tex *g = c->texture->bound->mpgrid;
+    const struct fs_mpgrid_tex *g = fs_tex_bound_2d(c)->mpgrid;
     if (!g) {
         fs_error(c, GL_INVALID_OPERATION);
         return;

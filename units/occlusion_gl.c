@@ -229,19 +229,18 @@ static int start_pass(fs_context *c, struct fs_occlusion *o, GLenum mode)
 
 GLint fs_exec_RenderMode(fs_context *c, GLenum mode)
 {
-    switch (mode) {
-    case GL_RENDER: case GL_BRIEF_OCCLUSION: case GL_VERBOSE_OCCLUSION:
-        break;
-    case GL_SELECT: case GL_FEEDBACK:
-        /* Not modelled: counted by name, the render mode stays as it is. */
-        fs_unsupported(c, mode == GL_SELECT ? "glRenderMode(GL_SELECT)" : "glRenderMode(GL_FEEDBACK)");
-        return 0;
-    default:
+    bool occlusion = mode == GL_BRIEF_OCCLUSION || mode == GL_VERBOSE_OCCLUSION;
+    if (!occlusion && mode != GL_RENDER && mode != GL_SELECT && mode != GL_FEEDBACK) {
         fs_error(c, GL_INVALID_ENUM);
         return 0;
     }
-    if (mode == GL_RENDER && !c->occlusion)
-        return 0;
+    /* GL_SELECT and GL_FEEDBACK need their buffers (GL 1.5 spec 5.2, 5.3;
+     * pipeline/render_mode.c); without one Mesa raises the error and enters
+     * the mode all the same (measured: GL_RENDER_MODE is then GL_SELECT). */
+    if (!fs_render_mode_may_enter(c, mode))
+        fs_error(c, GL_INVALID_OPERATION);
+    if (!occlusion && !in_occlusion_mode(c->occlusion) && (mode != GL_RENDER || !c->occlusion))
+        return fs_render_mode_switch(c, mode);
     struct fs_occlusion *o = state(c);
     if (!o) {
         fs_error(c, GL_OUT_OF_MEMORY);
@@ -249,18 +248,20 @@ GLint fs_exec_RenderMode(fs_context *c, GLenum mode)
     }
     /* Like GL_SELECT before glSelectBuffer (GL 1.5 spec 5.2): an occlusion
      * mode needs one buffer per current tile. */
-    if (mode != GL_RENDER && o->nbuffers != fs_occlusion_tile_count(c)) {
+    if (occlusion && o->nbuffers != fs_occlusion_tile_count(c)) {
         fs_error(c, GL_INVALID_OPERATION);
         return 0;
     }
-    GLint ret = in_occlusion_mode(o) ? finish_pass(c, o) : 0;
+    GLint ret = in_occlusion_mode(o) ? finish_pass(c, o) : fs_render_mode_switch(c, GL_RENDER);
     o->render_mode = GL_RENDER;
-    if (mode != GL_RENDER) {
+    if (occlusion) {
         if (start_pass(c, o, mode) != 0) {
             fs_error(c, GL_OUT_OF_MEMORY);
         } else {
             o->render_mode = mode;
         }
+    } else {
+        fs_render_mode_switch(c, mode);
     }
     update_hook(c);
     FS_OBSERVE(c, render_mode, c, mode);

@@ -4,6 +4,7 @@
  * environment (3.8.13).  Every command checks its arguments first: a call
  * that sets a GL error changes nothing (2.5).
  */
+#include <limits.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,6 +26,7 @@ static void object_defaults(fs_tex_object *t, GLuint name)
     t->priority = 1.0f;
     t->footprint_budget = 16;
     t->footprint_snap = GL_FOOTPRINT_SNAP_INTEGER_FRAGSIM;
+    fs_tex_lod_defaults(t);
     t->complete = -1;
 }
 
@@ -40,11 +42,14 @@ int fs_texture_init(fs_context *c)
     struct fs_texture_state *s = calloc(1, sizeof *s);
     if (!s)
         return -1;
-    object_defaults(&s->default_2d, 0);
-    s->bound = &s->default_2d;
+    for (int t = 0; t < FS_TEX_TARGETS; t++)
+        object_defaults(&s->default_obj[t], 0);
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
+        for (int t = 0; t < FS_TEX_TARGETS; t++)
+            s->unit[u].bound[t] = &s->default_obj[t];
+        fs_tex_env_init(&s->unit[u].env); /* table 6.19 */
+    }
     s->next_name = 1;
-    /* Table 6.19: MODULATE, environment colour (0,0,0,0). */
-    s->env_mode = GL_MODULATE;
     c->texture = s;
     return 0;
 }
@@ -54,7 +59,8 @@ void fs_texture_free(fs_context *c)
     struct fs_texture_state *s = c->texture;
     if (!s)
         return;
-    object_release(&s->default_2d);
+    for (int t = 0; t < FS_TEX_TARGETS; t++)
+        object_release(&s->default_obj[t]);
     for (size_t i = 0; i < s->count; i++) {
         object_release(s->objects[i]);
         free(s->objects[i]);
@@ -69,28 +75,59 @@ void fs_texture_free(fs_context *c)
 
 bool *fs_texture_enable_flag(fs_context *c, GLenum cap)
 {
-    return cap == GL_TEXTURE_2D ? &c->texture->enabled_2d : NULL;
+    return cap == GL_TEXTURE_2D ? &fs_tex_active(c)->enabled[FS_TEX_2D] : NULL;
 }
 
 void fs_texture_enables_changed(fs_context *c)
 {
-    /* The rasterizer interpolates texture coordinates only while a unit
-     * reads them (rasterizer.h), and those of the quad sharing llvmpipe's
-     * vector only while the bound texture's sampling depends on it. */
-    c->raster.interpolate_tex = c->texture->enabled_2d;
-    c->raster.tex_pair_lod = c->texture->enabled_2d && fs_tex_pair_decides(c->texture->bound);
+    /* The rasterizer interpolates texture coordinates only of the units
+     * that read them (rasterizer.h), and those of the quad sharing
+     * llvmpipe's vector only while some bound texture's sampling depends
+     * on it. */
+    unsigned mask = 0;
+    bool pair = false;
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
+        const fs_tex_unit *tu = &c->texture->unit[u];
+        if (!tu->enabled[FS_TEX_2D])
+            continue;
+        mask |= 1u << u;
+        pair = pair || fs_tex_pair_decides(tu->bound[FS_TEX_2D]);
+    }
+    c->raster.tex_mask = mask;
+    c->raster.tex_units = mask ? 32 - __builtin_clz(mask) : 1;
+    c->raster.interpolate_tex = mask != 0;
+    c->raster.tex_pair_lod = pair;
+}
+
+uint64_t fs_texture_enables(const fs_context *c)
+{
+    uint64_t bits = 0;
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
+        for (int t = 0; t < FS_TEX_TARGETS; t++)
+            bits |= (uint64_t)c->texture->unit[u].enabled[t] << (u * FS_TEX_TARGETS + t);
+    return bits;
+}
+
+void fs_texture_set_enables(fs_context *c, uint64_t bits)
+{
+    _Static_assert(FS_MAX_TEXTURE_UNITS * FS_TEX_TARGETS <= 64, "the enables fit the bits");
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
+        for (int t = 0; t < FS_TEX_TARGETS; t++)
+            c->texture->unit[u].enabled[t] = (bits >> (u * FS_TEX_TARGETS + t)) & 1u;
+    fs_texture_enables_changed(c);
 }
 
 bool fs_tex_pair_decides(const fs_tex_object *t)
 {
-    /* llvmpipe's float path (GL_CLAMP on an axis) with min and mag image
+    /* llvmpipe's float path (a wrap other than REPEAT and CLAMP_TO_EDGE
+     * on an axis) with min and mag image
      * filters that differ samples the NEAREST pixels of a vector (8
      * pixels, two quads) through its LINEAR code whenever any pixel of the
      * vector needs LINEAR (gallivm lp_bld_sample_soa.c,
      * lp_build_sample_mipmap_both). */
     GLenum mf = t->min_filter;
     bool min_linear = mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR;
-    return (t->wrap_s == GL_CLAMP || t->wrap_t == GL_CLAMP) &&
+    return (!fs_tex_simple_wrap(t->wrap_s) || !fs_tex_simple_wrap(t->wrap_t)) &&
            (GLenum)(min_linear ? GL_LINEAR : GL_NEAREST) != t->mag_filter;
 }
 
@@ -173,31 +210,27 @@ void fs_exec_DeleteTextures(fs_context *c, GLsizei n, const GLuint *textures)
         fs_tex_object *t = textures[i] ? lookup(s, textures[i], &idx) : NULL;
         if (!t)
             continue; /* 0 and unused names are silently ignored */
-        /* A bound texture that is deleted reverts to texture 0. */
-        if (s->bound == t) {
-            s->bound = &s->default_2d;
-            fs_texture_enables_changed(c); /* the rasterizer's tex_pair_lod */
-        }
+        /* A bound texture that is deleted reverts to texture 0, on every
+         * unit it is bound to (3.8.12). */
+        for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
+            for (int k = 0; k < FS_TEX_TARGETS; k++)
+                if (s->unit[u].bound[k] == t) {
+                    s->unit[u].bound[k] = &s->default_obj[k];
+                    fs_texture_enables_changed(c); /* the rasterizer's tex_pair_lod */
+                }
         object_release(t);
         free(t);
         s->objects[idx] = s->objects[--s->count];
     }
 }
 
-void fs_exec_BindTexture(fs_context *c, GLenum target, GLuint texture)
+/* Binds texture (0: the default object) to the 2D target of unit u. */
+static void bind_2d(fs_context *c, int u, GLuint texture)
 {
     struct fs_texture_state *s = c->texture;
-    if (target == GL_TEXTURE_1D || target == GL_TEXTURE_3D) {
-        fs_unsupported(c, target == GL_TEXTURE_1D ? "glBindTexture(GL_TEXTURE_1D)" : "glBindTexture(GL_TEXTURE_3D)");
-        return;
-    }
-    if (target != GL_TEXTURE_2D) {
-        fs_error(c, GL_INVALID_ENUM);
-        return;
-    }
     fs_state_mark(c, GL_TEXTURE_BIT);
     if (texture == 0) {
-        s->bound = &s->default_2d;
+        s->unit[u].bound[FS_TEX_2D] = &s->default_obj[FS_TEX_2D];
         fs_texture_enables_changed(c); /* the rasterizer's tex_pair_lod */
         return;
     }
@@ -209,8 +242,21 @@ void fs_exec_BindTexture(fs_context *c, GLenum target, GLuint texture)
         return;
     }
     t->bound_once = true;
-    s->bound = t;
+    s->unit[u].bound[FS_TEX_2D] = t;
     fs_texture_enables_changed(c); /* the rasterizer's tex_pair_lod */
+}
+
+void fs_exec_BindTexture(fs_context *c, GLenum target, GLuint texture)
+{
+    if (target == GL_TEXTURE_1D || target == GL_TEXTURE_3D) {
+        fs_unsupported(c, target == GL_TEXTURE_1D ? "glBindTexture(GL_TEXTURE_1D)" : "glBindTexture(GL_TEXTURE_3D)");
+        return;
+    }
+    if (target != GL_TEXTURE_2D) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    bind_2d(c, fs_active_unit(c), texture);
 }
 
 GLboolean fs_exec_IsTexture(fs_context *c, GLuint texture)
@@ -324,6 +370,28 @@ static void unpack_image(fs_context *c, fs_tex_image *img, int x0, int y0, int w
     }
 }
 
+/* Unpacks a client image of width x height into img, which is that image
+ * without `border` texels on each side. */
+static void unpack_inner(fs_context *c, fs_tex_image *img, int border, int width, int height, GLenum format,
+                         GLenum type, const uint8_t *pixels)
+{
+    if (!border) {
+        unpack_image(c, img, 0, 0, width, height, format, type, pixels);
+        return;
+    }
+    fs_tex_image whole = {.width = width, .height = height, .base_format = img->base_format};
+    whole.texels = malloc((size_t)width * (size_t)height * 4);
+    if (!whole.texels) {
+        fs_error(c, GL_OUT_OF_MEMORY);
+        return;
+    }
+    unpack_image(c, &whole, 0, 0, width, height, format, type, pixels);
+    for (int y = 0; y < img->height; y++)
+        memcpy(img->texels + (size_t)y * (size_t)img->width * 4,
+               whole.texels + ((size_t)(y + border) * (size_t)width + (size_t)border) * 4, (size_t)img->width * 4);
+    free(whole.texels);
+}
+
 GLenum fs_tex_base_format(GLint internalformat) { return base_format(internalformat); }
 
 GLenum fs_tex_unpack_rgba8(fs_context *c, uint8_t *dst, int w, int h, GLenum base, GLenum format, GLenum type,
@@ -365,8 +433,8 @@ static bool keeps_wide_texels(GLint internalformat, GLenum format, GLenum type)
 static bool is_pow2_or_zero(GLsizei v) { return (v & (v - 1)) == 0; }
 
 /* Checks shared by glTexImage2D and glCopyTexImage2D (3.8.1): returns the
- * GL error or GL_NO_ERROR.  Border 1 images are valid GL but fragsim does
- * not model borders (neither does gallium). */
+ * GL error or GL_NO_ERROR.  Border 1 images are valid GL; the model keeps
+ * their inner image, as Mesa does for gallium (fs_exec_TexImage2D). */
 static GLenum check_image_args(GLint level, GLint internalformat, GLsizei width, GLsizei height, GLint border)
 {
     if (level < 0 || level > FS_TEX_MAX_LOG2)
@@ -392,7 +460,7 @@ static GLenum check_image_args(GLint level, GLint internalformat, GLsizei width,
  * width x height image.  Returns it, or NULL (GL_OUT_OF_MEMORY set). */
 static fs_tex_image *define_level(fs_context *c, GLint level, GLint internalformat, GLsizei width, GLsizei height)
 {
-    fs_tex_object *t = c->texture->bound;
+    fs_tex_object *t = fs_tex_bound_2d(c);
     fs_tex_image *img = &t->level[level];
     uint8_t *texels = NULL;
     if (width > 0 && height > 0) {
@@ -414,6 +482,31 @@ static fs_tex_image *define_level(fs_context *c, GLint level, GLint internalform
     return img;
 }
 
+/* glTexImage2D on GL_PROXY_TEXTURE_2D (3.8.11): the level's state as the
+ * image would set it (its border kept, as Mesa keeps it for a proxy), or
+ * all zero when only the size is refused (too large, not 2^n + 2 border),
+ * which raises no error.  err is the image's error; false when it is an
+ * error to raise (a bad level, format, border or negative size). */
+static bool proxy_image(fs_context *c, GLenum err, GLint level, GLint internalformat, GLsizei width, GLsizei height,
+                        GLint border)
+{
+    bool size_only = level >= 0 && level <= FS_TEX_MAX_LOG2 && base_format(internalformat) &&
+                     (border == 0 || border == 1) && width >= 0 && height >= 0;
+    if (err != GL_NO_ERROR && !(err == GL_INVALID_VALUE && size_only))
+        return false;
+    fs_tex_image *img = &c->texture->proxy_2d[level];
+    memset(img, 0, sizeof *img);
+    if (err != GL_NO_ERROR)
+        return true;
+    img->width = width;
+    img->height = height;
+    img->border = border;
+    img->internal_format = internalformat;
+    img->base_format = base_format(internalformat);
+    img->described = true;
+    return true;
+}
+
 void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint internalformat, GLsizei width,
                         GLsizei height, GLint border, GLenum format, GLenum type, const GLvoid *pixels)
 {
@@ -424,27 +517,26 @@ void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint interna
     GLenum err = tex_format_error(format, type);
     if (err == GL_NO_ERROR)
         err = check_image_args(level, internalformat, width, height, border);
+    if (target == GL_PROXY_TEXTURE_2D && proxy_image(c, err, level, internalformat, width, height, border))
+        return;
     if (err != GL_NO_ERROR) {
         fs_error(c, err);
-        return;
-    }
-    if (target == GL_PROXY_TEXTURE_2D) {
-        fs_unsupported(c, "glTexImage2D(GL_PROXY_TEXTURE_2D)");
-        return;
-    }
-    if (border != 0) {
-        fs_unsupported(c, "glTexImage2D with a border");
         return;
     }
     if (format == GL_COLOR_INDEX) {
         fs_unsupported(c, "glTexImage2D(GL_COLOR_INDEX)");
         return;
     }
-    fs_tex_image *img = define_level(c, level, internalformat, width, height);
+    /* A border (3.8.1) is dropped, as Mesa does for gallium, which has no
+     * texture borders: the level is the inner image (measured on OSMesa:
+     * TEXTURE_WIDTH w - 2, TEXTURE_BORDER 0, sampling never reads it). */
+    fs_tex_image *img = define_level(c, level, internalformat, width - 2 * border, height - 2 * border);
     if (img && keeps_wide_texels(internalformat, format, type))
         fs_unsupported(c, "16/10-bit texels, unsized internal format (stored at 8 bits)");
     if (img && img->texels && pixels)
-        unpack_image(c, img, 0, 0, width, height, format, type, pixels);
+        unpack_inner(c, img, border, width, height, format, type, pixels);
+    if (img)
+        fs_tex_image_changed(c, fs_tex_bound_2d(c), level);
 }
 
 /* The level a TexSubImage2D or CopyTexSubImage2D writes into, after the
@@ -457,7 +549,7 @@ static fs_tex_image *subimage_target(fs_context *c, GLint level, GLint xoffset, 
         fs_error(c, GL_INVALID_VALUE);
         return NULL;
     }
-    fs_tex_image *img = &c->texture->bound->level[level];
+    fs_tex_image *img = &fs_tex_bound_2d(c)->level[level];
     if (!img->texels) {
         fs_error(c, GL_INVALID_OPERATION);
         return NULL;
@@ -491,6 +583,7 @@ void fs_exec_TexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoff
     }
     if (width > 0 && height > 0 && pixels)
         unpack_image(c, img, xoffset, yoffset, width, height, format, type, pixels);
+    fs_tex_image_changed(c, fs_tex_bound_2d(c), level);
 }
 
 /* Copies a framebuffer rectangle into img at (dx, dy) (3.8.2: the pixels
@@ -530,13 +623,16 @@ void fs_exec_CopyTexImage2D(fs_context *c, GLenum target, GLint level, GLenum in
         fs_error(c, err);
         return;
     }
-    if (border != 0) {
-        fs_unsupported(c, "glCopyTexImage2D with a border");
-        return;
-    }
-    fs_tex_image *img = define_level(c, level, (GLint)internalformat, width, height);
+    /* The border is dropped as by glTexImage2D: the inner rectangle is
+     * copied. */
+    fs_tex_image *img =
+        define_level(c, level, (GLint)internalformat, width - 2 * border, height - 2 * border);
     if (img && img->texels)
-        copy_from_framebuffer(c, img, 0, 0, x, y, width, height);
+        /* (at x or y = INT_MAX everything read is outside the window anyway) */
+        copy_from_framebuffer(c, img, 0, 0, x < INT_MAX ? x + border : x, y < INT_MAX ? y + border : y, img->width,
+                              img->height);
+    if (img)
+        fs_tex_image_changed(c, fs_tex_bound_2d(c), level);
 }
 
 void fs_exec_CopyTexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x,
@@ -550,6 +646,7 @@ void fs_exec_CopyTexSubImage2D(fs_context *c, GLenum target, GLint level, GLint 
     if (!img)
         return;
     copy_from_framebuffer(c, img, xoffset, yoffset, x, y, width, height);
+    fs_tex_image_changed(c, fs_tex_bound_2d(c), level);
 }
 
 /* ---- parameters (3.8.4) ---- */
@@ -599,7 +696,7 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
         return;
     }
     fs_state_mark(c, GL_TEXTURE_BIT);
-    fs_tex_object *t = c->texture->bound;
+    fs_tex_object *t = fs_tex_bound_2d(c);
     GLenum e = float_to_enum(vals[0]);
     switch (pname) {
     case GL_TEXTURE_MIN_FILTER:
@@ -617,8 +714,6 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
     case GL_TEXTURE_WRAP_T:
         if (!is_wrap(e))
             break;
-        if (e == GL_CLAMP_TO_BORDER || e == GL_MIRRORED_REPEAT)
-            fs_unsupported(c, "texture wrap mode GL_CLAMP_TO_BORDER/GL_MIRRORED_REPEAT (sampled as GL_CLAMP_TO_EDGE)");
         *(pname == GL_TEXTURE_WRAP_S ? &t->wrap_s : &t->wrap_t) = e;
         return;
     case GL_TEXTURE_BORDER_COLOR:
@@ -643,12 +738,14 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
             break;
         t->footprint_snap = e;
         return;
-    case GL_TEXTURE_MIN_LOD: case GL_TEXTURE_MAX_LOD: case GL_TEXTURE_BASE_LEVEL: case GL_TEXTURE_MAX_LEVEL:
-    case GL_GENERATE_MIPMAP:
-        fs_unsupported(c, "glTexParameter LOD/level range or GL_GENERATE_MIPMAP");
+    default: {
+        GLenum lod_err;
+        if (!fs_tex_lod_parameter(t, pname, vals[0], &lod_err))
+            break;
+        if (lod_err != GL_NO_ERROR)
+            fs_error(c, lod_err);
         return;
-    default:
-        break;
+    }
     }
     fs_error(c, GL_INVALID_ENUM);
 }
@@ -701,6 +798,7 @@ void fs_exec_TexParameterfv(fs_context *c, GLenum target, GLenum pname, const GL
 {
     float v[4];
     vector_from_fv(v, params, pname == GL_TEXTURE_BORDER_COLOR);
+    fs_tex_lod_vector_form(pname, v);
     tex_parameter(c, target, pname, v, true);
     fs_texture_enables_changed(c);
 }
@@ -709,26 +807,34 @@ void fs_exec_TexParameterfv(fs_context *c, GLenum target, GLenum pname, const GL
 
 bool fs_tex_complete(fs_tex_object *t)
 {
-    if (t->mpgrid)
+    if (t->mpgrid) {
+        t->first_level = 0;
         return fs_mpgrid_gl_complete(t);
+    }
     if (t->complete >= 0)
         return t->complete != 0;
-    const fs_tex_image *b = &t->level[0];
-    bool ok = b->texels != NULL;
-    int last = 0;
+    /* 3.8.10: the image of the base level must exist (a base level past
+     * the last level leaves none); a MIPmap filter also needs the levels
+     * from the base to q = min(p, MAX_LEVEL), each half the previous size
+     * (at least 1), all of the base's internal format, and MAX_LEVEL not
+     * below the base (Mesa; measured: white, i.e. untextured, on OSMesa). */
+    int base = t->base_level;
+    const fs_tex_image *b = base < FS_TEX_MAX_LEVELS ? &t->level[base] : NULL;
+    bool ok = b && b->texels != NULL;
+    int last = base;
     bool mip = t->min_filter != GL_NEAREST && t->min_filter != GL_LINEAR;
     if (ok && mip) {
-        /* Levels 1..p down to 1x1, each half the previous size (at least
-         * 1), all of the same internal format. */
+        ok = t->max_level >= base;
         int w = b->width, h = b->height;
-        while (ok && (w > 1 || h > 1)) {
+        while (ok && (w > 1 || h > 1) && last < t->max_level) {
             w = w > 1 ? w / 2 : 1;
             h = h > 1 ? h / 2 : 1;
             last++;
-            const fs_tex_image *l = &t->level[last];
-            ok = l->texels && l->width == w && l->height == h && l->internal_format == b->internal_format;
+            const fs_tex_image *l = last < FS_TEX_MAX_LEVELS ? &t->level[last] : NULL;
+            ok = l && l->texels && l->width == w && l->height == h && l->internal_format == b->internal_format;
         }
     }
+    t->first_level = ok ? base : 0;
     t->last_level = ok ? last : 0;
     t->complete = ok ? 1 : 0;
     return ok;
@@ -738,7 +844,13 @@ bool fs_tex_complete(fs_tex_object *t)
 
 static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *vals, bool vector)
 {
-    struct fs_texture_state *s = c->texture;
+    fs_tex_env *s = &fs_tex_active(c)->env;
+    if (target == GL_TEXTURE_FILTER_CONTROL) {
+        /* GL 1.4's unit LOD bias (3.8.13; texture_lod.c). */
+        if (fs_tex_filter_control(c, pname, vals[0]))
+            fs_state_mark(c, GL_TEXTURE_BIT);
+        return;
+    }
     if (target != GL_TEXTURE_ENV) {
         fs_error(c, GL_INVALID_ENUM);
         return;
@@ -747,11 +859,8 @@ static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *val
     if (pname == GL_TEXTURE_ENV_MODE) {
         GLenum m = float_to_enum(vals[0]);
         switch (m) {
-        case GL_MODULATE: case GL_DECAL: case GL_BLEND: case GL_REPLACE: case GL_ADD:
-            s->env_mode = m;
-            return;
-        case GL_COMBINE:
-            fs_unsupported(c, "glTexEnv(GL_COMBINE)");
+        case GL_MODULATE: case GL_DECAL: case GL_BLEND: case GL_REPLACE: case GL_ADD: case GL_COMBINE:
+            s->mode = m;
             return;
         default:
             fs_error(c, GL_INVALID_ENUM);
@@ -760,10 +869,14 @@ static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *val
     }
     if (pname == GL_TEXTURE_ENV_COLOR && vector) {
         for (int k = 0; k < 4; k++)
-            s->env_color[k] = clamp01_param(vals[k]);
+            s->color[k] = clamp01_param(vals[k]);
         return;
     }
-    fs_error(c, GL_INVALID_ENUM);
+    GLenum err;
+    if (!fs_tex_combine_set(s, pname, vals[0], &err))
+        err = GL_INVALID_ENUM;
+    if (err != GL_NO_ERROR)
+        fs_error(c, err);
 }
 
 void fs_exec_TexEnvi(fs_context *c, GLenum target, GLenum pname, GLint param)
@@ -795,7 +908,8 @@ void fs_exec_TexEnvfv(fs_context *c, GLenum target, GLenum pname, const GLfloat 
 
 /* The scalar fields fs_tex_params shares with fs_tex_object, by name. */
 #define FS_TEX_PARAM_FIELDS(X) \
-    X(min_filter) X(mag_filter) X(wrap_s) X(wrap_t) X(priority) X(footprint_budget) X(footprint_snap)
+    X(min_filter) X(mag_filter) X(wrap_s) X(wrap_t) X(priority) X(footprint_budget) X(footprint_snap) \
+    X(base_level) X(max_level) X(min_lod) X(max_lod) X(lod_bias) X(generate_mipmap)
 
 static void params_save(const fs_tex_object *t, fs_tex_params *p)
 {
@@ -819,31 +933,35 @@ static void params_restore(fs_tex_object *t, const fs_tex_params *p)
 void fs_texture_attrib_save(const fs_context *c, fs_texture_attrib *a)
 {
     const struct fs_texture_state *s = c->texture;
-    a->binding_2d = s->bound->name;
-    params_save(s->bound, &a->bound);
-    params_save(&s->default_2d, &a->default_2d);
-    a->env_mode = s->env_mode;
-    memcpy(a->env_color, s->env_color, sizeof a->env_color);
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
+        const fs_tex_unit *tu = &s->unit[u];
+        a->unit[u].binding_2d = tu->bound[FS_TEX_2D]->name;
+        params_save(tu->bound[FS_TEX_2D], &a->unit[u].bound);
+        a->unit[u].env = tu->env;
+    }
+    params_save(&s->default_obj[FS_TEX_2D], &a->default_2d);
 }
 
 void fs_texture_attrib_restore(fs_context *c, const fs_texture_attrib *a)
 {
-    fs_exec_BindTexture(c, GL_TEXTURE_2D, a->binding_2d);
     struct fs_texture_state *s = c->texture;
-    if (s->bound != &s->default_2d)
-        params_restore(s->bound, &a->bound);
-    params_restore(&s->default_2d, &a->default_2d);
-    s->env_mode = a->env_mode;
-    memcpy(s->env_color, a->env_color, sizeof s->env_color);
+    fs_tex_object *def = &s->default_obj[FS_TEX_2D];
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
+        fs_tex_unit *tu = &s->unit[u];
+        bind_2d(c, u, a->unit[u].binding_2d);
+        if (tu->bound[FS_TEX_2D] != def)
+            params_restore(tu->bound[FS_TEX_2D], &a->unit[u].bound);
+        tu->env = a->unit[u].env;
+    }
+    params_restore(def, &a->default_2d);
+    fs_texture_enables_changed(c); /* the restored parameters decide tex_pair_lod */
 }
 
 /* ---- queries (GL 1.5 spec 6.1.3 texture queries, 6.1.4 GetTexImage) ----
- * Values the model does not store (the GL 1.2-1.4 LOD and level range,
- * GENERATE_MIPMAP: setting them is counted unsupported) read as their
- * initial values (table 6.17).  Colours and the priority come out of the
- * integer forms as normalized integers (6.1.2), as Mesa returns them. */
+ * Colours and the priority come out of the integer forms as normalized
+ * integers (6.1.2), as Mesa returns them. */
 
-GLuint fs_texture_binding_2d(const fs_context *c) { return c->texture->bound->name; }
+GLuint fs_texture_binding_2d(const fs_context *c) { return fs_tex_bound_2d(c)->name; }
 
 GLuint fs_tex_object_name(const fs_tex_object *t) { return t->name; }
 
@@ -852,7 +970,7 @@ bool fs_tex_level_size(const fs_tex_object *t, int level, int *width, int *heigh
     bool stored = level >= 0 && level < FS_TEX_MAX_LEVELS;
     *width = stored ? t->level[level].width : 0;
     *height = stored ? t->level[level].height : 0;
-    return stored && level <= t->last_level && *width > 0 && *height > 0;
+    return stored && level >= t->first_level && level <= t->last_level && *width > 0 && *height > 0;
 }
 
 /* A texture target the queries accept; sets the error (or counts the
@@ -868,37 +986,43 @@ static bool query_target_ok(fs_context *c, GLenum target, bool proxy_ok, const c
     return false;
 }
 
-/* One texture parameter: returns how many values (1 or 4) were written to
- * v, 0 for an unknown name; *norm tells whether they are normalized. */
-static int tex_parameter_value(const fs_tex_object *t, GLenum pname, float v[4], bool *norm)
+/* One texture parameter as the queries return it: up to 4 values, whether
+ * they are normalized (colours, the priority), and for the level-of-detail
+ * values their integer form, which is not a truncation (texture_lod.c). */
+typedef struct tex_param_value {
+    float v[4];
+    bool norm, has_int;
+    GLint i;
+} tex_param_value;
+
+/* Returns how many values (1 or 4) were written, 0 for an unknown name. */
+static int tex_parameter_value(const fs_tex_object *t, GLenum pname, tex_param_value *p)
 {
-    *norm = false;
+    float *v = p->v;
+    p->norm = p->has_int = false;
     switch (pname) {
     case GL_TEXTURE_MIN_FILTER: v[0] = (float)t->min_filter; return 1;
     case GL_TEXTURE_MAG_FILTER: v[0] = (float)t->mag_filter; return 1;
     case GL_TEXTURE_WRAP_S: v[0] = (float)t->wrap_s; return 1;
     case GL_TEXTURE_WRAP_T: v[0] = (float)t->wrap_t; return 1;
-    case GL_TEXTURE_BORDER_COLOR: memcpy(v, t->border, 4 * sizeof *v); *norm = true; return 4;
-    case GL_TEXTURE_PRIORITY: v[0] = t->priority; *norm = true; return 1;
+    case GL_TEXTURE_BORDER_COLOR: memcpy(v, t->border, 4 * sizeof *v); p->norm = true; return 4;
+    case GL_TEXTURE_PRIORITY: v[0] = t->priority; p->norm = true; return 1;
     /* 3.8.12: a texture of the model is always resident. */
     case GL_TEXTURE_RESIDENT: v[0] = 1.0f; return 1;
-    case GL_TEXTURE_MIN_LOD: v[0] = -1000.0f; return 1;
-    case GL_TEXTURE_MAX_LOD: v[0] = 1000.0f; return 1;
-    case GL_TEXTURE_BASE_LEVEL: v[0] = 0.0f; return 1;
-    case GL_TEXTURE_MAX_LEVEL: v[0] = 1000.0f; return 1;
-    case GL_GENERATE_MIPMAP: v[0] = 0.0f; return 1;
     /* GL_FRAGSIM_footprint_filter */
     case GL_TEXTURE_FOOTPRINT_BUDGET_FRAGSIM: v[0] = (float)t->footprint_budget; return 1;
     case GL_TEXTURE_FOOTPRINT_SNAP_FRAGSIM: v[0] = (float)t->footprint_snap; return 1;
-    default: return 0;
+    default:
+        p->has_int = fs_tex_lod_value(t, pname, v, &p->i) != 0;
+        return p->has_int ? 1 : 0;
     }
 }
 
-static int get_tex_parameter(fs_context *c, GLenum target, GLenum pname, float v[4], bool *norm)
+static int get_tex_parameter(fs_context *c, GLenum target, GLenum pname, tex_param_value *p)
 {
     if (!query_target_ok(c, target, false, "glGetTexParameter on a 1D/3D texture"))
         return 0;
-    int n = tex_parameter_value(c->texture->bound, pname, v, norm);
+    int n = tex_parameter_value(fs_tex_bound_2d(c), pname, p);
     if (n == 0)
         fs_error(c, GL_INVALID_ENUM);
     return n;
@@ -906,19 +1030,17 @@ static int get_tex_parameter(fs_context *c, GLenum target, GLenum pname, float v
 
 void fs_exec_GetTexParameterfv(fs_context *c, GLenum target, GLenum pname, GLfloat *params)
 {
-    float v[4];
-    bool norm;
-    int n = get_tex_parameter(c, target, pname, v, &norm);
-    memcpy(params, v, (size_t)n * sizeof *v);
+    tex_param_value p;
+    int n = get_tex_parameter(c, target, pname, &p);
+    memcpy(params, p.v, (size_t)n * sizeof *p.v);
 }
 
 void fs_exec_GetTexParameteriv(fs_context *c, GLenum target, GLenum pname, GLint *params)
 {
-    float v[4];
-    bool norm;
-    int n = get_tex_parameter(c, target, pname, v, &norm);
+    tex_param_value p;
+    int n = get_tex_parameter(c, target, pname, &p);
     for (int k = 0; k < n; k++)
-        params[k] = norm ? fs_norm_to_int(v[k]) : (GLint)v[k];
+        params[k] = p.has_int ? p.i : p.norm ? fs_norm_to_int(p.v[k]) : (GLint)p.v[k];
 }
 
 /* Bits the model stores of a component pname for an image (8 for every
@@ -938,20 +1060,20 @@ static int component_bits(const fs_tex_image *img, GLenum pname)
     case GL_TEXTURE_DEPTH_SIZE: has = false; break;
     default: return -1;
     }
-    return has && img->texels ? 8 : 0;
+    return has && (img->texels || img->described) ? 8 : 0;
 }
 
 /* One level parameter (table 6.18); false for an unknown name.  An
  * undefined level reads as zero size with Mesa's internal format RGBA. */
 static bool tex_level_value(const fs_tex_image *img, GLenum pname, GLint *v)
 {
-    bool defined = img && img->texels;
+    bool defined = img && (img->texels || img->described);
     switch (pname) {
     case GL_TEXTURE_WIDTH: *v = defined ? img->width : 0; return true;
     case GL_TEXTURE_HEIGHT: *v = defined ? img->height : 0; return true;
     case GL_TEXTURE_DEPTH: *v = defined ? 1 : 0; return true;
     case GL_TEXTURE_INTERNAL_FORMAT: *v = defined ? img->internal_format : GL_RGBA; return true;
-    case GL_TEXTURE_BORDER: *v = 0; return true;
+    case GL_TEXTURE_BORDER: *v = defined ? img->border : 0; return true;
     case GL_TEXTURE_COMPRESSED: *v = GL_FALSE; return true;
     default: break;
     }
@@ -971,9 +1093,8 @@ static bool get_tex_level(fs_context *c, GLenum target, GLint level, GLenum pnam
         fs_error(c, GL_INVALID_VALUE);
         return false;
     }
-    /* The model keeps no proxy images (glTexImage2D on the proxy target is
-     * unsupported), so every proxy level reads as undefined. */
-    const fs_tex_image *img = target == GL_TEXTURE_2D ? &c->texture->bound->level[level] : NULL;
+    const fs_tex_image *img =
+        target == GL_TEXTURE_2D ? &fs_tex_bound_2d(c)->level[level] : &c->texture->proxy_2d[level];
     if (!tex_level_value(img, pname, v)) {
         fs_error(c, GL_INVALID_ENUM);
         return false;
@@ -997,19 +1118,21 @@ void fs_exec_GetTexLevelParameterfv(fs_context *c, GLenum target, GLint level, G
 
 static int get_tex_env(fs_context *c, GLenum target, GLenum pname, float v[4])
 {
-    const struct fs_texture_state *s = c->texture;
+    const fs_tex_env *s = &fs_tex_active(c)->env;
     if (target != GL_TEXTURE_ENV) {
         fs_error(c, GL_INVALID_ENUM);
         return 0;
     }
     if (pname == GL_TEXTURE_ENV_MODE) {
-        v[0] = (float)s->env_mode;
+        v[0] = (float)s->mode;
         return 1;
     }
     if (pname == GL_TEXTURE_ENV_COLOR) {
-        memcpy(v, s->env_color, 4 * sizeof *v);
+        memcpy(v, s->color, 4 * sizeof *v);
         return 4;
     }
+    if (fs_tex_combine_get(s, pname, v))
+        return 1;
     fs_error(c, GL_INVALID_ENUM);
     return 0;
 }
@@ -1017,6 +1140,12 @@ static int get_tex_env(fs_context *c, GLenum target, GLenum pname, float v[4])
 void fs_exec_GetTexEnvfv(fs_context *c, GLenum target, GLenum pname, GLfloat *params)
 {
     float v[4];
+    GLint iv;
+    if (target == GL_TEXTURE_FILTER_CONTROL) {
+        if (fs_tex_filter_control_value(c, pname, v, &iv))
+            params[0] = v[0];
+        return;
+    }
     int n = get_tex_env(c, target, pname, v);
     memcpy(params, v, (size_t)n * sizeof *v);
 }
@@ -1024,6 +1153,12 @@ void fs_exec_GetTexEnvfv(fs_context *c, GLenum target, GLenum pname, GLfloat *pa
 void fs_exec_GetTexEnviv(fs_context *c, GLenum target, GLenum pname, GLint *params)
 {
     float v[4];
+    GLint iv;
+    if (target == GL_TEXTURE_FILTER_CONTROL) {
+        if (fs_tex_filter_control_value(c, pname, v, &iv))
+            params[0] = iv;
+        return;
+    }
     int n = get_tex_env(c, target, pname, v);
     for (int k = 0; k < n; k++)
         params[k] = n == 4 ? fs_norm_to_int(v[k]) : (GLint)v[k];
@@ -1081,7 +1216,7 @@ int64_t fs_gettexImage_bytes(fs_context *c, GLenum target, GLint level, GLenum f
     if (target != GL_TEXTURE_2D || level < 0 || level >= FS_TEX_MAX_LEVELS ||
         get_image_format_error(format, type) != GL_NO_ERROR)
         return 0;
-    const fs_tex_image *img = &c->texture->bound->level[level];
+    const fs_tex_image *img = &fs_tex_bound_2d(c)->level[level];
     if (!img->texels)
         return 0;
     /* The pack layout is glReadPixels' (4.3.2, 6.1.4). */
@@ -1118,7 +1253,7 @@ void fs_exec_GetTexImage(fs_context *c, GLenum target, GLint level, GLenum forma
         fs_error(c, err);
         return;
     }
-    const fs_tex_image *img = &c->texture->bound->level[level];
+    const fs_tex_image *img = &fs_tex_bound_2d(c)->level[level];
     if (!img->texels || !pixels)
         return; /* an undefined level writes nothing */
     fs_pixel_store ps = fs_pixel_store_pack(c);

@@ -6,6 +6,7 @@
 #define FS_TEXTURE_PRIV_H
 #include <stddef.h>
 #include "texture_unit.h"
+#include "../pipeline/context.h"
 
 /* One image (a MIPmap level).  Texels are stored as RGBA8 already expanded
  * the way the sampler reads them (llvmpipe's sampler-view swizzle, GL 1.5
@@ -17,6 +18,10 @@ typedef struct fs_tex_image {
     GLint internal_format;      /* as given (for the completeness rule) */
     GLenum base_format;         /* GL_RGBA, GL_RGB, GL_LUMINANCE, ... */
     uint8_t *texels;            /* width*height*4 bytes, row 0 = t near 0 */
+    /* A proxy level (3.8.11) has no texels: described tells that its
+     * state is set, border is the one given (images keep none). */
+    bool described;
+    int border;
 } fs_tex_image;
 
 typedef struct fs_tex_object {
@@ -29,33 +34,103 @@ typedef struct fs_tex_object {
     int footprint_budget;
     GLenum footprint_snap;
     fs_tex_image level[FS_TEX_MAX_LEVELS];
-    /* Completeness (3.8.10), recomputed when images or filters change:
-     * -1 unknown, 0 incomplete, 1 complete.  last_level is the highest
-     * level sampling may use. */
+    /* GL 1.2-1.4 level range, LOD clamps and bias, automatic MIPmaps
+     * (3.8.8-3.8.10, table 6.17; units/texture_lod.c). */
+    int base_level, max_level;
+    float min_lod, max_lod, lod_bias;
+    bool generate_mipmap;
+    /* Completeness (3.8.10), recomputed when images, filters or the level
+     * range change: -1 unknown, 0 incomplete, 1 complete.  first_level and
+     * last_level are the lowest and highest levels sampling may use (the
+     * base level and q of 3.8.10). */
     int complete;
-    int last_level;
+    int first_level, last_level;
     /* GL_FRAGSIM_mp_grid: non-NULL for an MP-Grid texture, whose texels
      * come through the CTR (units/mpgrid_gl.h). */
     struct fs_mpgrid_tex *mpgrid;
 } fs_tex_object;
 
+/* The texture targets as indices into a unit's bindings and enables and
+ * the default objects (GL 1.5 spec 3.8.12: each target has its own texture
+ * 0).  A new target is one more name here. */
+enum fs_tex_target { FS_TEX_2D, FS_TEX_TARGETS };
+
+/* units/texture_combine.c: the initial environment; glTexEnv of a
+ * GL_COMBINE parameter (false: pname is none; *error GL_NO_ERROR or the
+ * error, which leaves the parameter as it was) and glGetTexEnv of one
+ * (false: pname is none). */
+void fs_tex_env_init(fs_tex_env *e);
+bool fs_tex_combine_set(fs_tex_env *e, GLenum pname, float value, GLenum *error);
+bool fs_tex_combine_get(const fs_tex_env *e, GLenum pname, float *value);
+/* What GL_COMBINE reads at one pixel: the combining unit, the units with a
+ * texel (enabled, complete) and their texels, the fragment's colour before
+ * texturing and the previous unit's result. */
+typedef struct fs_combine_inputs {
+    int unit;
+    unsigned valid;
+    const float (*texel)[4];
+    const float *primary, *previous;
+} fs_combine_inputs;
+void fs_tex_combine(const fs_tex_env *e, const fs_combine_inputs *in, float out[4]);
+
+/* One texture unit (2.7, 3.8.13): per target its enable and binding, its
+ * environment.  Its coordinates and matrix stack are the vertex stage's
+ * (pipeline/vertex_stage.h). */
+typedef struct fs_tex_unit {
+    bool enabled[FS_TEX_TARGETS];    /* glEnable(GL_TEXTURE_2D) on this unit */
+    fs_tex_object *bound[FS_TEX_TARGETS];
+    fs_tex_env env;
+} fs_tex_unit;
+
 struct fs_texture_state {
-    bool enabled_2d;            /* glEnable(GL_TEXTURE_2D) */
-    fs_tex_object default_2d;   /* texture object 0 (3.8.12) */
-    fs_tex_object *bound;       /* the current 2D texture */
+    fs_tex_object default_obj[FS_TEX_TARGETS]; /* texture object 0 of each target (3.8.12) */
+    fs_tex_unit unit[FS_MAX_TEXTURE_UNITS];
     fs_tex_object **objects;    /* named objects, unordered */
     size_t count, cap;
     GLuint next_name;           /* where glGenTextures starts looking */
-    /* texture environment (3.8.13) */
-    GLenum env_mode;
-    float env_color[4];
     uint64_t quads_sampled, quads_incomplete;
+    /* GL_PROXY_TEXTURE_2D's levels (3.8.11): state only, no texels. */
+    fs_tex_image proxy_2d[FS_TEX_MAX_LEVELS];
     /* Footprint filters (units/footprint.h) by M (8, 16, 32, 64), snapping
      * (integer, mid-point) and hybrid, created on first use: each holds
      * its weighting ROMs. */
     struct fs_footprint_filter *footprint[4][2][2];
 };
 
+/* The active texture unit (glActiveTexture, 2.7), and its 2D texture. */
+static inline fs_tex_unit *fs_tex_active(const fs_context *c) { return &c->texture->unit[fs_active_unit(c)]; }
+static inline fs_tex_object *fs_tex_bound_2d(const fs_context *c) { return fs_tex_active(c)->bound[FS_TEX_2D]; }
+
+/* ---- level of detail (texture_lod.c) ---- */
+void fs_tex_lod_defaults(fs_tex_object *t);
+/* glTexParameter of BASE_LEVEL, MAX_LEVEL, MIN_LOD, MAX_LOD, LOD_BIAS or
+ * GENERATE_MIPMAP: 1 when pname is one of them (*err then says whether
+ * the value was refused, nothing changed), 0 otherwise. */
+int fs_tex_lod_parameter(fs_tex_object *t, GLenum pname, float v, GLenum *err);
+/* glTexParameterfv's conversion of the value of pname (before
+ * fs_tex_lod_parameter). */
+void fs_tex_lod_vector_form(GLenum pname, float *v);
+/* Their values for glGetTexParameterfv (v) and iv (iv); 0 for another pname. */
+int fs_tex_lod_value(const fs_tex_object *t, GLenum pname, float *v, GLint *iv);
+/* The texture unit's LOD bias (GL_TEXTURE_FILTER_CONTROL), behind an
+ * accessor so per-unit state can move without touching the sampler; its
+ * glTexEnv and glGetTexEnv (false: the error is set). */
+float fs_tex_unit_lod_bias(const fs_context *c, int unit);
+bool fs_tex_filter_control(fs_context *c, GLenum pname, float v);
+bool fs_tex_filter_control_value(fs_context *c, GLenum pname, float *v, GLint *iv);
+/* lambda's adjustments as llvmpipe's sampler takes them (3.8.8): the
+ * summed bias, the clamps and which of them apply. */
+typedef struct fs_tex_lod {
+    float bias, min_lod, max_lod;
+    bool apply_min, apply_max, fixed;
+} fs_tex_lod;
+void fs_tex_lod_params(const fs_tex_object *t, float unit_bias, fs_tex_lod *p);
+/* After an image of `level` of t was specified or changed: GENERATE_MIPMAP's
+ * regeneration of the levels below the base level. */
+void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int level);
+/* The wraps llvmpipe filters in 8-bit fixed point (gallivm
+ * lp_is_simple_wrap_mode); the others take its float path. */
+static inline bool fs_tex_simple_wrap(GLenum w) { return w == GL_REPEAT || w == GL_CLAMP_TO_EDGE; }
 /* Completeness of an object, cached (3.8.10). */
 bool fs_tex_complete(fs_tex_object *t);
 /* Whether sampling a quad with this texture depends on the quad sharing

@@ -21,15 +21,17 @@
  *   round(s * w * 256) - 128 as a 24.8 fixed-point texel position, whose 8
  *   fraction bits are the bilinear weights; lerps are 8-bit with rounding;
  *   the two MIPmap levels are blended with weight trunc(frac(lambda)*256).
- * - GL_CLAMP on either axis (with any filter) is filtered in float, as
- *   llvmpipe's "SoA" path does; LINEAR then reaches the border colour,
- *   taken as a texel of the image's base format.  With min and mag image
+ * - GL_CLAMP, CLAMP_TO_BORDER or MIRRORED_REPEAT on either axis (with any
+ *   filter) is filtered in float, as llvmpipe's "SoA" path does; LINEAR
+ *   with CLAMP and CLAMP_TO_BORDER then reaches the border colour (NEAREST
+ *   too with CLAMP_TO_BORDER), taken as a texel of the image's base format.  With min and mag image
  *   filters that differ, a quad's NEAREST pixels go through the LINEAR code
  *   (rounded weights) when the quad sharing its 8-wide vector uses LINEAR.
  * - With an odd framebuffer height llvmpipe's quads are one row off the
  *   model's; each row takes lambda from the quad llvmpipe puts it in.
  * - The texel becomes a float c/255 and the environment is computed in
  *   float; the colour buffer conversion rounds it (fragment_stages.h).
+ *   GL_COMBINE's arithmetic is texture_combine.c's.
  */
 #include <math.h>
 #include <string.h>
@@ -99,9 +101,46 @@ static float fast_log2(float x)
     return ipart + fpart;
 }
 
-static void select_lod(const fs_tex_object *t, const float s[4], const float tt[4], lod_result *r)
+/* The levels of a MIPmap filter from lambda (3.8.9): d = base + lambda,
+ * rounded for MIPMAP_NEAREST (ip from the caller), floor and fraction
+ * for MIPMAP_LINEAR, clamped to [first_level, last_level] with the
+ * fraction zeroed at either end (gallivm's order). */
+static void lod_levels(const fs_tex_object *t, bool linear, float lod, int ip, lod_result *r)
 {
-    const fs_tex_image *b = &t->level[0];
+    int first = t->first_level, last = t->last_level;
+    if (!linear) {
+        int l = ip < 0 ? first : ip > last - first ? last : first + ip;
+        r->level0 = r->level1 = l;
+        return;
+    }
+    float fl = floorf(lod);
+    float fpart = lod - fl;
+    if (!(fl >= 0.0f)) { /* below the base level (or NaN) */
+        r->level0 = r->level1 = first;
+        fpart = 0.0f;
+    } else if (fl >= (float)(last - first)) {
+        r->level0 = r->level1 = last;
+        fpart = 0.0f;
+    } else {
+        r->level0 = first + (int)fl;
+        r->level1 = r->level0 + 1;
+    }
+    r->weightf = fpart;
+    r->weight8 = (int)(fpart * 256.0f);
+}
+
+/* lambda (3.8.8) and the levels it selects, as llvmpipe computes them
+ * (gallivm lp_build_lod_selector): with no bias and no clamp that can
+ * apply, MIPMAP_NEAREST takes its level from the float exponent of rho^2
+ * and the min/mag decision is rho^2 > 1; otherwise lambda =
+ * 0.5 * fast_log2(rho^2) + bias, clamped to MAX_LOD then MIN_LOD (equal
+ * limits replace lambda), and MIPMAP_NEAREST rounds it to even.  rho is
+ * scaled by the base level's size (3.8.9: level_base is level 0 of the
+ * pyramid lambda describes). */
+static void select_lod(const fs_tex_object *t, const fs_tex_lod *lp, const float s[4], const float tt[4],
+                       lod_result *r)
+{
+    const fs_tex_image *b = &t->level[t->first_level];
     /* llvmpipe's quad is (upper-left, upper-right, lower-left, lower-right)
      * in its y-down frame, i.e. fs_quad pixels 2, 3, 0, 1. */
     float fw = (float)b->width, fh = (float)b->height;
@@ -111,38 +150,31 @@ static void select_lod(const fs_tex_object *t, const float s[4], const float tt[
     float ry = dsdy * dsdy + dtdy * dtdy;
     float rho2 = rx > ry ? rx : ry;
     GLenum mf = t->min_filter;
-    r->level0 = r->level1 = 0;
+    bool mip_none = mf == GL_NEAREST || mf == GL_LINEAR;
+    bool mip_nearest = mf == GL_NEAREST_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_NEAREST;
+    r->level0 = r->level1 = t->first_level;
     r->weight8 = 0;
     r->weightf = 0.0f;
-    if (mf == GL_NEAREST || mf == GL_LINEAR) {
+    bool plain = lp->bias == 0.0f && !lp->apply_min && !lp->apply_max;
+    if (plain && (mip_none || mip_nearest)) {
         r->minified = rho2 > 1.0f;
+        if (mip_nearest) /* iround(log2(sqrt(rho2))) = (floor(log2(rho2)) + 1) >> 1 */
+            lod_levels(t, false, 0.0f, exponent_of(rho2, 1) >> 1, r);
         return;
     }
-    if (mf == GL_NEAREST_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_NEAREST) {
-        /* iround(log2(sqrt(rho2))) = (floor(log2(rho2)) + 1) >> 1 */
-        int ip = exponent_of(rho2, 1) >> 1;
-        r->minified = rho2 > 1.0f;
-        r->level0 = ip < 0 ? 0 : ip > t->last_level ? t->last_level : ip;
-        r->level1 = r->level0;
-        return;
-    }
-    float lod = fast_log2(rho2) * 0.5f;
-    r->minified = lod > 0.0f;
-    float fl = floorf(lod);
-    float fpart = lod - fl;
-    int ip = (int)fl;
-    if (fl < 0.0f) {
-        r->level0 = r->level1 = 0;
-        fpart = 0.0f;
-    } else if (fl >= (float)t->last_level) {
-        r->level0 = r->level1 = t->last_level;
-        fpart = 0.0f;
+    float lod;
+    if (lp->fixed) {
+        lod = lp->min_lod;
     } else {
-        r->level0 = ip;
-        r->level1 = ip + 1;
+        lod = fast_log2(rho2) * 0.5f + lp->bias;
+        if (lp->apply_max)
+            lod = lod < lp->max_lod ? lod : lp->max_lod;
+        if (lp->apply_min)
+            lod = lod > lp->min_lod ? lod : lp->min_lod;
     }
-    r->weightf = fpart;
-    r->weight8 = (int)(fpart * 256.0f);
+    r->minified = lod > 0.0f;
+    if (!mip_none)
+        lod_levels(t, !mip_nearest, lod, mip_nearest ? to_int_round_even(lod) : 0, r);
 }
 
 /* ---- fixed-point filtering (llvmpipe's AoS path) ---- */
@@ -265,10 +297,67 @@ static void fetch_f(tex_fetch *f, const fs_tex_image *img, int x, int y, float o
         out[k] = (float)p[k] * (1.0f / 255.0f);
 }
 
+/* MIRRORED_REPEAT's fold of s into [0, 1] (GL 1.5 spec 3.8.7, mirror(a)
+ * of table 3.19 before scaling), as gallivm lp_build_coord_mirror computes
+ * it: |2 * (s/2 - round_even(s/2))|, NaN giving 0. */
+static float mirror_coord(float s)
+{
+    float h = s * 0.5f;
+    float fr = h - nearbyintf(h);
+    float m = fabsf(fr + fr);
+    return m > 0.0f ? m : 0.0f;
+}
+
+/* The texel NEAREST takes on one axis in the float path (3.8.7); outside
+ * [0, len) for CLAMP_TO_BORDER, which fetch_f answers with the border. */
+static int nearest_coord_f(float s, int len, GLenum wrap)
+{
+    float lf = (float)len;
+    switch (wrap) {
+    case GL_REPEAT:
+        return to_int_floor(s * lf) & (len - 1);
+    case GL_MIRRORED_REPEAT: {
+        int x = to_int_floor(mirror_coord(s) * lf); /* truncation: the fold is >= 0 */
+        return x < len - 1 ? x : len - 1;
+    }
+    case GL_CLAMP_TO_BORDER: {
+        int x = to_int_floor(s * lf);
+        return x < -1 ? -1 : x > len ? len : x;
+    }
+    default: { /* CLAMP, CLAMP_TO_EDGE */
+        int x = to_int_floor(s * lf);
+        return x < 0 ? 0 : x >= len ? len - 1 : x;
+    }
+    }
+}
+
+/* The texel pair and weight of LINEAR on one axis in the float path
+ * (3.8.8, eq. 3.22), by gallivm's rules for each wrap mode. */
 static void linear_coord_f(float s, int len, GLenum wrap, int *i0, int *i1, float *frac)
 {
     float lf = (float)len;
     float u = s * lf;
+    if (wrap == GL_MIRRORED_REPEAT) {
+        /* Folded, scaled, then the pair clamped into the image. */
+        u = mirror_coord(s) * lf - 0.5f;
+        float fl = floorf(u);
+        *frac = u - fl;
+        int x0 = to_int_floor(fl);
+        *i0 = x0 > 0 ? x0 : 0;
+        *i1 = x0 + 1 < len - 1 ? x0 + 1 : len - 1;
+        return;
+    }
+    if (wrap == GL_CLAMP_TO_BORDER) {
+        /* Clamped to [-1, len + 1] in texel space after the half-texel
+         * shift: a pair outside the image reads the border colour. */
+        u = u - 0.5f;
+        u = u < -1.0f ? -1.0f : u > lf + 1.0f ? lf + 1.0f : u;
+        float fl = floorf(u);
+        *frac = u - fl;
+        *i0 = to_int_floor(fl);
+        *i1 = *i0 + 1;
+        return;
+    }
     if (wrap == GL_REPEAT) {
         /* The float path also filters a REPEAT axis when the other one
          * clamps. */
@@ -291,7 +380,7 @@ static void linear_coord_f(float s, int len, GLenum wrap, int *i0, int *i1, floa
         *i1 = *i0 + 1;
         return;
     }
-    /* CLAMP_TO_EDGE (and the unmodelled modes) */
+    /* CLAMP_TO_EDGE */
     u = u < 0.5f ? 0.5f : u > lf - 0.5f ? lf - 0.5f : u;
     u = u - 0.5f;
     float fl = floorf(u);
@@ -308,10 +397,8 @@ static void sample_level_f(tex_fetch *f, int level, GLenum filter, float s, floa
     const fs_tex_object *t = f->t;
     const fs_tex_image *img = &t->level[level];
     if (filter == GL_NEAREST) {
-        int x = to_int_floor(s * (float)img->width), y = to_int_floor(tt * (float)img->height);
-        x = t->wrap_s == GL_REPEAT ? x & (img->width - 1) : x < 0 ? 0 : x >= img->width ? img->width - 1 : x;
-        y = t->wrap_t == GL_REPEAT ? y & (img->height - 1) : y < 0 ? 0 : y >= img->height ? img->height - 1 : y;
-        fetch_f(f, img, x, y, out);
+        fetch_f(f, img, nearest_coord_f(s, img->width, t->wrap_s), nearest_coord_f(tt, img->height, t->wrap_t),
+                out);
         return;
     }
     int x0, x1, y0, y1;
@@ -355,11 +442,11 @@ static void sample_level_fv(tex_fetch *f, int level, GLenum filter, bool via_lin
 
 static inline float clamp01(float v) { return v < 0.0f ? 0.0f : v > 1.0f ? 1.0f : v; }
 
-static void apply_env(const struct fs_texture_state *st, GLenum base, const float tex[4], float col[4])
+static void apply_env(const fs_tex_env *env, GLenum base, const float tex[4], float col[4])
 {
-    const float *cc = st->env_color;
+    const float *cc = env->color;
     float lt = tex[0], at = tex[3];
-    switch (st->env_mode) {
+    switch (env->mode) {
     case GL_REPLACE:
         switch (base) {
         case GL_ALPHA: col[3] = at; break;
@@ -409,15 +496,17 @@ static void apply_env(const struct fs_texture_state *st, GLenum base, const floa
 
 /* ---- GL_FRAGSIM_footprint_filter (units/footprint.h) ---- */
 
-/* The bound object's complete pyramid, read-only (texture_filter.h). */
+/* The bound object's complete pyramid, read-only (texture_filter.h): its
+ * level 0 is the base level (3.8.9). */
 static void tex_mip_view(const fs_tex_object *t, fs_mip_view *v)
 {
     memset(v, 0, sizeof *v);
-    v->levels = t->last_level + 1;
+    v->levels = t->last_level - t->first_level + 1;
     for (int l = 0; l < v->levels; l++) {
-        v->width[l] = t->level[l].width;
-        v->height[l] = t->level[l].height;
-        v->texels[l] = t->level[l].texels;
+        const fs_tex_image *img = &t->level[t->first_level + l];
+        v->width[l] = img->width;
+        v->height[l] = img->height;
+        v->texels[l] = img->texels;
     }
     /* GL_CLAMP has no border colour in the footprint filters (edge texels,
      * see the extension's Issues). */
@@ -442,7 +531,8 @@ void fs_tex_footprint_texel(const fs_tex_object *t, int level, int *x, int *y)
 /* Samples the covered pixels of a minified quad with the footprint filter:
  * each pixel's footprint is the parallelogram of the quad's differences
  * along its own row and column (the affine footprint, texture_filter.h). */
-static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const float s[4], const float tt[4])
+static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const float s[4], const float tt[4],
+                           float (*texel)[4])
 {
     struct fs_texture_state *st = c->texture;
     int mi = t->footprint_budget == 8 ? 0 : t->footprint_budget == 16 ? 1 : t->footprint_budget == 32 ? 2 : 3;
@@ -456,8 +546,8 @@ static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const fl
     }
     fs_mip_view mv;
     tex_mip_view(t, &mv);
-    double w = t->level[0].width, h = t->level[0].height;
-    GLenum base = t->level[0].base_format;
+    const fs_tex_image *b = &t->level[t->first_level];
+    double w = b->width, h = b->height;
     fs_filter_out fo[4]; /* what each pixel read, for the observer */
     for (int i = 0; i < 4; i++) {
         if (!(q->mask & (1u << i)))
@@ -479,6 +569,8 @@ static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const fl
             fs_footprint_filter_run(*fp, &mv, &f, &o, &lookups);
         else
             fs_filter_footprint(&mv, &f, NULL, &o);
+        for (int r = 0; r < o.nrects && r < 2; r++)
+            o.rect[r].level += t->first_level; /* the object's level numbers */
         switch (o.cls) {
         case FS_FP_CLASS_BILINEAR0: c->stats.tex_fp_bilinear0++; break;
         case FS_FP_CLASS_TRILINEAR: c->stats.tex_fp_trilinear++; break;
@@ -487,7 +579,7 @@ static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const fl
         }
         c->stats.tex_fp_texels += (uint64_t)o.texels;
         c->stats.tex_fp_rom_lookups += (uint64_t)lookups;
-        apply_env(st, base, o.rgba, q->color[i]);
+        memcpy(texel[i], o.rgba, sizeof o.rgba);
         if (c->observer)
             fo[i] = o;
     }
@@ -496,46 +588,54 @@ static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const fl
 
 /* ---- per quad ---- */
 
-static void texture_quad_aligned(fs_context *c, fs_quad *q)
+/* The texels of enabled unit u for the covered pixels of a quad whose
+ * coordinates for the unit are qt, into texel[pixel][u] (RGBA in [0, 1]);
+ * false when the unit's texture is incomplete. */
+static bool sample_unit(fs_context *c, fs_quad *q, int u, const fs_quad_tex *qt,
+                        float (*texel)[FS_MAX_TEXTURE_UNITS][4])
 {
     struct fs_texture_state *st = c->texture;
-    fs_tex_object *t = st->bound;
-    if (!st->enabled_2d)
-        return;
+    fs_tex_object *t = st->unit[u].bound[FS_TEX_2D];
     if (!fs_tex_complete(t)) {
         /* 3.8.10: texturing is as if disabled for the unit. */
         st->quads_incomplete++;
-        return;
+        return false;
     }
     st->quads_sampled++;
     float s[4], tt[4];
     for (int i = 0; i < 4; i++) {
-        float oq = 1.0f / q->tex[i][3];
-        s[i] = q->tex[i][0] * oq;
-        tt[i] = q->tex[i][1] * oq;
+        float oq = 1.0f / qt->tex[i][3];
+        s[i] = qt->tex[i][0] * oq;
+        tt[i] = qt->tex[i][1] * oq;
     }
+    fs_tex_lod lp;
+    fs_tex_lod_params(t, fs_tex_unit_lod_bias(c, u), &lp);
     lod_result lr;
-    select_lod(t, s, tt, &lr);
+    select_lod(t, &lp, s, tt, &lr);
     GLenum mf = t->min_filter;
     if ((mf == GL_FOOTPRINT_FRAGSIM || mf == GL_FOOTPRINT_HYBRID_FRAGSIM) && lr.minified) {
-        footprint_quad(c, t, q, s, tt);
-        return;
+        float fp[4][4];
+        footprint_quad(c, t, q, s, tt, fp);
+        for (int i = 0; i < 4; i++)
+            memcpy(texel[i][u], fp[i], sizeof fp[i]);
+        return true;
     }
     GLenum img_filter = (mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR)
                             ? GL_LINEAR : GL_NEAREST;
     bool mip_linear = mf == GL_NEAREST_MIPMAP_LINEAR || mf == GL_LINEAR_MIPMAP_LINEAR;
     if (!lr.minified && t->mag_filter != img_filter) {
-        /* Magnification: level 0 (lambda <= 0 selects the base level),
-         * one image, mag filter. */
+        /* Magnification: lambda <= 0 selects the base level, one image,
+         * mag filter (3.8.9). */
         img_filter = t->mag_filter;
         mip_linear = false;
-        lr.level0 = lr.level1 = 0;
+        lr.level0 = lr.level1 = t->first_level;
     }
     /* llvmpipe filters in 8-bit fixed point only with the "simple" wraps
-     * REPEAT and CLAMP_TO_EDGE (gallivm lp_is_simple_wrap_mode); GL_CLAMP
-     * on either axis takes the float path, whatever the filter (its MIPmap
-     * blend then rounds differently, and LINEAR reaches the border). */
-    bool float_path = t->wrap_s == GL_CLAMP || t->wrap_t == GL_CLAMP;
+     * REPEAT and CLAMP_TO_EDGE (gallivm lp_is_simple_wrap_mode); another
+     * wrap (CLAMP, CLAMP_TO_BORDER, MIRRORED_REPEAT) on either axis takes
+     * the float path, whatever the filter (its MIPmap blend then rounds
+     * differently, and LINEAR may reach the border). */
+    bool float_path = !fs_tex_simple_wrap(t->wrap_s) || !fs_tex_simple_wrap(t->wrap_t);
     bool via_linear = false;
     if (float_path && img_filter == GL_NEAREST && c->raster.tex_pair_lod && fs_tex_pair_decides(t)) {
         /* This quad samples NEAREST; it goes through the LINEAR code when
@@ -543,17 +643,16 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
          * uses LINEAR, i.e. takes the image filter that is LINEAR. */
         float ps[4], pt[4];
         for (int i = 0; i < 4; i++) {
-            const float *v = q->tex_pair[1 + (i >> 1)][i & 1];
+            const float *v = qt->tex_pair[1 + (i >> 1)][i & 1];
             float oq = 1.0f / v[3];
             ps[i] = v[0] * oq;
             pt[i] = v[1] * oq;
         }
         lod_result other;
-        select_lod(t, ps, pt, &other);
+        select_lod(t, &lp, ps, pt, &other);
         bool min_linear = mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR;
         via_linear = other.minified == min_linear;
     }
-    GLenum base = t->level[0].base_format;
     fs_tex_reads reads;
     tex_fetch f = {t, t->mpgrid, {0, 0, 0}, c->observer ? &reads : NULL, 0};
     if (c->observer)
@@ -561,7 +660,7 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
     for (int i = 0; i < 4; i++) {
         if (!(q->mask & (1u << i)))
             continue;
-        float tex[4];
+        float *tex = texel[i][u];
         f.pixel = i;
         if (float_path) {
             sample_level_fv(&f, lr.level0, img_filter, via_linear, s[i], tt[i], tex);
@@ -583,13 +682,46 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
             for (int k = 0; k < 4; k++)
                 tex[k] = (float)v[k] * (1.0f / 255.0f);
         }
-        apply_env(st, base, tex, q->color[i]);
     }
     if (f.mpgrid)
         fs_mpgrid_gl_work_done(f.mpgrid, &f.work);
     FS_OBSERVE(c, texture, t, q, &reads);
     if (f.work.reloads)
         FS_OBSERVE(c, ctr_reloads, f.work.reloads);
+    return true;
+}
+
+/* 3.8.13: every enabled unit's texel first (a GL_COMBINE source may name
+ * another unit's, the crossbar), then the environments unit after unit,
+ * each on the previous one's result; tc[u] holds unit u's coordinates. */
+static void texture_units(fs_context *c, fs_quad *q, const fs_quad_tex *tc)
+{
+    float texel[4][FS_MAX_TEXTURE_UNITS][4];
+    unsigned valid = 0;
+    FS_FOR_EACH_UNIT(u, c->raster.tex_mask)
+        if (sample_unit(c, q, (int)u, &tc[u], texel))
+            valid |= 1u << u;
+    if (!valid)
+        return;
+    const struct fs_texture_state *st = c->texture;
+    float primary[4][4]; /* GL_PRIMARY_COLOR: the colour before texturing */
+    memcpy(primary, q->color, sizeof primary);
+    FS_FOR_EACH_UNIT(u, valid) {
+        const fs_tex_env *env = &st->unit[u].env;
+        GLenum base = st->unit[u].bound[FS_TEX_2D]->level[st->unit[u].bound[FS_TEX_2D]->first_level].base_format;
+        for (int i = 0; i < 4; i++) {
+            if (!(q->mask & (1u << i)))
+                continue;
+            if (env->mode == GL_COMBINE) {
+                fs_combine_inputs in = {(int)u, valid, (const float(*)[4])texel[i], primary[i], q->color[i]};
+                float out[4];
+                fs_tex_combine(env, &in, out);
+                memcpy(q->color[i], out, sizeof out);
+            } else {
+                apply_env(env, base, texel[i][u], q->color[i]);
+            }
+        }
+    }
 }
 
 /* llvmpipe's 2x2 quads are aligned in its y-down frame (rasterizer_priv.h):
@@ -600,8 +732,9 @@ static void texture_quad_aligned(fs_context *c, fs_quad *q)
  * differences.  quads_sampled then counts llvmpipe's quads. */
 void fs_texture_quad(fs_context *c, fs_quad *q)
 {
-    if (!(c->fb.height & 1) || !c->texture->enabled_2d) {
-        texture_quad_aligned(c, q);
+    /* 3.8.13: each enabled unit's result is the next one's fragment colour. */
+    if (!(c->fb.height & 1)) {
+        texture_units(c, q, q->unit);
         return;
     }
     for (int half = 0; half < 2; half++) {
@@ -611,19 +744,29 @@ void fs_texture_quad(fs_context *c, fs_quad *q)
         if (!row_mask)
             continue;
         int own = half ? 0 : 2, other = half ? 2 : 0, src = half ? 2 : 0;
-        fs_quad h = *q;
+        /* The quad llvmpipe shades: its colours, depths and position (its
+         * coordinates are built per unit below, not copied). */
+        fs_quad h;
+        h.x = q->x;
+        h.y = half ? q->y + 1 : q->y - 1;
+        h.mask = row_mask << own;
+        h.front_facing = q->front_facing;
         for (int j = 0; j < 2; j++) {
-            memcpy(h.tex[own + j], q->tex[src + j], sizeof h.tex[0]);
-            memcpy(h.tex[other + j], half ? q->tex_above[j] : q->tex_below[j], sizeof h.tex[0]);
             memcpy(h.color[own + j], q->color[src + j], sizeof h.color[0]);
             h.z[own + j] = q->z[src + j];
         }
-        /* The partner quad's rows move with the quad (fs_quad.tex_pair). */
-        memcpy(h.tex_pair[1], q->tex_pair[half ? 2 : 0], sizeof h.tex_pair[0]);
-        memcpy(h.tex_pair[2], q->tex_pair[half ? 3 : 1], sizeof h.tex_pair[0]);
-        h.y = half ? q->y + 1 : q->y - 1;
-        h.mask = row_mask << own;
-        texture_quad_aligned(c, &h);
+        fs_quad_tex ht[FS_MAX_TEXTURE_UNITS];
+        FS_FOR_EACH_UNIT(u, c->raster.tex_mask) {
+            const fs_quad_tex *qt = &q->unit[u];
+            for (int j = 0; j < 2; j++) {
+                memcpy(ht[u].tex[own + j], qt->tex[src + j], sizeof ht[u].tex[0]);
+                memcpy(ht[u].tex[other + j], half ? qt->tex_above[j] : qt->tex_below[j], sizeof ht[u].tex[0]);
+            }
+            /* The partner quad's rows move with the quad (fs_quad_tex.tex_pair). */
+            memcpy(ht[u].tex_pair[1], qt->tex_pair[half ? 2 : 0], sizeof ht[u].tex_pair[0]);
+            memcpy(ht[u].tex_pair[2], qt->tex_pair[half ? 3 : 1], sizeof ht[u].tex_pair[0]);
+        }
+        texture_units(c, &h, ht);
         for (int j = 0; j < 2; j++)
             memcpy(q->color[src + j], h.color[own + j], sizeof h.color[0]);
     }

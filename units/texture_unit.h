@@ -1,7 +1,9 @@
 /*
  * The GL texture unit (GL 1.5 spec 3.8): texture objects, 2D images and
  * their MIPmap levels, sampling with the six min filters, and the texture
- * environment.  One unit (unit 0), 2D textures only.
+ * environment.  FS_MAX_TEXTURE_UNITS units (pipeline/rasterizer.h), each with
+ * its binding, enable and environment, applied unit after unit (3.8.13);
+ * 2D textures only.
  *
  * Where it sits: the rasterizer interpolates the texture coordinates of all
  * four pixels of a 2x2 quad (covered or not, because lambda needs the
@@ -34,18 +36,23 @@ typedef struct fs_context fs_context;
 int fs_texture_init(fs_context *c);
 void fs_texture_free(fs_context *c);
 
-/* The enable flag of a texture target (GL_TEXTURE_2D), for glEnable and
- * glIsEnabled; NULL for other caps.  After changing it call
- * fs_texture_enables_changed. */
+/* The enable flag of a texture target (GL_TEXTURE_2D) of the active unit,
+ * for glEnable and glIsEnabled; NULL for other caps.  After changing it
+ * call fs_texture_enables_changed. */
 bool *fs_texture_enable_flag(fs_context *c, GLenum cap);
-/* Re-derives c->raster.interpolate_tex from the enables. */
+/* Re-derives c->raster.interpolate_tex, tex_mask and tex_units from the
+ * enables. */
 void fs_texture_enables_changed(fs_context *c);
+/* Every unit's target enables as bits (for the enable and texture
+ * attribute groups, pipeline/state.c), and setting them back. */
+uint64_t fs_texture_enables(const fs_context *c);
+void fs_texture_set_enables(fs_context *c, uint64_t bits);
 /* The name of the bound 2D texture (glGet, glPushAttrib; pipeline/state.c). */
 GLuint fs_texture_binding_2d(const fs_context *c);
 /* The texture unit's part of the texture attribute group (GL 1.5 spec
- * 6.1.14, tables 6.16-6.20), for glPushAttrib(GL_TEXTURE_BIT): the 2D
- * binding, the parameters of the object bound and of the default object
- * (texture 0), and the texture environment.  (The GL_TEXTURE_2D enable is
+ * 6.1.14, tables 6.16-6.20), for glPushAttrib(GL_TEXTURE_BIT): each
+ * unit's 2D binding, the parameters of the object bound there, its texture
+ * environment, and the parameters of the default object (texture 0).  (The GL_TEXTURE_2D enable is
  * in the enable group too; pipeline/state.c restores it through
  * fs_texture_enable_flag.) */
 typedef struct fs_tex_params {
@@ -53,16 +60,33 @@ typedef struct fs_tex_params {
     float border[4], priority;
     int footprint_budget;         /* GL_FRAGSIM_footprint_filter's parameters */
     GLenum footprint_snap;
+    int base_level, max_level;    /* GL 1.2-1.4 level of detail (texture_lod.c) */
+    float min_lod, max_lod, lod_bias;
+    bool generate_mipmap;
 } fs_tex_params;
+/* A texture unit's environment (3.8.13, table 6.19): the mode, the
+ * constant colour and GL_COMBINE's parameters, [0] for the RGB function,
+ * [1] for the alpha one (units/texture_combine.c). */
+typedef struct fs_tex_env {
+    GLenum mode;
+    float color[4];
+    GLenum combine[2];          /* GL_COMBINE_RGB, GL_COMBINE_ALPHA */
+    GLenum source[2][3];        /* GL_SOURCEn_RGB, GL_SOURCEn_ALPHA */
+    GLenum operand[2][3];       /* GL_OPERANDn_RGB, GL_OPERANDn_ALPHA */
+    float scale[2];             /* GL_RGB_SCALE, GL_ALPHA_SCALE */
+    float lod_bias;             /* GL_TEXTURE_FILTER_CONTROL's bias (1.4, 3.8.8; texture_lod.c) */
+} fs_tex_env;
 typedef struct fs_texture_attrib {
-    GLuint binding_2d;
-    fs_tex_params bound, default_2d;
-    GLenum env_mode;
-    float env_color[4];
+    struct {
+        GLuint binding_2d;
+        fs_tex_params bound;
+        fs_tex_env env;
+    } unit[FS_MAX_TEXTURE_UNITS];
+    fs_tex_params default_2d;
 } fs_texture_attrib;
 void fs_texture_attrib_save(const fs_context *c, fs_texture_attrib *a);
-/* 6.1.14: the binding is restored first, then the parameters of the
- * object it binds; the default object's are restored whatever is bound,
+/* 6.1.14: unit by unit, the binding is restored first, then the
+ * parameters of the object it binds; the default object's are restored whatever is bound,
  * as OSMesa does (measured: test_state_table's push_pop_restores_vs_osmesa,
  * texture 0 changed while another was bound). */
 void fs_texture_attrib_restore(fs_context *c, const fs_texture_attrib *a);
@@ -80,8 +104,9 @@ GLuint fs_tex_object_name(const struct fs_tex_object *t);
 bool fs_tex_level_size(const struct fs_tex_object *t, int level, int *width, int *height);
 void fs_tex_footprint_texel(const struct fs_tex_object *t, int level, int *x, int *y);
 
-/* Applies texturing to a quad whose tex[][] holds the interpolated
- * (s, t, r, q) of all four pixels. */
+/* Applies texturing to a quad whose unit[u].tex holds the interpolated
+ * (s, t, r, q) of all four pixels for each enabled unit u, unit after unit
+ * (3.8.13). */
 void fs_texture_quad(fs_context *c, fs_quad *q);
 
 /* Sampling counters for tests: quads textured, and quads passed through
