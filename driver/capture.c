@@ -232,7 +232,7 @@ static bool buffer_calls(fs_context *c, const fs_call *call)
     int t = call->nargs > 0 && call->a[0].i == GL_ELEMENT_ARRAY_BUFFER ? 1 : 0;
     int pk, slot = fs_pointer_slot(call->cmd, &pk);
     if (slot >= 0) {
-        int k = slot < 3 ? slot : 3 + fs_client_active_unit(c); /* texcoords: the client unit's (2.8) */
+        int k = fs_array_of_slot(slot, fs_client_active_unit(c)); /* texcoords: the client unit's (2.8) */
         return fs_client_array_at(&c->arrays, k)->buffer != 0; /* else written as fake calls before the draws */
     }
     switch (call->cmd) {

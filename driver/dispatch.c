@@ -294,7 +294,8 @@ static int bad_argument(fs_context *c, fs_call *call, int k)
  * its own copy, and a draw may read no further than that copy holds. */
 
 /* The arrays that may hold such a copy, as indices of c->array_copy:
- * vertex, normal, colour, then the texture coordinates of each unit. */
+ * fs_client_array_at's (vertex, normal, colour, the texture coordinates of
+ * each unit, secondary colour, fog coordinate, edge flag, index). */
 #define N_COPIED_ARRAYS FS_CLIENT_ARRAYS
 _Static_assert(N_COPIED_ARRAYS == sizeof(((fs_context *)0)->array_copy) / sizeof(((fs_context *)0)->array_copy[0]),
                "a copy per array");
@@ -303,7 +304,7 @@ static fs_client_array *array_of_copy(fs_context *c, int i) { return fs_client_a
 
 /* The copy a pointer call of fs_pointer_slot's slot writes: a texture
  * coordinate pointer is the client active unit's (GL 1.5 spec 2.8). */
-static int copy_of_slot(const fs_context *c, int slot) { return slot < 3 ? slot : 3 + fs_client_active_unit(c); }
+static int copy_of_slot(const fs_context *c, int slot) { return fs_array_of_slot(slot, fs_client_active_unit(c)); }
 
 int fs_pointer_slot(int cmd, int *pk)
 {
@@ -313,6 +314,10 @@ int fs_pointer_slot(int cmd, int *pk)
     case FS_CMD_NormalPointer: *pk = 2; return 1; /* no size argument */
     case FS_CMD_ColorPointer: return 2;
     case FS_CMD_TexCoordPointer: return 3;
+    case FS_CMD_SecondaryColorPointer: return 4;
+    case FS_CMD_FogCoordPointer: *pk = 2; return 5;
+    case FS_CMD_EdgeFlagPointer: *pk = 1; return 6;
+    case FS_CMD_IndexPointer: *pk = 2; return 7;
     default: return -1;
     }
 }

@@ -188,11 +188,10 @@ void fs_dlist_compile(fs_context *c, const fs_call *call)
         if (!snap)
             return;
         if (fs_draw_vertex_range(&e->call, &lo, &hi)) {
-            snapshot_array(s, l, &snap->vertex, &c->arrays.vertex, c->arrays.vertex.size, lo, hi);
-            snapshot_array(s, l, &snap->normal, &c->arrays.normal, 3, lo, hi);
-            snapshot_array(s, l, &snap->color, &c->arrays.color, c->arrays.color.size, lo, hi);
-            for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
-                snapshot_array(s, l, &snap->texcoord[u], &c->arrays.texcoord[u], c->arrays.texcoord[u].size, lo, hi);
+            for (int k = 0; k < FS_CLIENT_ARRAYS; k++) {
+                const fs_client_array *a = fs_client_array_at(&c->arrays, k);
+                snapshot_array(s, l, fs_client_array_at(snap, k), a, k == 1 ? 3 : a->size, lo, hi);
+            }
         } else {
             memset(snap, 0, sizeof *snap);
         }

@@ -19,6 +19,7 @@
 #include "callset.h"
 #include "json_text.h"
 #include "../pipeline/rasterizer.h"
+#include "../pipeline/vertex_stage.h" /* FS_CLIENT_ARRAYS, fs_array_of_slot */
 
 enum skip_kind { SKIP_UNKNOWN, SKIP_UNSAFE, SKIP_WINSYS };
 
@@ -43,10 +44,14 @@ typedef struct array_track {
     size_t bytes; /* of the last pointer call's data */
 } array_track;
 
-/* In fs_pointer_slot's order, then one texture coordinate array per unit
- * (GL 1.5 spec 2.8: glClientActiveTexture selects the one the pointer and
- * client-state calls name). */
-enum { ARR_VERTEX, ARR_NORMAL, ARR_COLOR, ARR_TEXCOORD, ARR_COUNT = ARR_TEXCOORD + FS_MAX_TEXTURE_UNITS };
+/* In fs_client_array_at's order: fs_pointer_slot's, with one texture
+ * coordinate array per unit (GL 1.5 spec 2.8: glClientActiveTexture selects
+ * the one the pointer and client-state calls name). */
+enum {
+    ARR_VERTEX, ARR_NORMAL, ARR_COLOR, ARR_TEXCOORD,
+    ARR_SECONDARY = ARR_TEXCOORD + FS_MAX_TEXTURE_UNITS, ARR_FOG, ARR_EDGE, ARR_INDEX, ARR_COUNT
+};
+_Static_assert(ARR_COUNT == FS_CLIENT_ARRAYS, "one tracked array per client array");
 
 /* What the replayer knows of buffer objects (GL 1.5 spec 2.9), to turn
  * apitrace's memcpy(dest, src, n) pseudo-calls (writes through a mapping,
@@ -564,6 +569,10 @@ static int client_state_slot(const fs_replayer *r, GLenum array)
     case GL_NORMAL_ARRAY: return ARR_NORMAL;
     case GL_COLOR_ARRAY: return ARR_COLOR;
     case GL_TEXTURE_COORD_ARRAY: return ARR_TEXCOORD + r->client_unit;
+    case GL_SECONDARY_COLOR_ARRAY: return ARR_SECONDARY;
+    case GL_FOG_COORDINATE_ARRAY: return ARR_FOG;
+    case GL_EDGE_FLAG_ARRAY: return ARR_EDGE;
+    case GL_INDEX_ARRAY: return ARR_INDEX;
     default: return -1;
     }
 }
@@ -572,10 +581,13 @@ static int client_state_slot(const fs_replayer *r, GLenum array)
  * call has it: the dispatcher copies it into the context (dispatch.c). */
 static void track_pointer(fs_replayer *r, const fs_call *call, int slot, int pk)
 {
-    array_track *t = &r->arr[slot == ARR_TEXCOORD ? ARR_TEXCOORD + r->client_unit : slot];
+    int k = fs_array_of_slot(slot, r->client_unit);
+    array_track *t = &r->arr[k];
     const fs_arg *p = &call->a[pk];
-    t->size = slot == ARR_NORMAL ? 3 : (GLint)call->a[0].i;
-    t->type = (GLenum)call->a[pk - 2].i;
+    /* Normals have 3 components, fog coordinates, edge flags (bytes, no
+     * type argument) and indices 1; the others give their size first. */
+    t->size = k == ARR_NORMAL ? 3 : k >= ARR_FOG ? 1 : (GLint)call->a[0].i;
+    t->type = k == ARR_EDGE ? GL_UNSIGNED_BYTE : (GLenum)call->a[pk - 2].i;
     t->stride = (GLsizei)call->a[pk - 1].i;
     /* An offset into a bound buffer: the dispatcher checks the draw's reads
      * against the store. */

@@ -54,6 +54,8 @@ typedef struct cvert {
     float win[5];
     float col[2][4];
     float tc[FS_MAX_TEXTURE_UNITS][4]; /* the first fs_vs_setup.ntex units */
+    float fog;        /* fog coordinate (fs_pvert.fog) */
+    float col2[2][4]; /* secondary colour (fs_pvert.col2) */
     bool edge; /* the vertex's edge flag (GL 1.5 spec 2.6.2) */
 } cvert;
 
@@ -64,6 +66,8 @@ static void from_pvert(const fs_vs_setup *s, cvert *d, const fs_pvert *v)
     memcpy(d->win, v->win, sizeof d->win);
     memcpy(d->col, v->col, sizeof d->col);
     memcpy(d->tc, v->tc, (size_t)s->ntex * sizeof d->tc[0]);
+    d->fog = v->fog;
+    memcpy(d->col2, v->col2, sizeof d->col2);
 }
 
 #define LERP(t, out, in) ((out) + (t) * ((in) - (out)))
@@ -79,18 +83,26 @@ static void interp(const fs_vs_setup *s, cvert *d, float t, const cvert *out, co
     d->win[2] = d->clip[2] * oow * s->vp_scale[2] + s->vp_trans[2];
     d->win[3] = oow;
     d->win[4] = d->clip[1] * oow * s->yr_scale + s->yr_trans;
-    for (int k = 0; k < 4; k++)
+    for (int k = 0; k < 4; k++) {
         d->col[0][k] = LERP(t, out->col[0][k], in->col[0][k]);
+        d->col2[0][k] = LERP(t, out->col2[0][k], in->col2[0][k]);
+    }
     for (int u = 0; u < s->ntex; u++)
         for (int k = 0; k < 4; k++)
             d->tc[u][k] = LERP(t, out->tc[u][k], in->tc[u][k]);
     if (two)
-        for (int k = 0; k < 4; k++)
+        for (int k = 0; k < 4; k++) {
             d->col[1][k] = LERP(t, out->col[1][k], in->col[1][k]);
+            d->col2[1][k] = LERP(t, out->col2[1][k], in->col2[1][k]);
+        }
+    d->fog = LERP(t, out->fog, in->fog);
 }
 
-static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const float (*tc)[4], int ntex)
+static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const float *col2, const float (*tc)[4],
+                       int ntex, float fog)
 {
+    r->fog = fog;
+    memcpy(r->color2, col2, sizeof r->color2);
     r->x = win[0];
     r->y = win[1];
     r->z = win[2];
@@ -110,20 +122,28 @@ static int back_side(const fs_context *c, const float *a, const float *b, const 
     return front ? 0 : 1;
 }
 
-/* One triangle to the rasterizer from each vertex's window position,
- * colours (front then back, 8 floats) and texture coordinates. */
-static void emit3(fs_context *c, const fs_vs_setup *s, const float *const win[3], const float *const col[3],
-                  const float (*const tc[3])[4], const float *flat_col2, unsigned edges)
+/* What a triangle hands the rasterizer of each vertex: window position,
+ * colours and secondary colours (front then back, 8 floats each), texture
+ * coordinates (per unit) and fog coordinate; and when flat, the provoking
+ * vertex's colours and secondary colours instead. */
+typedef struct tri_src {
+    const float *win[3], *col[3], *col2[3];
+    const float (*tc[3])[4];
+    float fog[3];
+    const float *flat_col, *flat_col2;
+} tri_src;
+
+static void emit3(fs_context *c, const fs_vs_setup *s, const tri_src *t, unsigned edges)
 {
-    int side = s->two_side ? back_side(c, win[0], win[1], win[2]) : 0;
+    int side = s->two_side ? back_side(c, t->win[0], t->win[1], t->win[2]) : 0;
     /* Feedback reports each vertex's own colour also under flat shading
      * (measured on OSMesa: Mesa's feedback stage comes before flat
      * shading would apply). */
-    if (fs_render_mode_diverts(&c->rmode))
-        flat_col2 = NULL;
+    const bool flat = t->flat_col && !fs_render_mode_diverts(&c->rmode);
     fs_rvertex r[3];
     for (int i = 0; i < 3; i++)
-        to_rvertex(&r[i], win[i], (flat_col2 ? flat_col2 : col[i]) + 4 * side, tc[i], s->ntex);
+        to_rvertex(&r[i], t->win[i], (flat ? t->flat_col : t->col[i]) + 4 * side,
+                   (flat ? t->flat_col2 : t->col2[i]) + 4 * side, t->tc[i], s->ntex, t->fog[i]);
     if (fs_render_mode_diverts(&c->rmode)) {
         fs_render_mode_triangle(c, &r[0], &r[1], &r[2]);
         return;
@@ -138,12 +158,12 @@ static void emit3(fs_context *c, const fs_vs_setup *s, const float *const win[3]
 }
 
 static void emit_cverts(fs_context *c, const fs_vs_setup *s, const cvert *a, const cvert *b, const cvert *d,
-                        const float *flat_col2, unsigned edges)
+                        const float *flat_col, const float *flat_col2, unsigned edges)
 {
-    const float *const win[3] = {a->win, b->win, d->win};
-    const float *const col[3] = {a->col[0], b->col[0], d->col[0]};
-    const float (*const tc[3])[4] = {a->tc, b->tc, d->tc};
-    emit3(c, s, win, col, tc, flat_col2, edges);
+    const tri_src t = {{a->win, b->win, d->win}, {a->col[0], b->col[0], d->col[0]},
+                       {a->col2[0], b->col2[0], d->col2[0]}, {a->tc, b->tc, d->tc},
+                       {a->fog, b->fog, d->fog}, flat_col, flat_col2};
+    emit3(c, s, &t, edges);
 }
 
 /* The drawn edges of a triangle from its boundary-edge bits (0-2) and its
@@ -160,10 +180,11 @@ void fs_emit_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
                       const fs_pvert *v1, const fs_pvert *v2, int provoking, unsigned edges)
 {
     const fs_pvert *pv[3] = {v0, v1, v2};
-    const float *const win[3] = {v0->win, v1->win, v2->win};
-    const float *const col[3] = {v0->col[0], v1->col[0], v2->col[0]};
-    const float (*const tc[3])[4] = {v0->tc, v1->tc, v2->tc};
-    emit3(c, s, win, col, tc, provoking >= 0 ? pv[provoking]->col[0] : NULL, drawn_edges(edges));
+    const fs_pvert *f = provoking >= 0 ? pv[provoking] : NULL;
+    const tri_src t = {{v0->win, v1->win, v2->win}, {v0->col[0], v1->col[0], v2->col[0]},
+                       {v0->col2[0], v1->col2[0], v2->col2[0]}, {v0->tc, v1->tc, v2->tc},
+                       {v0->fog, v1->fog, v2->fog}, f ? f->col[0] : NULL, f ? f->col2[0] : NULL};
+    emit3(c, s, &t, drawn_edges(edges));
 }
 
 #define MAX_CLIPPED 16
@@ -174,12 +195,12 @@ void fs_emit_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
  * (in[i-1], in[i], in[0]) carries edge i-1 as its edge 0, the closing edge
  * n-1 as its edge 1 (last triangle) and edge 0 as its edge 2 (first). */
 static void emit_clipped(fs_context *c, const fs_vs_setup *s, cvert *const *in, const bool *bound, unsigned n,
-                         const float *flat, unsigned route)
+                         const float *flat, const float *flat2, unsigned route)
 {
     for (unsigned i = 2; i < n; i++) {
         unsigned e = (bound[i - 1] ? 1u : 0u) | (i == n - 1 && bound[n - 1] ? 2u : 0u) | (i == 2 && bound[0] ? 4u : 0u);
         unsigned v = (in[i - 1]->edge ? 1u : 0u) | (in[i]->edge ? 2u : 0u) | (in[0]->edge ? 4u : 0u);
-        emit_cverts(c, s, in[i - 1], in[i], in[0], flat, (e & v) | route);
+        emit_cverts(c, s, in[i - 1], in[i], in[0], flat, flat2, (e & v) | route);
     }
 }
 
@@ -203,10 +224,11 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
     unsigned n = 3;
     unsigned mask = v0->mask | v1->mask | v2->mask;
     const bool two = s->two_side;
-    float flat[2][4];
+    float flat[2][4], flat2[2][4] = {{0}};
     if (provoking >= 0) {
         const fs_pvert *pv[3] = {v0, v1, v2};
         memcpy(flat, pv[provoking]->col, sizeof flat);
+        memcpy(flat2, pv[provoking]->col2, sizeof flat2);
     }
     while (mask && n >= 3) {
         int plane = __builtin_ctz(mask);
@@ -278,16 +300,19 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
         c->stats.triangles_rejected++;
         return;
     }
-    emit_clipped(c, s, in, ein, n, provoking >= 0 ? &flat[0][0] : NULL, edges & FS_EDGES_ROUTE);
+    emit_clipped(c, s, in, ein, n, provoking >= 0 ? &flat[0][0] : NULL, &flat2[0][0], edges & FS_EDGES_ROUTE);
 }
 
-static void emit_line2(fs_context *c, const fs_vs_setup *s, const cvert *a, const cvert *b, const float *flat)
+/* flat: the provoking vertex when flat shading, else NULL. */
+static void emit_line2(fs_context *c, const fs_vs_setup *s, const cvert *a, const cvert *b, const fs_pvert *flat)
 {
     if (fs_render_mode_diverts(&c->rmode))
         flat = NULL; /* as emit3 */
     fs_rvertex r[2];
-    to_rvertex(&r[0], a->win, flat ? flat : a->col[0], a->tc, s->ntex);
-    to_rvertex(&r[1], b->win, flat ? flat : b->col[0], b->tc, s->ntex);
+    to_rvertex(&r[0], a->win, flat ? flat->col[0] : a->col[0], flat ? flat->col2[0] : a->col2[0], a->tc, s->ntex,
+               a->fog);
+    to_rvertex(&r[1], b->win, flat ? flat->col[0] : b->col[0], flat ? flat->col2[0] : b->col2[0], b->tc, s->ntex,
+               b->fog);
     if (fs_render_mode_diverts(&c->rmode))
         fs_render_mode_line(c, &r[0], &r[1]);
     else
@@ -299,7 +324,7 @@ void fs_emit_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
     cvert a, b;
     from_pvert(s, &a, v0);
     from_pvert(s, &b, v1);
-    emit_line2(c, s, &a, &b, s->flat ? v1->col[0] : NULL);
+    emit_line2(c, s, &a, &b, s->flat ? v1 : NULL);
 }
 
 void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1)
@@ -333,7 +358,7 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
             d->win[3] = oow;
             d->win[4] = fmaf(d->clip[1] * oow, s->yr_scale, s->yr_trans);
         }
-        emit_line2(c, s, &a, &b, s->flat ? v1->col[0] : NULL);
+        emit_line2(c, s, &a, &b, s->flat ? v1 : NULL);
         return;
     }
     if (v0->mask & v1->mask)
@@ -371,7 +396,7 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
     }
     if (!(pa->clip[3] > 0.0f) || !(pb->clip[3] > 0.0f))
         return;
-    emit_line2(c, s, pa, pb, s->flat ? v1->col[0] : NULL);
+    emit_line2(c, s, pa, pb, s->flat ? v1 : NULL);
 }
 
 void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)
@@ -384,6 +409,8 @@ void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)
     r.y_raster = v->win[4];
     memcpy(r.color, v->col[0], sizeof r.color);
     memcpy(r.tex, v->tc, (size_t)s->ntex * sizeof r.tex[0]);
+    r.fog = v->fog;
+    memcpy(r.color2, v->col2[0], sizeof r.color2);
     if (fs_render_mode_diverts(&c->rmode))
         fs_render_mode_point(c, &r);
     else

@@ -59,10 +59,6 @@ struct fs_context {
     GLint pack_skip_pixels, pack_skip_rows, pack_image_height, pack_skip_images;
     GLint unpack_swap_bytes, unpack_lsb_first, pack_swap_bytes, pack_lsb_first;
     bool unmodelled_caps[48];     /* enables fragsim stores but does not model (driver/gl_state.c) */
-    /* Client-state enables of the arrays fragsim does not fetch yet (edge
-     * flag, index, fog coordinate, secondary colour; GL 1.5 spec 2.8), kept
-     * so glIsEnabled answers (pipeline/vertex_array.c). */
-    bool edge_flag_array, index_array, fog_coord_array, secondary_color_array;
     /* The window's buffers (GL 1.5 spec 4.2.1, 4.3.2, table 6.34): one colour
      * buffer serves front and back.  double_buffered is what the captured
      * program's context was (fs_context_set_double_buffered; false, as for
@@ -115,10 +111,11 @@ struct fs_context {
     void *scratch;                /* output buffer for replayed glGet and glReadPixels */
     size_t scratch_size;
     /* Copies of the array data replayed pointer calls carry, two per array
-     * (vertex, normal, colour, the texcoord array of each texture unit): a
-     * call GL rejects must not overwrite the copy the array still points
-     * at (driver/dispatch.c). */
-    struct { void *buf[2]; size_t cap[2]; } array_copy[3 + FS_MAX_TEXTURE_UNITS];
+     * (fs_client_array_at's order: vertex, normal, colour, the texcoord
+     * array of each texture unit, secondary colour, fog coordinate, edge
+     * flag, index): a call GL rejects must not overwrite the copy the
+     * array still points at (driver/dispatch.c). */
+    struct { void *buf[2]; size_t cap[2]; } array_copy[FS_CLIENT_ARRAYS];
 };
 
 /* Creates a context with a width x height framebuffer (cfg may be NULL for

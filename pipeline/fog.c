@@ -1,9 +1,21 @@
 /*
- * glFog (GL 1.5 spec 3.10): the fog parameters, stored for glGet and
- * glPushAttrib(GL_FOG_BIT).  Fog itself is not modelled: enabling GL_FOG
- * is counted as unsupported (pipeline/state.def, ENU).
+ * Fog (GL 1.5 spec 3.10): glFog's parameters, stored for glGet and
+ * glPushAttrib(GL_FOG_BIT), and fog applied to fragments as llvmpipe
+ * (Mesa 22.3) applies it.  Where and how, from Mesa's fixed-function
+ * programs (ffvertex_prog.c, ff_fragment_shader.cpp, prog_statevars.c,
+ * gallivm's lp_build_exp2; read for the method, not copied) and measured
+ * against OSMesa by tests/test_fog.c:
+ * - per vertex, the fog coordinate c is |z_e|, the eye-space z's absolute
+ *   value (GL_FRAGMENT_DEPTH; GL's "eye plane absolute" distance), or the
+ *   vertex's fog coordinate (GL_FOG_COORD);
+ * - it is interpolated perspective-correctly like a colour (fs_quad.fog);
+ * - per fragment, after texturing (3.8) and before the per-fragment
+ *   operations (chapter 4): f from c in float with precomputed constants
+ *   (fs_fog_validate), clamped to [0, 1], and the colour's r, g, b
+ *   replaced by C_f (1 - f) + C_r f; alpha is left alone.
  */
-#include "context.h"
+#include <math.h>
+#include "fragment_stages.h"
 
 static float clamp01(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; }
 
@@ -91,3 +103,77 @@ void fs_exec_Fogi(fs_context *c, GLenum pname, GLint param)
     const GLint v[4] = {param, 0, 0, 0};
     fs_exec_Fogiv(c, pname, v);
 }
+
+/* The constants of llvmpipe's fog (Mesa's "optimized" fog parameters),
+ * rounded to float as Mesa rounds them: LINEAR as one multiply-add
+ * c (-1/(e - s)) + e/(e - s), 1 when e == s; EXP and EXP2 as 2^-x with
+ * the density divided by ln 2, respectively sqrt(ln 2), in double. */
+void fs_fog_validate(fs_context *c)
+{
+    fs_fog_state *f = &c->st.fog;
+    float v = f->end == f->start ? 1.0f : -1.0f / (f->end - f->start);
+    f->params[0] = v;
+    f->params[1] = f->end * -v;
+    f->params[2] = (float)((double)f->density * 1.44269504088896340736);  /* 1 / ln 2 */
+    f->params[3] = (float)((double)f->density * 1.201122408786449815);    /* 1 / sqrt(ln 2) */
+}
+
+/* 2^x as llvmpipe's shaders compute it (gallivm's lp_build_exp2): x
+ * clamped to [-126.99999, 128], 2^floor(x) made in the exponent bits and
+ * 2^fraction from a degree-5 minimax polynomial, its even and odd terms
+ * summed apart in fused multiply-adds; an approximation, so not exp2f. */
+static float lp_exp2(float x)
+{
+    static const float k[6] = {1.0f, 0.693153073200168932794f, 0.240153617044375388211f,
+                               0.0558263180532956664775f, 0.00898934009049466391101f,
+                               0.00187757667519147912699f};
+    if (!(x < 128.0f))
+        x = x == x ? 128.0f : x;
+    if (!(x > -126.99999f))
+        x = -126.99999f; /* NaN too: nothing defines fog of a NaN coordinate */
+    float ip = floorf(x);
+    float fp = x - ip;
+    float x2 = fp * fp;
+    float odd = fmaf(x2, fmaf(x2, k[5], k[3]), k[1]);
+    float even = fmaf(x2, fmaf(x2, k[4], k[2]), k[0]);
+    float poly = fmaf(odd, fp, even);
+    union { uint32_t u; float f; } e = {(uint32_t)((int32_t)ip + 127) << 23};
+    return e.f * poly;
+}
+
+/* The fog factor f of coordinate z (3.10 eqs. 3.27-3.29), clamped. */
+static float fog_factor(const fs_fog_state *f, float z)
+{
+    float t;
+    switch (f->mode) {
+    case GL_LINEAR: t = z * f->params[0] + f->params[1]; break;
+    case GL_EXP: t = lp_exp2(-(z * f->params[2])); break;
+    default: {
+        float d = z * f->params[3];
+        t = lp_exp2(-(d * d));
+        break;
+    }
+    }
+    return t > 0.0f ? (t < 1.0f ? t : 1.0f) : 0.0f;
+}
+
+void fs_fog_quad(fs_context *c, fs_quad *q, unsigned mask)
+{
+    const fs_fog_state *f = &c->st.fog;
+    if (!c->raster.interpolate_fog)
+        return; /* a quad from no vertex stage carries no fog coordinate */
+    for (int i = 0; i < 4; i++) {
+        if (!(mask >> i & 1u))
+            continue;
+        float t = fog_factor(f, q->fog[i]);
+        float u = 1.0f - t;
+        for (int k = 0; k < 3; k++)
+            q->color[i][k] = f->color[k] * u + q->color[i][k] * t;
+    }
+}
+
+/* glFogCoord (2.7): the current fog coordinate, not clamped. */
+void fs_exec_FogCoordf(fs_context *c, GLfloat coord) { c->current.fog_coord = coord; }
+void fs_exec_FogCoordd(fs_context *c, GLdouble coord) { c->current.fog_coord = (float)coord; }
+void fs_exec_FogCoordfv(fs_context *c, const GLfloat *coord) { c->current.fog_coord = coord[0]; }
+void fs_exec_FogCoorddv(fs_context *c, const GLdouble *coord) { c->current.fog_coord = (float)coord[0]; }

@@ -100,6 +100,12 @@ fs_quad_work fs_fragment_quad_general(fs_context *c, fs_quad *q)
     unsigned m = q->mask & 0xfu, n;
     fs_quad_work w = {0, 0, 0};
 
+    /* The colour sum (GL 1.5 spec 3.9) and fog (3.10) end the
+     * rasterization stage, before 4.1. */
+    if ((f->key & FS_FKEY_COLOR_SUM) && c->raster.interpolate_color2)
+        fs_color_sum_quad(q, m);
+    if (f->key & FS_FKEY_FOG)
+        fs_fog_quad(c, q, m);
     n = ownership_mask(c, q->x, q->y, m);
     c->stats.killed_ownership += fs_popcount4(m & ~n);
     m = n;
@@ -242,7 +248,8 @@ quad_fast(fs_context *c, const fs_quad *q, enum depth_mode zmode, bool zwrite, e
  * blending when the variant has them. */
 #define FAST_MASK                                                                             \
     (FS_FKEY_NO_COLOR | FS_FKEY_SUPPRESS | FS_FKEY_SCISSOR | FS_FKEY_ALPHA | FS_FKEY_STENCIL | \
-     FS_FKEY_LOGIC | FS_FKEY_COLOR_MASK_MASK | FS_FKEY_DEPTH | FS_FKEY_BLEND)
+     FS_FKEY_LOGIC | FS_FKEY_COLOR_MASK_MASK | FS_FKEY_DEPTH | FS_FKEY_BLEND | FS_FKEY_FOG | \
+     FS_FKEY_COLOR_SUM)
 #define FAST_VALUE (15u << FS_FKEY_COLOR_MASK_SHIFT)
 #define DEPTH_MASK(z) ((z) ? FS_FKEY_DEPTH_WRITE | FS_FKEY_DEPTH_FUNC_MASK : 0u)
 #define DEPTH_VALUE(z, zwrite) \

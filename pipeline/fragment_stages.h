@@ -33,6 +33,14 @@ static inline unsigned fs_popcount4(unsigned m)
 /* fragment_ops.c: the stage-by-stage path every fast path must match. */
 fs_quad_work fs_fragment_quad_general(fs_context *c, fs_quad *q);
 
+/* fog.c (GL 1.5 spec 3.10): fog applied to the colours of the quad pixels
+ * in mask, before the per-fragment operations; and its constants, derived
+ * by the validation step from the GL_FOG_BIT state. */
+void fs_fog_quad(fs_context *c, fs_quad *q, unsigned mask);
+void fs_fog_validate(fs_context *c);
+/* color_sum.c (3.9): the secondary colours added to the primary ones. */
+void fs_color_sum_quad(fs_quad *q, unsigned mask);
+
 /* scissor.c: the mask of quad pixels inside the scissor box. */
 unsigned fs_scissor_quad(const fs_context *c, int qx, int qy, unsigned mask);
 /* The scissor box clipped to the window as [x0,x1) x [y0,y1); used by

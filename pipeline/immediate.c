@@ -60,17 +60,18 @@ void fs_vertex_stage_init(fs_context *c)
     c->current.normal[2] = 1.0f;
     for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
         c->current.texcoord[u][3] = 1.0f;
+    c->current.secondary_color[3] = 1.0f;
 
+    /* Tables 6.6-6.8: sizes and types in fs_pointer_slot's order (the edge
+     * flag's bytes have no GL type of their own). */
+    static const struct { GLint size; GLenum type; } array_init[FS_ARRAY_SLOTS] = {
+        {4, GL_FLOAT}, {3, GL_FLOAT}, {4, GL_FLOAT}, {4, GL_FLOAT},
+        {3, GL_FLOAT}, {1, GL_FLOAT}, {1, GL_UNSIGNED_BYTE}, {1, GL_FLOAT}};
     memset(&c->arrays, 0, sizeof c->arrays);
-    c->arrays.vertex.size = 4;
-    c->arrays.vertex.type = GL_FLOAT;
-    c->arrays.normal.size = 3;
-    c->arrays.normal.type = GL_FLOAT;
-    c->arrays.color.size = 4;
-    c->arrays.color.type = GL_FLOAT;
-    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
-        c->arrays.texcoord[u].size = 4;
-        c->arrays.texcoord[u].type = GL_FLOAT;
+    for (int k = 0; k < FS_CLIENT_ARRAYS; k++) {
+        int slot = k < 3 ? k : k < 3 + FS_MAX_TEXTURE_UNITS ? 3 : k + 1 - FS_MAX_TEXTURE_UNITS;
+        fs_client_array_at(&c->arrays, k)->size = array_init[slot].size;
+        fs_client_array_at(&c->arrays, k)->type = array_init[slot].type;
     }
 
     free(c->prim.impl);
@@ -126,6 +127,12 @@ bool fs_vs_reserve_idx(fs_context *c, size_t n)
 {
     fs_vs_impl *v = fs_vs(c);
     return v && grow((void **)&v->idx, &v->idx_cap, n, sizeof *v->idx);
+}
+
+bool fs_vs_reserve_edge(fs_context *c, size_t n)
+{
+    fs_vs_impl *v = fs_vs(c);
+    return v && grow((void **)&v->iv_edge, &v->iv_edge_cap, n ? n : 1, 1);
 }
 
 void fs_exec_Begin(fs_context *c, GLenum mode)
@@ -269,6 +276,8 @@ static void vertex4(fs_context *c, float x, float y, float z, float w)
     /* The units the draw reads (fs_raster_state.tex_units; enables do not
      * change between Begin and End, 2.6.3). */
     memcpy(o->tc, c->current.texcoord, (size_t)c->raster.tex_units * sizeof o->tc[0]);
+    memcpy(o->col2, c->current.secondary_color, sizeof o->col2);
+    o->fogc = c->current.fog_coord;
     c->prim.count++;
 }
 
@@ -298,16 +307,6 @@ void fs_exec_Vertex4iv(fs_context *c, const GLint *v) { vertex4(c, (float)v[0], 
 void fs_exec_Vertex4sv(fs_context *c, const GLshort *v) { vertex4(c, v[0], v[1], v[2], v[3]); }
 
 /* ---- colours (table 2.9) ---- */
-#define UB2F(x) ((float)(x) / 255.0f)
-/* Signed bytes are scaled by the float nearest 1/255, not divided by 255:
- * the two differ in the last bit for about a third of the values, and
- * OSMesa's current colour and normal are the product (measured,
- * tests/test_gl_forms.c: 100 gives 0.788235366, not 0.788235307). */
-#define B2F(x) ((2.0f * (float)(x) + 1.0f) * (1.0f / 255.0f))
-#define US2F(x) ((float)(x) / 65535.0f)
-#define S2F(x) ((2.0f * (float)(x) + 1.0f) / 65535.0f)
-#define UI2F(x) ((float)((double)(x) / 4294967295.0))
-#define I2F(x) ((float)((2.0 * (double)(x) + 1.0) / 4294967295.0))
 
 static void color4(fs_context *c, float r, float g, float b, float a)
 {

@@ -127,7 +127,6 @@ static void lightmodel_v(fs_context *c, GLenum pname, const float *p)
         }
         if (p[0] == (float)GL_SEPARATE_SPECULAR_COLOR) {
             c->lighting.color_control = GL_SEPARATE_SPECULAR_COLOR;
-            fs_unsupported(c, "glLightModel(GL_SEPARATE_SPECULAR_COLOR)");
             break;
         }
         fs_error(c, GL_INVALID_ENUM);
@@ -429,8 +428,9 @@ static float clamp01f(float v)
 
 /* One side of the lighting equation (GL 1.5 spec 2.14.1). */
 static void light_side(const fs_vs_setup *s, const fs_material *m, const float eye[4],
-                       const float n[3], float out[4])
+                       const float n[3], float out[4], float *spec_out)
 {
+    float s_r = 0.0f, s_g = 0.0f, s_b = 0.0f; /* the specular sums, when apart */
     float r = m->emission[0] + m->ambient[0] * s->model_ambient[0];
     float g = m->emission[1] + m->ambient[1] * s->model_ambient[1];
     float b = m->emission[2] + m->ambient[2] * s->model_ambient[2];
@@ -496,9 +496,25 @@ static void light_side(const fs_vs_setup *s, const fs_material *m, const float e
                 sb = spec * l->spe[2] * m->specular[2];
             }
         }
+        if (spec_out) {
+            r += att * (ar + dr);
+            g += att * (ag + dg);
+            b += att * (ab + db);
+            s_r += att * sr;
+            s_g += att * sg;
+            s_b += att * sb;
+            continue;
+        }
         r += att * (ar + dr + sr);
         g += att * (ag + dg + sg);
         b += att * (ab + db + sb);
+    }
+    if (spec_out) {
+        /* GL_SEPARATE_SPECULAR_COLOR: the secondary colour, alpha 1. */
+        spec_out[0] = clamp01f(s_r);
+        spec_out[1] = clamp01f(s_g);
+        spec_out[2] = clamp01f(s_b);
+        spec_out[3] = 1.0f;
     }
     out[0] = clamp01f(r);
     out[1] = clamp01f(g);
@@ -507,7 +523,7 @@ static void light_side(const fs_vs_setup *s, const fs_material *m, const float e
 }
 
 void fs_light_vertex(const fs_vs_setup *s, const float eye[4], const float n[3],
-                     const float col[4], float out[2][4])
+                     const float col[4], float out[2][4], float spec[2][4])
 {
     fs_material m[2];
     const fs_material *mp[2] = {&s->mat[0], &s->mat[1]};
@@ -520,9 +536,10 @@ void fs_light_vertex(const fs_vs_setup *s, const float eye[4], const float n[3],
             }
         }
     }
-    light_side(s, mp[0], eye, n, out[0]);
+    bool apart = s->separate_specular;
+    light_side(s, mp[0], eye, n, out[0], apart ? spec[0] : NULL);
     if (s->two_side) {
         float nb[3] = {-n[0], -n[1], -n[2]};
-        light_side(s, mp[1], eye, nb, out[1]);
+        light_side(s, mp[1], eye, nb, out[1], apart ? spec[1] : NULL);
     }
 }

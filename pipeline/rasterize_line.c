@@ -47,6 +47,22 @@ static void line_coef(fs_plane *p, const line_info *li, float a1, float a2)
     p->constant = dadx == 0.0f && dady == 0.0f && p->a0 == a1;
 }
 
+/* The n planes of a colour (primary, or the secondary's r, g, b): the
+ * provoking (last) vertex's as constants when flat, else divided by w when
+ * the line has perspective. */
+static void line_color_planes(fs_plane *p, int n, const line_info *li, const float *ca, const float *cb,
+                              const fs_rvertex *va, const fs_rvertex *vb, const fs_prim_setup *s)
+{
+    for (int k = 0; k < n; k++) {
+        if (s->color_constant)
+            fs_plane_constant(&p[k], cb[k]);
+        else if (s->perspective)
+            line_coef(&p[k], li, ca[k] * va->inv_w, cb[k] * vb->inv_w);
+        else
+            line_coef(&p[k], li, ca[k], cb[k]);
+    }
+}
+
 void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
 {
     const fs_raster_state *r = &c->raster;
@@ -230,21 +246,24 @@ void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
     s.front = true;
     s.height = H;
     s.use_tex = r->interpolate_tex;
+    s.use_fog = r->interpolate_fog;
     s.tex_mask = r->tex_mask;
     s.zoffset = 0.0f;
     line_coef(&s.z, &li, va->z, vb->z);
     s.perspective = !(va->inv_w == 1.0f && vb->inv_w == 1.0f);
     if (s.perspective)
         line_coef(&s.w, &li, va->inv_w, vb->inv_w);
+    if (s.use_fog && s.perspective)
+        line_coef(&s.fog, &li, va->fog * va->inv_w, vb->fog * vb->inv_w);
+    else if (s.use_fog)
+        line_coef(&s.fog, &li, va->fog, vb->fog);
     /* Flat shading: the provoking colour as a constant (fs_raster_state.flat_color). */
     s.color_constant = r->flat_color;
+    s.use_color2 = r->interpolate_color2;
+    line_color_planes(s.color, 4, &li, va->color, vb->color, va, vb, &s);
+    if (s.use_color2)
+        line_color_planes(s.color2, 3, &li, va->color2, vb->color2, va, vb, &s);
     for (int k = 0; k < 4; k++) {
-        if (s.color_constant)
-            fs_plane_constant(&s.color[k], vb->color[k]);
-        else if (s.perspective)
-            line_coef(&s.color[k], &li, va->color[k] * va->inv_w, vb->color[k] * vb->inv_w);
-        else
-            line_coef(&s.color[k], &li, va->color[k], vb->color[k]);
         if (s.use_tex)
             FS_FOR_EACH_UNIT(u, s.tex_mask) {
                 if (s.perspective)

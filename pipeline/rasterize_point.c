@@ -63,6 +63,7 @@ void fs_raster_point(fs_context *c, const fs_rvertex *v)
     s.front = true;
     s.height = H;
     s.use_tex = r->interpolate_tex;
+    s.use_fog = r->interpolate_fog;
     s.tex_mask = r->tex_mask;
     s.zoffset = 0.0f;
     fs_plane_constant(&s.z, v->z);
@@ -70,10 +71,14 @@ void fs_raster_point(fs_context *c, const fs_rvertex *v)
      * divided by the (constant) interpolated 1/w, as llvmpipe does. */
     s.perspective = v->inv_w != 1.0f;
     fs_plane_constant(&s.w, v->inv_w);
+    fs_plane_constant(&s.fog, s.perspective ? v->fog * v->inv_w : v->fog);
     /* Flat shading: the colour itself (fs_raster_state.flat_color). */
     s.color_constant = r->flat_color;
+    s.use_color2 = r->interpolate_color2;
     for (int k = 0; k < 4; k++) {
         fs_plane_constant(&s.color[k], s.perspective && !s.color_constant ? v->color[k] * v->inv_w : v->color[k]);
+        if (k < 3)
+            fs_plane_constant(&s.color2[k], s.perspective && !s.color_constant ? v->color2[k] * v->inv_w : v->color2[k]);
         if (s.use_tex)
             FS_FOR_EACH_UNIT(u, s.tex_mask)
                 fs_plane_constant(&s.tex[u][k], s.perspective ? v->tex[u][k] * v->inv_w : v->tex[u][k]);

@@ -17,6 +17,7 @@
  * (llvmpipe sets LP_INTERP_PERSPECTIVE for smooth colours).
  */
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 #include "rasterizer_priv.h"
 #include "../units/texture_unit.h"
@@ -159,10 +160,18 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
             float oow = 1.0f / PLANE_AT(&s->w, px, py);                           \
             for (int k = 0; k < 4; k++)                                           \
                 q->color[i][k] = PLANE_AT(&s->color[k], px, py) * oow;            \
+            for (int k = 0; k < 3 && s->use_color2; k++)                          \
+                q->color2[i][k] = PLANE_AT(&s->color2[k], px, py) * oow;          \
         } else {                                                                  \
             for (int k = 0; k < 4; k++)                                           \
                 q->color[i][k] = PLANE_AT(&s->color[k], px, py);                  \
+            for (int k = 0; k < 3 && s->use_color2; k++)                          \
+                q->color2[i][k] = PLANE_AT(&s->color2[k], px, py);                \
         }                                                                         \
+        /* The fog coordinate: perspective-correct whatever the shading. */   \
+        if (s->use_fog)                                                           \
+            q->fog[i] = s->perspective ? PLANE_AT(&s->fog, px, py) * (1.0f / PLANE_AT(&s->w, px, py)) \
+                                       : PLANE_AT(&s->fog, px, py);               \
     }                                                                             \
     /* Texture coordinates of all four pixels, covered or not: lambda comes \
      * from the quad's differences (GL 1.5 spec 3.8.8; llvmpipe shades   \
@@ -321,6 +330,28 @@ static void calc_coef(fs_plane *p, const coef_args *g, float a0, float a1, float
     p->dadx = dadx;
     p->dady = dady;
     p->constant = dadx == 0.0f && dady == 0.0f && p->a0 == a0;
+}
+
+/* The n planes of a colour (the primary, or the secondary's r, g, b),
+ * the float[4] at byte offset `field` of each vertex: constants of the
+ * provoking vertex (the first) when flat, else divided by w when the
+ * primitive has perspective.  With every 1/w equal to 1, llvmpipe's
+ * multiply by 1/w and divide by the interpolated 1/w (exactly 1) change
+ * nothing. */
+static void color_planes(fs_plane *p, int n, const coef_args *g, const fs_rvertex *const v[3], size_t field,
+                         const fs_prim_setup *s)
+{
+    const float *col[3];
+    for (int i = 0; i < 3; i++)
+        col[i] = (const float *)(const void *)((const char *)v[i] + field);
+    for (int k = 0; k < n; k++) {
+        if (s->color_constant)
+            fs_plane_constant(&p[k], col[0][k]);
+        else if (s->perspective)
+            calc_coef(&p[k], g, col[0][k] * v[0]->inv_w, col[1][k] * v[1]->inv_w, col[2][k] * v[2]->inv_w);
+        else
+            calc_coef(&p[k], g, col[0][k], col[1][k], col[2][k]);
+    }
 }
 
 static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e, const fs_tile_mask *t);
@@ -503,6 +534,7 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     s.front = front;
     s.height = H;
     s.use_tex = r->interpolate_tex;
+    s.use_fog = r->interpolate_fog;
     s.tex_mask = r->tex_mask;
     s.zoffset = 0.0f;
     /* llvmpipe's triangle setup offsets by the factor and units whenever
@@ -534,15 +566,14 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
     /* Flat shading: the provoking colour (every vertex carries it) as a
      * constant (fs_raster_state.flat_color). */
     s.color_constant = r->flat_color;
-    if (s.color_constant)
-        for (int k = 0; k < 4; k++)
-            fs_plane_constant(&s.color[k], a->color[k]);
-    if (s.perspective) {
+    if (s.perspective)
         calc_coef(&s.w, &g, a->inv_w, b->inv_w, d->inv_w);
-        for (int k = 0; k < 4 && !s.color_constant; k++) {
-            float ca = a->color[k] * a->inv_w, cb = b->color[k] * b->inv_w, cd = d->color[k] * d->inv_w;
-            calc_coef(&s.color[k], &g, ca, cb, cd);
-        }
+    const fs_rvertex *const abd[3] = {a, b, d};
+    color_planes(s.color, 4, &g, abd, offsetof(fs_rvertex, color), &s);
+    s.use_color2 = r->interpolate_color2;
+    if (s.use_color2)
+        color_planes(s.color2, 3, &g, abd, offsetof(fs_rvertex, color2), &s);
+    if (s.perspective) {
         if (s.use_tex)
             FS_FOR_EACH_UNIT(u, s.tex_mask)
                 for (int k = 0; k < 4; k++) {
@@ -550,15 +581,15 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
                     float td = d->tex[u][k] * d->inv_w;
                     calc_coef(&s.tex[u][k], &g, ta, tb, td);
                 }
+        if (s.use_fog)
+            calc_coef(&s.fog, &g, a->fog * a->inv_w, b->fog * b->inv_w, d->fog * d->inv_w);
     } else {
-        /* With every 1/w equal to 1, llvmpipe's multiply by 1/w and divide by
-         * the interpolated 1/w (exactly 1) change nothing. */
-        for (int k = 0; k < 4 && !s.color_constant; k++)
-            calc_coef(&s.color[k], &g, a->color[k], b->color[k], d->color[k]);
         if (s.use_tex)
             FS_FOR_EACH_UNIT(u, s.tex_mask)
                 for (int k = 0; k < 4; k++)
                     calc_coef(&s.tex[u][k], &g, a->tex[u][k], b->tex[u][k], d->tex[u][k]);
+        if (s.use_fog)
+            calc_coef(&s.fog, &g, a->fog, b->fog, d->fog);
     }
 
     c->stats.triangles_rasterized++;

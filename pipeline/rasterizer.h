@@ -45,6 +45,11 @@ typedef struct fs_rvertex {
      * value in 20 by one unit and rare edge pixels when the viewport
      * scale makes y_ndc * height/2 inexact. */
     float y_raster;
+    /* Fog (GL 1.5 spec 3.10), read only while fs_raster_state.interpolate_fog
+     * is set: the vertex's fog coordinate c (pipeline/fog.c). */
+    float fog;
+    /* The secondary colour (3.9), read only while interpolate_color2 is set. */
+    float color2[4];
 } fs_rvertex;
 
 /* One texture unit's coordinates in a quad. */
@@ -75,6 +80,14 @@ typedef struct fs_quad {
     /* The coordinates of the texture units in fs_raster_state.tex_mask
      * (the others are left unset). */
     fs_quad_tex unit[FS_MAX_TEXTURE_UNITS];
+    /* Only while fs_raster_state.interpolate_fog is set: the fog coordinate
+     * of each covered pixel, interpolated perspective-correctly like a
+     * colour (pipeline/fog.c applies it after texturing, GL 1.5 spec 3.10). */
+    float fog[4];
+    /* Only while fs_raster_state.interpolate_color2 is set: the secondary
+     * colour's r, g, b of each covered pixel, interpolated as the colour is
+     * (pipeline/color_sum.c adds it after texturing, GL 1.5 spec 3.9). */
+    float color2[4][3];
 } fs_quad;
 
 /* Rasterizer state set by glCullFace, glFrontFace, glPolygonOffset,
@@ -104,6 +117,11 @@ typedef struct fs_raster_state {
     int tex_units;
     /* Set by texturing when fs_quad.tex_pair is needed (see there). */
     bool tex_pair_lod;
+    /* Set by the vertex stage while GL_FOG is enabled: the fog coordinate
+     * is interpolated into fs_quad.fog (skipped otherwise). */
+    bool interpolate_fog;
+    /* Set by the vertex stage while the colour sum is on (color_sum.c). */
+    bool interpolate_color2;
     /* Selects the plain per-pixel reference rasterizer instead of the
      * incremental one; both must give identical quads (tests hold them
      * equal). */

@@ -26,6 +26,10 @@ typedef struct fs_plane {
 typedef struct fs_prim_setup {
     fs_plane z, w, color[4];
     fs_plane tex[FS_MAX_TEXTURE_UNITS][4]; /* the units in tex_mask */
+    fs_plane fog;        /* the fog coordinate, when use_fog */
+    bool use_fog;        /* interpolate it (fs_raster_state.interpolate_fog) */
+    fs_plane color2[3];  /* the secondary colour, when use_color2 (as color[]) */
+    bool use_color2;
     float zoffset;       /* polygon offset, added after interpolation */
     bool perspective;    /* false when every 1/w is 1: the division is exact then */
     bool color_constant; /* flat shading: colour planes constant, not divided by 1/w */

@@ -1,22 +1,29 @@
 /*
  * State fragsim stores for glGet and glPushAttrib (pipeline/state.def) but
- * does not model yet: what uses it (fog, stippled lines, the accumulation
- * buffer, colour index mode, glDrawPixels' zoom, multisampling) is absent or counted as unsupported where it would change
- * the image.  Each part has the file of its commands.
+ * does not model yet: what uses it (stippled lines, the accumulation
+ * buffer, colour index mode, glDrawPixels' zoom, multisampling) is absent
+ * or counted as unsupported where it would change the image; fog and the
+ * colour sum are modelled.  Each part has the file
+ * of its commands.
  */
 #ifndef FS_STORED_STATE_H
 #define FS_STORED_STATE_H
 #include <stdbool.h>
 #include <GL/gl.h>
 
-/* GL 1.5 spec 3.10, table 6.10 (pipeline/fog.c).  Enabling GL_FOG is
- * counted as unsupported. */
+/* GL 1.5 spec 3.10, table 6.10 (pipeline/fog.c, which applies it; the
+ * one part of this header that is modelled). */
 typedef struct fs_fog_state {
+    bool enabled;               /* GL_FOG: false */
     GLenum mode;                /* GL_EXP */
     float density, start, end;  /* 1, 0, 1 */
     float index;                /* 0 */
     float color[4];             /* (0, 0, 0, 0), clamped to [0, 1] */
     GLenum coord_src;           /* GL_FRAGMENT_DEPTH */
+    /* Derived by the validation step (fs_fog_validate), in no state row:
+     * the four constants llvmpipe's fragment shader takes, -1/(e - s),
+     * e/(e - s), density/ln 2 and density/sqrt(ln 2). */
+    float params[4];
 } fs_fog_state;
 
 typedef struct fs_stored_state {
@@ -41,7 +48,7 @@ typedef struct fs_stored_state {
     bool sample_alpha_to_coverage, sample_alpha_to_one, sample_coverage;
     float sample_coverage_value; /* 1, clamped to [0, 1] */
     bool sample_coverage_invert; /* false */
-    /* 3.9, table 6.10: GL_COLOR_SUM, with a secondary colour of zero. */
+    /* 3.9, table 6.10: GL_COLOR_SUM (pipeline/color_sum.c). */
     bool color_sum;
     /* 2.7, table 6.5 (pipeline/texture_select.c): the units glActiveTexture
      * and glClientActiveTexture select (read as indices through

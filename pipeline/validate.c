@@ -13,6 +13,7 @@
  */
 #include "context.h"
 #include "validate.h"
+#include "fragment_stages.h"
 
 _Static_assert(FS_FKEY_NO_COLOR == 1u && FS_FKEY_DEPTH_WRITE == 1u << 6, "the flags are bits 0-6");
 
@@ -27,6 +28,8 @@ uint32_t fs_fragment_key(const fs_context *c)
         k |= (uint32_t)flag[i] << i;
     k |= f->blend_enabled ? FS_FKEY_BLEND : 0u;
     k |= f->logic_op_enabled ? FS_FKEY_LOGIC : 0u;
+    k |= c->st.fog.enabled ? FS_FKEY_FOG : 0u;
+    k |= c->raster.interpolate_color2 ? FS_FKEY_COLOR_SUM : 0u;
     /* The setters accept only GL_NEVER..GL_ALWAYS and GL_CLEAR..GL_SET;
      * the masks keep any other value out of the neighbouring fields. */
     k |= FS_FKEY_DEPTH_FUNC(f->depth_func) & FS_FKEY_DEPTH_FUNC_MASK;
@@ -57,6 +60,8 @@ void fs_validate(fs_context *c)
 {
     uint32_t dirty = c->dirty;
     c->dirty = 0;
+    if (dirty & GL_FOG_BIT)
+        fs_fog_validate(c);
     if (dirty & FS_FRAGMENT_KEY_GROUPS)
         validate_fragment(c);
 }

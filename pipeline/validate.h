@@ -34,6 +34,8 @@
  * factors or another equation (GL 1.4, 4.1.8).  The constant colour is not
  * in the key: only the general path reads it. */
 #define FS_FKEY_BLEND_EXT (1u << 28)
+#define FS_FKEY_FOG (1u << 29)         /* GL_FOG, 3.10: only the general path fogs */
+#define FS_FKEY_COLOR_SUM (1u << 30)   /* 3.9, fs_raster_state.interpolate_color2: likewise */
 
 #define FS_FKEY_DEPTH_FUNC_MASK (7u << FS_FKEY_DEPTH_FUNC_SHIFT)
 #define FS_FKEY_BLEND_SRC_MASK (15u << FS_FKEY_BLEND_SRC_SHIFT)
@@ -60,7 +62,7 @@ static inline uint32_t fs_fkey_blend_factor(GLenum f)
 /* The groups whose state the fragment key reads. */
 #define FS_FRAGMENT_KEY_GROUPS                                                              \
     (GL_ENABLE_BIT | GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT | \
-     GL_SCISSOR_BIT | FS_DIRTY_OCCLUSION_MODE)
+     GL_SCISSOR_BIT | GL_FOG_BIT | FS_DIRTY_OCCLUSION_MODE)
 
 /* The fragment key of the context's current state, computed from scratch. */
 uint32_t fs_fragment_key(const fs_context *c);

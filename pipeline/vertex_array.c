@@ -84,14 +84,21 @@ void fs_exec_NormalPointer(fs_context *c, GLenum type, GLsizei stride, const GLv
     set_array(c, &c->arrays.normal, 3, type, stride, pointer);
 }
 
-void fs_exec_ColorPointer(fs_context *c, GLint size, GLenum type, GLsizei stride, const GLvoid *pointer)
+/* glColorPointer and glSecondaryColorPointer take the same sizes and types. */
+static void color_pointer(fs_context *c, fs_client_array *a, GLint size, GLenum type, GLsizei stride,
+                          const GLvoid *pointer)
 {
     if (size < 3 || size > 4 || stride < 0) { fs_error(c, GL_INVALID_VALUE); return; }
     if (fs_type_size(type) == 0 || type == GL_2_BYTES || type == GL_3_BYTES || type == GL_4_BYTES) {
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    set_array(c, &c->arrays.color, size, type, stride, pointer);
+    set_array(c, a, size, type, stride, pointer);
+}
+
+void fs_exec_ColorPointer(fs_context *c, GLint size, GLenum type, GLsizei stride, const GLvoid *pointer)
+{
+    color_pointer(c, &c->arrays.color, size, type, stride, pointer);
 }
 
 void fs_exec_TexCoordPointer(fs_context *c, GLint size, GLenum type, GLsizei stride, const GLvoid *pointer)
@@ -104,6 +111,41 @@ void fs_exec_TexCoordPointer(fs_context *c, GLint size, GLenum type, GLsizei str
     set_array(c, &c->arrays.texcoord[fs_client_active_unit(c)], size, type, stride, pointer);
 }
 
+/* GL 1.4's arrays and the edge flag and index arrays, with the errors
+ * OSMesa raises (measured by tests/test_color_sum.c): a secondary colour
+ * has 3 or 4 components (GL_BGRA is not modelled: GL_INVALID_VALUE) of any
+ * glColorPointer type; a fog coordinate is GL_FLOAT or GL_DOUBLE (OSMesa
+ * also takes GL_HALF_FLOAT, which fragsim does not fetch:
+ * GL_INVALID_ENUM); an index GL_UNSIGNED_BYTE, GL_SHORT, GL_INT, GL_FLOAT
+ * or GL_DOUBLE; a negative stride is GL_INVALID_VALUE. */
+void fs_exec_SecondaryColorPointer(fs_context *c, GLint size, GLenum type, GLsizei stride, const GLvoid *pointer)
+{
+    color_pointer(c, &c->arrays.secondary_color, size, type, stride, pointer);
+}
+
+void fs_exec_FogCoordPointer(fs_context *c, GLenum type, GLsizei stride, const GLvoid *pointer)
+{
+    if (type != GL_FLOAT && type != GL_DOUBLE) { fs_error(c, GL_INVALID_ENUM); return; }
+    if (stride < 0) { fs_error(c, GL_INVALID_VALUE); return; }
+    set_array(c, &c->arrays.fog_coord, 1, type, stride, pointer);
+}
+
+void fs_exec_EdgeFlagPointer(fs_context *c, GLsizei stride, const GLvoid *pointer)
+{
+    if (stride < 0) { fs_error(c, GL_INVALID_VALUE); return; }
+    set_array(c, &c->arrays.edge_flag, 1, GL_UNSIGNED_BYTE, stride, pointer);
+}
+
+void fs_exec_IndexPointer(fs_context *c, GLenum type, GLsizei stride, const GLvoid *pointer)
+{
+    if (type != GL_UNSIGNED_BYTE && type != GL_SHORT && type != GL_INT && type != GL_FLOAT && type != GL_DOUBLE) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    if (stride < 0) { fs_error(c, GL_INVALID_VALUE); return; }
+    set_array(c, &c->arrays.index, 1, type, stride, pointer);
+}
+
 static fs_client_array *array_of(fs_context *c, GLenum array)
 {
     switch (array) {
@@ -111,17 +153,10 @@ static fs_client_array *array_of(fs_context *c, GLenum array)
     case GL_NORMAL_ARRAY: return &c->arrays.normal;
     case GL_COLOR_ARRAY: return &c->arrays.color;
     case GL_TEXTURE_COORD_ARRAY: return &c->arrays.texcoord[fs_client_active_unit(c)];
-    default: return NULL;
-    }
-}
-
-bool *fs_client_state_flag(fs_context *c, GLenum array)
-{
-    switch (array) {
-    case GL_EDGE_FLAG_ARRAY: return &c->edge_flag_array;
-    case GL_INDEX_ARRAY: return &c->index_array;
-    case GL_FOG_COORDINATE_ARRAY: return &c->fog_coord_array;
-    case GL_SECONDARY_COLOR_ARRAY: return &c->secondary_color_array;
+    case GL_SECONDARY_COLOR_ARRAY: return &c->arrays.secondary_color;
+    case GL_FOG_COORDINATE_ARRAY: return &c->arrays.fog_coord;
+    case GL_EDGE_FLAG_ARRAY: return &c->arrays.edge_flag;
+    case GL_INDEX_ARRAY: return &c->arrays.index;
     default: return NULL;
     }
 }
@@ -131,20 +166,11 @@ bool *fs_client_state_flag(fs_context *c, GLenum array)
 static void client_state(fs_context *c, GLenum array, bool on)
 {
     fs_client_array *a = array_of(c, array);
-    if (a) {
-        a->enabled = on;
-        return;
-    }
-    bool *flag = fs_client_state_flag(c, array);
-    if (!flag) {
+    if (!a) {
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    /* Arrays fragsim does not fetch: the enable is kept for glIsEnabled,
-     * and enabling one is counted, since a draw then ignores the array. */
-    *flag = on;
-    if (on)
-        fs_unsupported(c, "glEnableClientState(edge flag/index/fog coordinate/secondary colour array)");
+    a->enabled = on;
 }
 
 void fs_exec_EnableClientState(fs_context *c, GLenum array) { client_state(c, array, true); }
@@ -236,6 +262,33 @@ static void fetch_positions(const fs_context *c, size_t first, size_t n, fs_iver
     }
 }
 
+/* The secondary colour (its alpha is 1 whatever a size-4 array holds) and
+ * the fog coordinate from their arrays, else the current values (2.8). */
+static void fetch_gl14_attributes(const fs_context *c, size_t i, fs_ivert *o)
+{
+    const fs_array_state *A = &c->arrays;
+    memcpy(o->col2, c->current.secondary_color, sizeof o->col2);
+    if (A->secondary_color.enabled) {
+        float s[4];
+        fetch(&A->secondary_color, i, s, true);
+        memcpy(o->col2, s, 3 * sizeof(float));
+    }
+    o->fogc = c->current.fog_coord;
+    if (A->fog_coord.enabled) {
+        float f[4];
+        fetch(&A->fog_coord, i, f, false);
+        o->fogc = f[0];
+    }
+}
+
+/* Element i's edge flag from the enabled edge flag array (2.8). */
+static bool array_edge_flag(const fs_context *c, size_t i)
+{
+    float e[4];
+    fetch(&c->arrays.edge_flag, i, e, false);
+    return e[0] != 0.0f;
+}
+
 /* Its other attributes from the enabled arrays, the current values
  * elsewhere. */
 static void fetch_attributes(const fs_context *c, size_t i, fs_ivert *o, int ntex)
@@ -263,6 +316,7 @@ static void fetch_attributes(const fs_context *c, size_t i, fs_ivert *o, int nte
             memcpy(o->tc[u], c->current.texcoord[u], sizeof o->tc[u]);
         }
     }
+    fetch_gl14_attributes(c, i, o);
 }
 
 static void fetch_vertex(const fs_context *c, size_t i, fs_ivert *o)
@@ -296,6 +350,10 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     c->raster.use_y_raster = true; /* every fs_rvertex from here carries it */
     s->flat = c->lighting.shade_model == GL_FLAT;
     c->raster.flat_color = s->flat;
+    s->fog = c->st.fog.enabled;
+    s->fog_from_coord = c->st.fog.coord_src == GL_FOG_COORD;
+    c->raster.interpolate_fog = s->fog;
+    fs_color_sum_setup(c, s);
     fs_lighting_setup(c, s);
     /* Draws of one object share a modelview: invert it once (the
      * persistent setup of the context keeps the last one). */
@@ -332,6 +390,24 @@ static inline void vs_position(const fs_vs_setup *s, const fs_ivert *v, fs_pvert
     o->win[4] = fmaf(o->clip[1] * iw, s->yr_scale, s->yr_trans);
 }
 
+/* The fog coordinate (GL 1.5 spec 3.10): of a GL_FOG_COORD source, the
+ * vertex's fog coordinate's absolute value (measured on OSMesa: -1 fogs
+ * as 1; Mesa 22's vertex shader takes |c| from the array or the current
+ * value); of a GL_FRAGMENT_DEPTH source:
+ * llvmpipe's fixed-function vertex shader takes the eye-plane distance,
+ * |z_e|, with z_e the modelview's third row times the object position in
+ * the order and float precision of the position transform (so the same
+ * bits as the z of the eye position lighting uses). */
+static inline float vs_fog_coord(const fs_vs_setup *s, const fs_ivert *v)
+{
+    const float *m = s->mv;
+    float z = m[2] * v->obj[0];
+    z = z + m[6] * v->obj[1];
+    z = z + m[10] * v->obj[2];
+    z = z + m[14] * v->obj[3];
+    return fabsf(z);
+}
+
 /* Colours (lighting, GL 1.5 spec 2.14) and texture coordinates (2.10.2). */
 static inline void vs_attributes(const fs_vs_setup *s, const fs_ivert *v, fs_pvert *o)
 {
@@ -351,7 +427,7 @@ static inline void vs_attributes(const fs_vs_setup *s, const fs_ivert *v, fs_pve
                 nrm[0] *= inv; nrm[1] *= inv; nrm[2] *= inv;
             }
         }
-        fs_light_vertex(s, eye, nrm, v->col, o->col);
+        fs_light_vertex(s, eye, nrm, v->col, o->col, o->col2);
     } else {
         for (int k = 0; k < 4; k++)
             o->col[0][k] = clamp01(v->col[k]);
@@ -362,6 +438,13 @@ static inline void vs_attributes(const fs_vs_setup *s, const fs_ivert *v, fs_pve
         else
             fs_mat_xform4(o->tc[u], s->tex[u], v->tc[u]);
     }
+    if (s->fog)
+        o->fog = s->fog_from_coord ? fabsf(v->fogc) : vs_fog_coord(s, v);
+    if (s->color_sum && !s->lighting)
+        for (int k = 0; k < 4; k++)
+            o->col2[0][k] = clamp01(v->col2[k]);
+    else if (s->color_sum && !s->separate_specular)
+        memset(o->col2, 0, sizeof o->col2); /* lit: no secondary colour is written */
 }
 
 /* A box edge as a pixel within [0, 65536] (compares, not fminf/fmaxf,
@@ -596,6 +679,8 @@ static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *
         if (!need) {
             memset(out[i].col, 0, sizeof out[i].col);
             memset(out[i].tc, 0, (size_t)s->ntex * sizeof out[i].tc[0]);
+            out[i].fog = 0.0f;
+            memset(out[i].col2, 0, sizeof out[i].col2);
         }
         out[i].lazy = need;
     }
@@ -650,6 +735,10 @@ void fs_exec_ArrayElement(fs_context *c, GLint i)
     for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
         if (c->arrays.texcoord[u].enabled)
             memcpy(c->current.texcoord[u], v.tc[u], sizeof v.tc[u]);
+    if (c->arrays.secondary_color.enabled) memcpy(c->current.secondary_color, v.col2, sizeof v.col2);
+    if (c->arrays.fog_coord.enabled) c->current.fog_coord = v.fogc;
+    /* Through glEdgeFlag, so the batch's vertices keep their flags (immediate.c). */
+    if (c->arrays.edge_flag.enabled) fs_exec_EdgeFlag(c, array_edge_flag(c, (size_t)i));
     if (c->arrays.vertex.enabled) fs_exec_Vertex4fv(c, v.obj);
 }
 
@@ -662,6 +751,20 @@ static void draw_batch(fs_context *c, GLenum mode, size_t n, const uint32_t *idx
         return;
     }
     fs_vs_prepare(c, &v->setup);
+    if (c->arrays.edge_flag.enabled) {
+        /* The batch vertices' edge flags from the array (GL 1.5 spec 2.6.2,
+         * 2.8): batch vertex k is element src_indices[k] or src_first + k
+         * (defer_from). */
+        if (!fs_vs_reserve_edge(c, n)) {
+            v->deferred = false;
+            fs_error(c, GL_OUT_OF_MEMORY);
+            return;
+        }
+        for (size_t k = 0; k < n; k++)
+            v->iv_edge[k] = array_edge_flag(c, v->src_indices ? index_at(v->src_indices, v->src_type, k)
+                                                              : v->src_first + k);
+        v->setup.edge = v->iv_edge;
+    }
     bool lazy = fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_mask(c, mode));
     fs_prim_draw(c, &v->setup, mode, v->pv, lazy ? v->iv : NULL, idx, count, elements);
     v->deferred = false;

@@ -13,6 +13,18 @@
 
 #define FS_PI 3.14159265358979323846
 
+/* Colour components of each type as floats (GL 1.5 spec table 2.9). */
+#define UB2F(x) ((float)(x) / 255.0f)
+/* Signed bytes are scaled by the float nearest 1/255, not divided by 255:
+ * the two differ in the last bit for about a third of the values, and
+ * OSMesa's current colour and normal are the product (measured,
+ * tests/test_gl_forms.c: 100 gives 0.788235366, not 0.788235307). */
+#define B2F(x) ((2.0f * (float)(x) + 1.0f) * (1.0f / 255.0f))
+#define US2F(x) ((float)(x) / 65535.0f)
+#define S2F(x) ((2.0f * (float)(x) + 1.0f) / 65535.0f)
+#define UI2F(x) ((float)((double)(x) / 4294967295.0))
+#define I2F(x) ((float)((2.0 * (double)(x) + 1.0) / 4294967295.0))
+
 /* A vertex as submitted: object position and the attributes current when
  * it was specified. */
 /* x86 builds carry FMA and AVX2 variants of the vertex stage's loop,
@@ -33,6 +45,10 @@ typedef struct fs_ivert {
     float col[4];
     float nrm[3];
     float tc[FS_MAX_TEXTURE_UNITS][4]; /* the first fs_vs_setup.ntex units are set */
+    /* GL 1.4 (2.7): the secondary colour (alpha 1) and the fog coordinate.
+     * (The edge flag, 2.6.2, is fs_vs_setup.edge's.) */
+    float col2[4];
+    float fogc;
 } fs_ivert;
 
 /* A vertex after transformation and lighting. */
@@ -42,6 +58,12 @@ typedef struct fs_pvert {
                          (fs_rvertex.y_raster); valid when mask == 0 */
     float col[2][4];  /* front and back colour, clamped */
     float tc[FS_MAX_TEXTURE_UNITS][4]; /* the first fs_vs_setup.ntex units */
+    /* Fog (GL 1.5 spec 3.10), set while GL_FOG is enabled (fs_vs_setup.fog):
+     * the fog coordinate c, |z_e| or the vertex's fog coordinate. */
+    float fog;
+    /* The secondary colour (3.9), front and back, clamped, set while
+     * fs_vs_setup.color_sum is (pipeline/color_sum.c). */
+    float col2[2][4];
     unsigned mask;    /* bit i: outside clip plane i (clip.c's order) */
     bool lazy;        /* col and tc not computed yet (fs_vs_process under a tile mask) */
 } fs_pvert;
@@ -83,6 +105,14 @@ typedef struct fs_vs_setup {
     int cm_face_mask;   /* bit 0 front, bit 1 back: faces tracking the colour */
     GLenum cm_mode;
     bool flat;
+    /* Fog (3.10): GL_FOG is enabled, so each vertex gets its fog
+     * coordinate (fs_pvert.fog). */
+    bool fog;
+    bool fog_from_coord; /* GL_FOG_COORD_SRC is GL_FOG_COORD */
+    /* The colour sum (3.9) is on: GL_COLOR_SUM, or lighting with
+     * GL_SEPARATE_SPECULAR_COLOR; each vertex gets fs_pvert.col2. */
+    bool color_sum;
+    bool separate_specular; /* lighting's specular term goes to col2 (2.14.1) */
     /* Per-draw input: the batch vertices' edge flags (GL 1.5 spec 2.6.2),
      * or NULL when every vertex has the current edge flag.  Reset by
      * fs_vs_prepare. */
@@ -101,7 +131,9 @@ typedef struct fs_vs_impl {
     fs_ivert *iv;
     size_t iv_n, iv_cap;
     /* Immediate mode: each batch vertex's edge flag, kept only once one
-     * of them is false (NULL edges until then: all true). */
+     * of them is false (NULL edges until then: all true).  An array draw
+     * with the edge flag array enabled fills it from the array
+     * (vertex_array.c), as no immediate batch is open then. */
     uint8_t *iv_edge;
     size_t iv_edge_cap;
     bool iv_edge_used;
@@ -134,6 +166,7 @@ static inline fs_vs_impl *fs_vs(fs_context *c) { return (fs_vs_impl *)c->prim.im
 bool fs_vs_reserve_iv(fs_context *c, size_t n);
 bool fs_vs_reserve_pv(fs_context *c, size_t n);
 bool fs_vs_reserve_idx(fs_context *c, size_t n);
+bool fs_vs_reserve_edge(fs_context *c, size_t n); /* iv_edge */
 
 /* matrix.c */
 void fs_mat_identity(float m[16]);
@@ -154,15 +187,21 @@ static inline void fs_mat_xform4(float o[4], const float m[16], const float v[4]
 /* viewport.c */
 void fs_viewport_xform(fs_context *c, float scale[3], float trans[3]);
 
+/* color_sum.c: sets s->color_sum and s->separate_specular from the GL
+ * state, and the rasterizer's interpolate_color2 (marking the fragment key
+ * stale when it changes). */
+void fs_color_sum_setup(fs_context *c, fs_vs_setup *s);
+
 /* lighting.c */
 void fs_lighting_setup(fs_context *c, fs_vs_setup *s);
 /* immediate.c: glMaterial changed the material between Begin and End;
  * `before` is the material it replaced. */
 void fs_vs_material_changed(fs_context *c, const fs_material before[2]);
 /* Lights one vertex: eye position (when s->need_eye), eye normal, vertex
- * colour; writes clamped front and (if two-sided) back colours. */
+ * colour; writes clamped front and (if two-sided) back colours, and with
+ * s->separate_specular the specular terms apart into spec (2.14.1). */
 void fs_light_vertex(const fs_vs_setup *s, const float eye[4], const float n[3],
-                     const float col[4], float out[2][4]);
+                     const float col[4], float out[2][4], float spec[2][4]);
 
 /* vertex_array.c: transformation of a batch of vertices.  s persists from
  * draw to draw (it caches the normal matrix): zero it before its first use. */
@@ -208,6 +247,7 @@ void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v);
 void fs_exec_Color4fv(fs_context *c, const GLfloat *v);
 void fs_exec_Normal3fv(fs_context *c, const GLfloat *v);
 void fs_exec_Vertex4fv(fs_context *c, const GLfloat *v);
+void fs_exec_EdgeFlag(fs_context *c, GLboolean flag);
 /* Sets the current texture coordinates of a unit (immediate.c). */
 void fs_current_texcoord(fs_context *c, int unit, float s, float t, float r, float q);
 #endif

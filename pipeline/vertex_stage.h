@@ -59,7 +59,7 @@ typedef struct fs_lighting_state {
     fs_light light[FS_MAX_LIGHTS];
     float model_ambient[4];
     bool local_viewer, two_side;
-    GLenum color_control;       /* GL_SINGLE_COLOR (GL_SEPARATE_SPECULAR_COLOR is counted unsupported) */
+    GLenum color_control;       /* GL_SINGLE_COLOR (GL_SEPARATE_SPECULAR_COLOR: pipeline/color_sum.c) */
     fs_material material[2]; /* front, back */
     bool color_material;     /* GL_COLOR_MATERIAL */
     GLenum color_material_face, color_material_mode;
@@ -69,6 +69,10 @@ typedef struct fs_lighting_state {
 typedef struct fs_current_state {
     float color[4], normal[3];
     float texcoord[FS_MAX_TEXTURE_UNITS][4]; /* per texture unit (2.7) */
+    /* GL 1.4's attributes (2.7; pipeline/color_sum.c, pipeline/fog.c): the
+     * secondary colour (0, 0, 0, 1), set as r, g, b with alpha 1, and the
+     * fog coordinate (0); neither clamped when set. */
+    float secondary_color[4], fog_coord;
 } fs_current_state;
 
 typedef struct fs_client_array {
@@ -91,17 +95,39 @@ typedef struct fs_array_state {
     /* One texture coordinate array per texture unit, the one
      * glClientActiveTexture selects taking glTexCoordPointer (2.8). */
     fs_client_array texcoord[FS_MAX_TEXTURE_UNITS];
+    /* GL 1.4's arrays and the edge flag and colour index arrays (2.8):
+     * secondary colour, fog coordinate and edge flag are fetched (polygon
+     * mode GL_LINE/GL_POINT reads the edge flag); the index, which an RGBA
+     * context ignores, only answers glGet. */
+    fs_client_array secondary_color, fog_coord, edge_flag, index;
     /* GL_ARRAY_BUFFER_BINDING, GL_ELEMENT_ARRAY_BUFFER_BINDING (2.9),
      * client state as the arrays are (pipeline/buffer_object.c). */
     GLuint array_buffer, element_buffer;
 } fs_array_state;
 
-/* The arrays fs_array_state holds, by index: vertex, normal, colour, then
- * each unit's texture coordinates. */
-#define FS_CLIENT_ARRAYS (3 + FS_MAX_TEXTURE_UNITS)
+/* The client arrays in one fixed order, for code that treats them alike
+ * (replayed array data, buffer offsets, display-list snapshots, capture):
+ * vertex, normal, colour, each unit's texture coordinates, secondary
+ * colour, fog coordinate, edge flag, index. */
+#define FS_CLIENT_ARRAYS (7 + FS_MAX_TEXTURE_UNITS)
 static inline fs_client_array *fs_client_array_at(fs_array_state *A, int k)
 {
-    return k == 0 ? &A->vertex : k == 1 ? &A->normal : k == 2 ? &A->color : &A->texcoord[k - 3];
+    if (k < 3)
+        return k == 0 ? &A->vertex : k == 1 ? &A->normal : &A->color;
+    if (k < 3 + FS_MAX_TEXTURE_UNITS)
+        return &A->texcoord[k - 3];
+    fs_client_array *const s[4] = {&A->secondary_color, &A->fog_coord, &A->edge_flag, &A->index};
+    return s[k - 3 - FS_MAX_TEXTURE_UNITS];
+}
+
+/* The array a pointer call of fs_pointer_slot's slot (vertex, normal,
+ * colour, texture coordinates, secondary colour, fog coordinate, edge
+ * flag, index: FS_ARRAY_SLOTS of them) sets, as an index of
+ * fs_client_array_at: a texture coordinate pointer is the unit's (2.8). */
+#define FS_ARRAY_SLOTS 8
+static inline int fs_array_of_slot(int slot, int unit)
+{
+    return slot < 3 ? slot : slot == 3 ? 3 + unit : slot - 1 + FS_MAX_TEXTURE_UNITS;
 }
 
 /* Immediate-mode primitive assembly state; the vertex agent owns its fields. */
@@ -133,7 +159,4 @@ int fs_client_active_unit(const fs_context *c);
 /* Copies the current colour into the material properties that track it
  * (GL 1.5 spec 2.14.3); called on glColor and on enabling GL_COLOR_MATERIAL. */
 void fs_color_material_update(fs_context *c);
-/* The enable of a client array fragsim does not fetch yet (GL_EDGE_FLAG_ARRAY,
- * GL_INDEX_ARRAY, GL_FOG_COORDINATE_ARRAY, GL_SECONDARY_COLOR_ARRAY), or NULL. */
-bool *fs_client_state_flag(fs_context *c, GLenum array);
 #endif

@@ -161,4 +161,55 @@ static inline void img_dump_ppm(const char *fn, const uint8_t *ref, const uint8_
         }
     fclose(f);
 }
+/* One scene, draw(c, w, h), on OSMesa and on the model (G() in it goes to
+ * whichever c says): returns the pixels that differ at all (-1 when a
+ * context cannot be made), *errors the model's glGetError; prints one line
+ * and, with the environment variable dump_env set, writes both images and
+ * their difference to /tmp/<prefix>_<name>.ppm (img_dump_ppm). */
+typedef void (*osm_scene_fn)(fs_context *c, int w, int h);
+
+static inline void osm_scene_draw_(fs_context *c, const void *user, int w, int h)
+{
+    (*(const osm_scene_fn *)user)(c, w, h);
+}
+
+static inline long osm_compare_scene(osm_scene_fn scene, int w, int h, const char *name, const char *dump_env,
+                                     const char *prefix, GLenum *errors)
+{
+    osm_pair p;
+    if (!osm_pair_render(&p, w, h, NULL, osm_scene_draw_, &scene))
+        return -1;
+    long d = p.d.differ;
+    *errors = fsglGetError(p.c);
+    printf("  %-22s %dx%d: %ld pixels differ, max %d\n", name, w, h, d, p.d.maxd);
+    if (getenv(dump_env)) {
+        char fn[256];
+        snprintf(fn, sizeof fn, "/tmp/%s_%s.ppm", prefix, name);
+        img_dump_ppm(fn, p.ref.color, p.c->fb.color, w, h, 4, true);
+    }
+    osm_pair_close(&p);
+    return d;
+}
+/* A test's check that a scene is drawn alike, without a GL error on the
+ * model (check.h's CHECK_EQ_INT, expanded in the test). */
+#define OSM_CHECK_SCENE(fn, w, h, name, dump_env, prefix)                              \
+    do {                                                                               \
+        GLenum err_;                                                                   \
+        CHECK_EQ_INT(osm_compare_scene(fn, w, h, name, dump_env, prefix, &err_), 0);   \
+        CHECK_EQ_INT(err_, GL_NO_ERROR);                                               \
+    } while (0)
+/* The set-up many scenes share: the whole window as viewport, cleared
+ * to (r, g, b, 1), the projection glFrustum(-1, 1, -1, 1, 1, far) and an
+ * identity modelview. */
+static inline void osm_frustum_scene(fs_context *c, int w, int h, float r, float g, float b, float far)
+{
+    G(Viewport, 0, 0, w, h);
+    G(ClearColor, r, g, b, 1);
+    G(Clear, GL_COLOR_BUFFER_BIT);
+    G(MatrixMode, GL_PROJECTION);
+    G0(LoadIdentity);
+    G(Frustum, -1, 1, -1, 1, 1, far);
+    G(MatrixMode, GL_MODELVIEW);
+    G0(LoadIdentity);
+}
 #endif

@@ -19,31 +19,13 @@
 #include "../pipeline/context.h"
 #include "../driver/gl_call.h"
 
-typedef void (*scene_fn)(fs_context *c, int w, int h);
-
-static void draw_scene(fs_context *c, const void *user, int w, int h)
-{
-    const scene_fn *fn = user;
-    (*fn)(c, w, h);
-}
+typedef osm_scene_fn scene_fn;
 
 /* Renders on both and returns the pixels that differ at all (-1 when a
  * context cannot be made); *errors gets the model's glGetError. */
 static long compare(scene_fn scene, int w, int h, const char *name, GLenum *errors)
 {
-    osm_pair p;
-    if (!osm_pair_render(&p, w, h, NULL, draw_scene, &scene))
-        return -1;
-    long d = p.d.differ;
-    *errors = fsglGetError(p.c);
-    printf("  %-22s %dx%d: %ld pixels differ, max %d\n", name, w, h, d, p.d.maxd);
-    if (getenv("FS_SHADING_DUMP")) {
-        char fn[256];
-        snprintf(fn, sizeof fn, "/tmp/shading_%s.ppm", name);
-        img_dump_ppm(fn, p.ref.color, p.c->fb.color, w, h, 4, true);
-    }
-    osm_pair_close(&p);
-    return d;
+    return osm_compare_scene(scene, w, h, name, "FS_SHADING_DUMP", "shading", errors);
 }
 
 /* ---- glMaterial between Begin and End ---- */
@@ -196,14 +178,7 @@ TEST(material_between_begin_end_vs_osmesa)
  * over a grey background: an interpolated 0.89999992 blends one level off. */
 static void scene_flat_blend(fs_context *c, int w, int h)
 {
-    G(Viewport, 0, 0, w, h);
-    G(ClearColor, 0.5f, 0.5f, 0.5f, 1);
-    G(Clear, GL_COLOR_BUFFER_BIT);
-    G(MatrixMode, GL_PROJECTION);
-    G0(LoadIdentity);
-    G(Frustum, -1, 1, -1, 1, 1, 20);
-    G(MatrixMode, GL_MODELVIEW);
-    G0(LoadIdentity);
+    osm_frustum_scene(c, w, h, 0.5f, 0.5f, 0.5f, 20);
     G(ShadeModel, GL_FLAT);
     G(Enable, GL_BLEND);
     G(BlendFunc, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);

@@ -220,7 +220,7 @@ TEST(lighting_single_vertex_vs_equation)
     double N[3] = {N0[0] / nl, N0[1] / nl, N0[2] / nl};
     float eye[4] = {(float)P[0], (float)P[1], (float)P[2], 1}, nf[3] = {(float)N[0], (float)N[1], (float)N[2]};
     float col[4] = {1, 1, 1, 1}, out[2][4];
-    fs_light_vertex(&s, eye, nf, col, out);
+    fs_light_vertex(&s, eye, nf, col, out, NULL);
     /* The equation of 2.14.1 in double. */
     double res[3];
     for (int k = 0; k < 3; k++) res[k] = me[k] + ma[k] * lm[k];
