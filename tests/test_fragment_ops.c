@@ -217,6 +217,31 @@ static void random_blend_inputs(uint32_t *seed, int n, uint8_t *dst, float *col)
     }
 }
 
+/* The blend tests' buffers for a w x h grid: one point at each pixel
+ * centre (xyz), source colours (col), destination and reference bytes.
+ * False when out of memory (what was allocated is freed). */
+static bool blend_buffers(int w, int h, float **xyz, float **col, uint8_t **dst, uint8_t **ref)
+{
+    size_t n = (size_t)w * (size_t)h;
+    *xyz = malloc(sizeof(float) * 3 * n);
+    *col = malloc(sizeof(float) * 4 * n);
+    *dst = malloc(n * 4);
+    *ref = malloc(n * 4);
+    if (!*xyz || !*col || !*dst || !*ref) {
+        free(*xyz);
+        free(*col);
+        free(*dst);
+        free(*ref);
+        return false;
+    }
+    for (size_t i = 0; i < n; i++) {
+        (*xyz)[i * 3] = (float)(i % (size_t)w) + 0.5f;
+        (*xyz)[i * 3 + 1] = (float)(i / (size_t)w) + 0.5f;
+        (*xyz)[i * 3 + 2] = 0.0f;
+    }
+    return true;
+}
+
 /* Every (sfactor, dfactor) pair Mesa accepts (GL_SRC_ALPHA_SATURATE as a
  * destination factor too), random source floats and
  * destination bytes (with 0 and 255 mixed in). */
@@ -228,14 +253,9 @@ TEST(blend_all_factor_pairs_vs_osmesa)
     fs_context *c = fs_context_create(NULL, BW, BH);
     REQUIRE(c);
     int n = BW * BH;
-    float *xyz = malloc(sizeof(float) * 3 * (size_t)n), *col = malloc(sizeof(float) * 4 * (size_t)n);
-    uint8_t *dst = malloc((size_t)n * 4), *ref = malloc((size_t)n * 4);
-    REQUIRE(xyz && col && dst && ref);
-    for (int i = 0; i < n; i++) {
-        xyz[i * 3] = (float)(i % BW) + 0.5f;
-        xyz[i * 3 + 1] = (float)(i / BW) + 0.5f;
-        xyz[i * 3 + 2] = 0.0f;
-    }
+    float *xyz, *col;
+    uint8_t *dst, *ref;
+    REQUIRE(blend_buffers(BW, BH, &xyz, &col, &dst, &ref));
     uint32_t seed = 0x1234567u;
     long total = 0, diff = 0;
     int maxd_all = 0, pairs = 0;
@@ -300,14 +320,9 @@ TEST(blend_equations_separate_constant_vs_osmesa)
     fs_context *c = fs_context_create(NULL, BW, BH);
     REQUIRE(c);
     int n = BW * BH;
-    float *xyz = malloc(sizeof(float) * 3 * (size_t)n), *col = malloc(sizeof(float) * 4 * (size_t)n);
-    uint8_t *dst = malloc((size_t)n * 4), *ref = malloc((size_t)n * 4);
-    REQUIRE(xyz && col && dst && ref);
-    for (int i = 0; i < n; i++) {
-        xyz[i * 3] = (float)(i % BW) + 0.5f;
-        xyz[i * 3 + 1] = (float)(i / BW) + 0.5f;
-        xyz[i * 3 + 2] = 0.0f;
-    }
+    float *xyz, *col;
+    uint8_t *dst, *ref;
+    REQUIRE(blend_buffers(BW, BH, &xyz, &col, &dst, &ref));
     uint32_t seed = 0x2468aceu;
     long total = 0, diff = 0;
     for (int e = 0; e < 5; e++) {
