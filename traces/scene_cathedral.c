@@ -26,12 +26,7 @@
 #define CATH_COL_H 12.0f
 #define CATH_H 13.0f        /* wall and vault springing height */
 
-typedef struct cath_params {
-    int cols;       /* columns per row */
-    int slices, stacks;
-    int arch_seg, vault_seg, vault_len, wall_sub, floor_sub;
-    uint64_t rose[2];
-} cath_params;
+typedef sg_cath_params cath_params;
 
 /* A strip of quads between two rows of points, wound so that its first
  * quad faces along the first given normal whatever order the rows were given
@@ -176,7 +171,10 @@ static void cath_end_wall(sg *s, float z, float out_z, const cath_params *P, uin
     G(s, Color3f, 0.72f, 0.7f, 0.65f);
 }
 
-static int cath_model(sg *s, const cath_params *P, GLuint column_list)
+/* The shell: floor, walls, end walls with their rose windows, aisle
+ * ceilings and roofs, the vault.  It sets its own colours, so it can be
+ * drawn in any order with the bays (the culling program does). */
+void sg_cath_shell(sg *s, const cath_params *P)
 {
     G(s, Color3f, 0.6f, 0.58f, 0.55f);
     const float fo[3] = {-CATH_HALF, 0, 0}, fu[3] = {0, 0, CATH_LEN}, fv[3] = {2 * CATH_HALF, 0, 0};
@@ -203,17 +201,52 @@ static int cath_model(sg *s, const cath_params *P, GLuint column_list)
     cath_vault(s, CATH_NAVE, P->vault_seg, P->vault_len, 1);
     G(s, Color3f, 0.4f, 0.35f, 0.32f);
     cath_vault(s, CATH_NAVE + 0.3f, P->vault_seg, P->vault_len, 0);
-    /* Columns and arches. */
+}
+
+/* Bay i of the column row on 'side' (-1 or 1): the column and the arch to
+ * the next column.  The column list sets the colour the arch is drawn in. */
+void sg_cath_bay(sg *s, const cath_params *P, GLuint column_list, int side, int i)
+{
     float step = CATH_LEN / (float)(P->cols + 1);
+    G0(s, PushMatrix);
+    G(s, Translatef, side * CATH_NAVE, 0.0f, step * (float)(i + 1));
+    sg_call_list(s, column_list);
+    G0(s, PopMatrix);
+    if (i + 1 < P->cols) cath_arch(s, side * CATH_NAVE, step * (float)(i + 1), step * (float)(i + 2), P->arch_seg);
+}
+
+/* Bounds with 0.25 m of margin, so that the geometry lies strictly inside
+ * (the culling program's boxes): the shell reaches 0.3 m beyond the walls
+ * (cath_wall) and CATH_NAVE + 0.3 above the springing (the outer vault); a
+ * bay spans the column's capital (radius 1.05) and the arch (R + 0.45). */
+void sg_cath_bounds(const cath_params *P, int bay, float lo[3], float hi[3])
+{
+    const float m = 0.25f;
+    if (bay < 0) {
+        const float l[3] = {-CATH_HALF - 0.3f - m, -m, -0.3f - m};
+        const float h[3] = {CATH_HALF + 0.3f + m, CATH_H + CATH_NAVE + 0.3f + m, CATH_LEN + 0.3f + m};
+        memcpy(lo, l, sizeof l);
+        memcpy(hi, h, sizeof h);
+        return;
+    }
+    int side = bay < P->cols ? -1 : 1, i = bay % P->cols;
+    float step = CATH_LEN / (float)(P->cols + 1), z0 = step * (float)(i + 1);
+    float z1 = i + 1 < P->cols ? step * (float)(i + 2) + 0.45f : z0 + 1.05f;
+    lo[0] = side * CATH_NAVE - 1.05f - m;
+    hi[0] = side * CATH_NAVE + 1.05f + m;
+    lo[1] = -m;
+    hi[1] = CATH_COL_H + (i + 1 < P->cols ? 0.5f * step + 0.45f : 0.0f) + m;
+    lo[2] = z0 - 1.05f - m;
+    hi[2] = z1 + m;
+}
+
+static int cath_model(sg *s, const cath_params *P, GLuint column_list)
+{
+    sg_cath_shell(s, P);
+    /* Columns and arches. */
     G(s, Color3f, 0.7f, 0.68f, 0.62f);
     for (int side = -1; side <= 1; side += 2)
-        for (int i = 0; i < P->cols; i++) {
-            G0(s, PushMatrix);
-            G(s, Translatef, side * CATH_NAVE, 0.0f, step * (float)(i + 1));
-            sg_call_list(s, column_list);
-            G0(s, PopMatrix);
-            if (i + 1 < P->cols) cath_arch(s, side * CATH_NAVE, step * (float)(i + 1), step * (float)(i + 2), P->arch_seg);
-        }
+        for (int i = 0; i < P->cols; i++) sg_cath_bay(s, P, column_list, side, i);
     return 0;
 }
 
@@ -238,52 +271,76 @@ static int cath_isqrt(uint64_t v)
 
 static int cath_clamp(int v, int lo, int hi) { return v < lo ? lo : v > hi ? hi : v; }
 
-int sg_scene_cathedrals(sg *s, const sg_params *p, char *err, size_t errlen)
+int sg_cath_plan(cath_params *P, uint64_t per, char *err, size_t errlen)
 {
-    /* Hüttner 1999, Table 3.1: 8 copies; the per-copy budget is exact when
-     * the target divides by 8 (416,763 at paper scale). */
-    uint64_t per = p->target / 8;
     int q = cath_isqrt(per);
-    cath_params P;
-    memset(&P, 0, sizeof P);
-    P.cols = cath_clamp(q / 40, 3, 16);
-    P.slices = cath_clamp(q / 12, 6, 48);
-    P.arch_seg = cath_clamp(P.slices / 2, 3, 32);
-    P.vault_seg = cath_clamp(P.slices, 6, 64);
-    P.vault_len = cath_clamp(P.cols + 1, 2, 64);
-    P.wall_sub = cath_clamp(q / 60, 1, 12);
-    P.floor_sub = cath_clamp(q / 30, 1, 24);
-    P.stacks = 1;
-    uint64_t c1 = cath_count(&P);
-    P.stacks = 2;
-    uint64_t c2 = cath_count(&P);
+    memset(P, 0, sizeof *P);
+    P->cols = cath_clamp(q / 40, 3, 16);
+    P->slices = cath_clamp(q / 12, 6, 48);
+    P->arch_seg = cath_clamp(P->slices / 2, 3, 32);
+    P->vault_seg = cath_clamp(P->slices, 6, 64);
+    P->vault_len = cath_clamp(P->cols + 1, 2, 64);
+    P->wall_sub = cath_clamp(q / 60, 1, 12);
+    P->floor_sub = cath_clamp(q / 30, 1, 24);
+    P->stacks = 1;
+    uint64_t c1 = cath_count(P);
+    P->stacks = 2;
+    uint64_t c2 = cath_count(P);
     if (c1 == UINT64_MAX || c2 == UINT64_MAX || c1 + 2 > per) {
         snprintf(err, errlen, "cathedrals: %llu triangles per copy are too few (need %llu)",
                  (unsigned long long)per, (unsigned long long)(c1 + 2));
         return -1;
     }
     /* Keep at least two rose-window triangles. */
-    P.stacks = 1 + (int)((per - 2 - c1) / (c2 - c1));
-    uint64_t rest = per - cath_count(&P);
-    P.rose[0] = rest / 2;
-    P.rose[1] = rest - rest / 2;
+    P->stacks = 1 + (int)((per - 2 - c1) / (c2 - c1));
+    uint64_t rest = per - cath_count(P);
+    P->rose[0] = rest / 2;
+    P->rose[1] = rest - rest / 2;
+    return 0;
+}
 
-    GLuint col = sg_gen_lists(s, 2);
-    if (!col) {
-        snprintf(err, errlen, "cathedrals: glGenLists failed");
-        return -1;
-    }
-    sg_new_list(s, col);
-    int rc = cath_column(s, &P);
+int sg_cath_compile_column(sg *s, const cath_params *P, GLuint list, char *err, size_t errlen)
+{
+    sg_new_list(s, list);
+    int rc = cath_column(s, P);
     sg_end_list(s);
-    sg_new_list(s, col + 1);
-    if (rc == 0) rc = cath_model(s, &P, col);
-    sg_end_list(s);
-    if (rc != 0) {
-        snprintf(err, errlen, "cathedrals: out of memory");
-        return -1;
-    }
+    if (rc != 0) snprintf(err, errlen, "cathedrals: out of memory");
+    return rc;
+}
 
+void sg_cath_copy_offset(int k, float t[3])
+{
+    t[0] = (k & 1) ? 40.0f : 0.0f;
+    t[1] = (k & 4) ? 30.0f : 0.0f;
+    t[2] = (k & 2) ? 90.0f : 0.0f;
+}
+
+void sg_cath_view(float t, float eye[3], float at[3])
+{
+    /* Walk up the nave of the first cathedral, looking ahead and a little
+     * sideways toward the columns. */
+    float yaw = 0.6f * sinf(5.0f * t);
+    eye[0] = 1.0f * sinf(2.0f * t);
+    eye[1] = 1.7f;
+    eye[2] = 4.0f + t * (CATH_LEN - 12.0f);
+    at[0] = eye[0] + sinf(yaw);
+    at[1] = 3.0f;
+    at[2] = eye[2] + cosf(yaw);
+}
+
+void sg_cath_lights(sg *s)
+{
+    const float l0[4] = {0.3f, 1.0f, 0.2f, 0}, d0[4] = {0.6f, 0.58f, 0.5f, 1};
+    const float l1[4] = {-0.6f, 0.4f, -0.5f, 0}, d1[4] = {0.25f, 0.28f, 0.4f, 1};
+    const float l2[4] = {0.0f, 10.0f, CATH_LEN * 0.5f, 1}, d2[4] = {0.9f, 0.75f, 0.5f, 1};
+    sg_light(s, GL_LIGHT0, l0, d0, NULL, NULL);
+    sg_light(s, GL_LIGHT1, l1, d1, NULL, NULL);
+    sg_light(s, GL_LIGHT2, l2, d2, NULL, NULL);
+    G(s, Lightf, GL_LIGHT2, GL_LINEAR_ATTENUATION, 0.02f);
+}
+
+void sg_cath_state(sg *s)
+{
     G(s, Enable, GL_DEPTH_TEST);
     G(s, DepthFunc, GL_LEQUAL);
     G(s, Enable, GL_CULL_FACE);
@@ -291,29 +348,41 @@ int sg_scene_cathedrals(sg *s, const sg_params *p, char *err, size_t errlen)
     sg_lighting(s, GL_FRONT);
     const float amb[4] = {0.15f, 0.15f, 0.18f, 1};
     G(s, LightModelfv, GL_LIGHT_MODEL_AMBIENT, amb);
-    sg_perspective(s, 65.0, (double)p->width / p->height, 0.3, 800.0);
+}
+
+int sg_scene_cathedrals(sg *s, const sg_params *p, char *err, size_t errlen)
+{
+    /* Hüttner 1999, Table 3.1: 8 copies; the per-copy budget is exact when
+     * the target divides by 8 (416,763 at paper scale). */
+    cath_params P;
+    if (sg_cath_plan(&P, p->target / 8, err, errlen) != 0) return -1;
+    GLuint col = sg_gen_lists(s, 2);
+    if (!col) {
+        snprintf(err, errlen, "cathedrals: glGenLists failed");
+        return -1;
+    }
+    if (sg_cath_compile_column(s, &P, col, err, errlen) != 0) return -1;
+    sg_new_list(s, col + 1);
+    cath_model(s, &P, col);
+    sg_end_list(s);
+
+    sg_cath_state(s);
+    sg_perspective(s, SG_CATH_FOVY, (double)p->width / p->height, SG_CATH_ZNEAR, SG_CATH_ZFAR);
 
     for (int fr = 0; fr < p->frames; fr++) {
         float t = p->frames > 1 ? (float)fr / (float)(p->frames - 1) : 0.0f;
         sg_frame_begin(s, 0.1f, 0.1f, 0.14f);
         G0(s, LoadIdentity);
-        /* Walk up the nave of the first cathedral, looking ahead and a
-         * little sideways toward the columns. */
-        float yaw = 0.6f * sinf(5.0f * t);
-        const float eye[3] = {1.0f * sinf(2.0f * t), 1.7f, 4.0f + t * (CATH_LEN - 12.0f)};
-        const float at[3] = {eye[0] + sinf(yaw), 3.0f, eye[2] + cosf(yaw)};
+        float eye[3], at[3];
+        sg_cath_view(t, eye, at);
         const float up[3] = {0, 1, 0};
         sg_look_at(s, eye, at, up);
-        const float l0[4] = {0.3f, 1.0f, 0.2f, 0}, d0[4] = {0.6f, 0.58f, 0.5f, 1};
-        const float l1[4] = {-0.6f, 0.4f, -0.5f, 0}, d1[4] = {0.25f, 0.28f, 0.4f, 1};
-        const float l2[4] = {0.0f, 10.0f, CATH_LEN * 0.5f, 1}, d2[4] = {0.9f, 0.75f, 0.5f, 1};
-        sg_light(s, GL_LIGHT0, l0, d0, NULL, NULL);
-        sg_light(s, GL_LIGHT1, l1, d1, NULL, NULL);
-        sg_light(s, GL_LIGHT2, l2, d2, NULL, NULL);
-        G(s, Lightf, GL_LIGHT2, GL_LINEAR_ATTENUATION, 0.02f);
+        sg_cath_lights(s);
         for (int k = 0; k < 8; k++) {
+            float o[3];
+            sg_cath_copy_offset(k, o);
             G0(s, PushMatrix);
-            G(s, Translatef, (k & 1) ? 40.0f : 0.0f, (k & 4) ? 30.0f : 0.0f, (k & 2) ? 90.0f : 0.0f);
+            G(s, Translatef, o[0], o[1], o[2]);
             sg_call_list(s, col + 1);
             G0(s, PopMatrix);
         }

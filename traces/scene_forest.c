@@ -87,18 +87,21 @@ static int forest_tree(sg *s, uint64_t seed, uint64_t budget)
     return 0;
 }
 
-typedef struct forest_castle {
-    int sub, stacks;
-    uint64_t court;
-} forest_castle;
+typedef sg_forest_plan forest_castle; /* the castle's fields of the plan */
 
-/* The castle: outer and courtyard octagon walls, a roof ring, towers. */
-static void forest_castle_draw(sg *s, const forest_castle *C)
+/* The meadow the castle and the trees stand on. */
+void sg_forest_ground(sg *s)
 {
-    const float R = 26.0f, Rc = 13.0f, H = 20.0f;
     G(s, Color3f, 0.55f, 0.6f, 0.45f);
     const float go[3] = {-120, 0, -120}, gu[3] = {0, 0, 240}, gv[3] = {240, 0, 0};
     sg_grid(s, go, gu, gv, 1, 1);
+}
+
+/* The castle: outer and courtyard octagon walls, a roof ring, towers (the
+ * scene's castle list has the ground first). */
+static void forest_castle_walls(sg *s, const forest_castle *C)
+{
+    const float R = 26.0f, Rc = 13.0f, H = 20.0f;
     G(s, Color3f, 0.82f, 0.74f, 0.6f);
     for (int k = 0; k < 8; k++) {
         float a0 = FOREST_PI / 4 * (float)k + FOREST_PI / 8, a1 = a0 + FOREST_PI / 4;
@@ -136,6 +139,12 @@ static void forest_castle_draw(sg *s, const forest_castle *C)
     sg_disc(s, 0, 0.05f, 0, Rc - 0.2f, C->court, 0);
 }
 
+static void forest_castle_draw(sg *s, const forest_castle *C)
+{
+    sg_forest_ground(s);
+    forest_castle_walls(s, C);
+}
+
 static uint64_t forest_castle_tris(const forest_castle *C)
 {
     sg m;
@@ -146,7 +155,7 @@ static uint64_t forest_castle_tris(const forest_castle *C)
     return t;
 }
 
-int sg_scene_forest(sg *s, const sg_params *p, char *err, size_t errlen)
+int sg_forest_plan_make(sg_forest_plan *F, const sg_params *p, char *err, size_t errlen)
 {
     /* Hüttner 1999, Table 3.1: 12 x 28,500 + 110,981; other targets keep
      * the castle's share of the paper scene. */
@@ -159,7 +168,7 @@ int sg_scene_forest(sg *s, const sg_params *p, char *err, size_t errlen)
         tree = (p->target - castle) / 12;
         castle = p->target - 12 * tree;
     }
-    forest_castle C = {1, 1, 1};
+    forest_castle C = {1, 1, 1, 0};
     if (forest_castle_tris(&C) > castle) {
         snprintf(err, errlen, "forest: %llu triangles are too few for the castle", (unsigned long long)castle);
         return -1;
@@ -176,53 +185,109 @@ int sg_scene_forest(sg *s, const sg_params *p, char *err, size_t errlen)
     C.stacks = 1 + (int)((castle - c1) / per);
     C.court = 1;
     C.court += castle - forest_castle_tris(&C);
+    C.tree = tree;
+    *F = C;
+    return 0;
+}
 
-    GLuint base = sg_gen_lists(s, 4);
-    if (!base) {
-        snprintf(err, errlen, "forest: glGenLists failed");
-        return -1;
-    }
+int sg_forest_compile(sg *s, const sg_forest_plan *F, uint64_t seed, GLuint base, int with_ground, char *err,
+                      size_t errlen)
+{
     for (int v = 0; v < 3; v++) {
         sg_new_list(s, base + (GLuint)v);
-        int rc = forest_tree(s, p->seed * 131 + (uint64_t)v, tree);
+        int rc = forest_tree(s, seed * 131 + (uint64_t)v, F->tree);
         sg_end_list(s);
         if (rc != 0) {
             snprintf(err, errlen, "forest: a tree of %llu triangles does not fit (or out of memory)",
-                     (unsigned long long)tree);
+                     (unsigned long long)F->tree);
             return -1;
         }
     }
     sg_new_list(s, base + 3);
-    forest_castle_draw(s, &C);
+    if (with_ground)
+        forest_castle_draw(s, F);
+    else
+        forest_castle_walls(s, F);
     sg_end_list(s);
+    return 0;
+}
 
-    G(s, Enable, GL_DEPTH_TEST);
-    G(s, Enable, GL_CULL_FACE);
-    G(s, ShadeModel, GL_SMOOTH);
-    sg_lighting(s, GL_FRONT_AND_BACK);
-    sg_perspective(s, 55.0, (double)p->width / p->height, 0.5, 1000.0);
-
+void sg_forest_trees(uint64_t seed, float tx[12], float tz[12], int tv[12])
+{
     sg_rng r;
-    sg_rng_seed(&r, p->seed * 17 + 3);
-    float tx[12], tz[12];
-    int tv[12];
+    sg_rng_seed(&r, seed * 17 + 3);
     for (int i = 0; i < 12; i++) {
         tx[i] = -27.5f + 10.0f * (float)(i % 6) + (float)sg_rng_range(&r, -2, 2);
         tz[i] = 40.0f + 9.0f * (float)(i / 6) + (float)sg_rng_range(&r, -2, 2);
         tv[i] = sg_rng_int(&r, 3);
     }
+}
+
+/* Bounds with 0.25 m of margin: a tree's crown reaches 3.5 m + a leaf's
+ * 1.2 m from the trunk and 4.5 m + 1.2 m above its top (at most 7 m,
+ * forest_tree); the castle's towers stand at 27 m with radius 4.5 m and
+ * are 24 m high with their caps. */
+void sg_forest_bounds(int castle, float lo[3], float hi[3])
+{
+    const float m = 0.25f, r = castle ? 31.5f : 4.7f, h = castle ? 24.0f : 12.7f;
+    lo[0] = lo[2] = -r - m;
+    hi[0] = hi[2] = r + m;
+    lo[1] = -m;
+    hi[1] = h + m;
+}
+
+void sg_forest_view(float t, float eye[3], float at[3])
+{
+    /* Strafe along the row of trees looking through them at the castle. */
+    eye[0] = -30.0f + 60.0f * t;
+    eye[1] = 4.0f;
+    eye[2] = 75.0f;
+    at[0] = 0.5f * eye[0];
+    at[1] = 8.0f;
+    at[2] = 0.0f;
+}
+
+void sg_forest_state(sg *s)
+{
+    G(s, Enable, GL_DEPTH_TEST);
+    G(s, Enable, GL_CULL_FACE);
+    G(s, ShadeModel, GL_SMOOTH);
+    sg_lighting(s, GL_FRONT_AND_BACK);
+}
+
+void sg_forest_lights(sg *s)
+{
+    const float l0[4] = {0.5f, 1.0f, 0.6f, 0}, d0[4] = {0.9f, 0.85f, 0.7f, 1}, a0[4] = {0.2f, 0.22f, 0.25f, 1};
+    const float l1[4] = {-0.7f, 0.3f, -0.4f, 0}, d1[4] = {0.2f, 0.25f, 0.35f, 1};
+    sg_light(s, GL_LIGHT0, l0, d0, a0, NULL);
+    sg_light(s, GL_LIGHT1, l1, d1, NULL, NULL);
+}
+
+int sg_scene_forest(sg *s, const sg_params *p, char *err, size_t errlen)
+{
+    sg_forest_plan F;
+    if (sg_forest_plan_make(&F, p, err, errlen) != 0) return -1;
+    GLuint base = sg_gen_lists(s, 4);
+    if (!base) {
+        snprintf(err, errlen, "forest: glGenLists failed");
+        return -1;
+    }
+    if (sg_forest_compile(s, &F, p->seed, base, 1, err, errlen) != 0) return -1;
+    sg_forest_state(s);
+    sg_perspective(s, SG_FOREST_FOVY, (double)p->width / p->height, SG_FOREST_ZNEAR, SG_FOREST_ZFAR);
+
+    float tx[12], tz[12];
+    int tv[12];
+    sg_forest_trees(p->seed, tx, tz, tv);
     for (int fr = 0; fr < p->frames; fr++) {
         float t = p->frames > 1 ? (float)fr / (float)(p->frames - 1) : 0.0f;
         sg_frame_begin(s, 0.6f, 0.75f, 0.95f);
         G0(s, LoadIdentity);
-        /* Strafe along the row of trees looking through them at the castle. */
-        const float eye[3] = {-30.0f + 60.0f * t, 4.0f, 75.0f}, at[3] = {0.5f * eye[0], 8.0f, 0.0f};
+        float eye[3], at[3];
+        sg_forest_view(t, eye, at);
         const float up[3] = {0, 1, 0};
         sg_look_at(s, eye, at, up);
-        const float l0[4] = {0.5f, 1.0f, 0.6f, 0}, d0[4] = {0.9f, 0.85f, 0.7f, 1}, a0[4] = {0.2f, 0.22f, 0.25f, 1};
-        const float l1[4] = {-0.7f, 0.3f, -0.4f, 0}, d1[4] = {0.2f, 0.25f, 0.35f, 1};
-        sg_light(s, GL_LIGHT0, l0, d0, a0, NULL);
-        sg_light(s, GL_LIGHT1, l1, d1, NULL, NULL);
+        sg_forest_lights(s);
         sg_call_list(s, base + 3);
         for (int i = 0; i < 12; i++) {
             G0(s, PushMatrix);

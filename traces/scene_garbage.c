@@ -72,7 +72,7 @@ static void garbage_shape(sg *s, int kind, uint64_t b)
     }
 }
 
-int sg_scene_garbage(sg *s, const sg_params *p, char *err, size_t errlen)
+int sg_garbage_plan_make(sg_garbage_plan *G, const sg_params *p, char *err, size_t errlen)
 {
     uint64_t n;
     if (p->paper) {
@@ -82,23 +82,64 @@ int sg_scene_garbage(sg *s, const sg_params *p, char *err, size_t errlen)
         if (n < 4) n = 4;
         if (n > 2500) n = 2500;
     }
-    uint64_t q = p->target / n, extra = p->target % n;
-    if (q < 40) {
-        snprintf(err, errlen, "garbage: %llu triangles per object are too few", (unsigned long long)q);
+    G->n = n;
+    G->per = p->target / n;
+    G->extra = p->target % n;
+    /* The can: a box of side ~ cube root of n, objects ~2 m apart. */
+    G->side = 2.2f * (float)cbrt((double)n);
+    if (G->per < 40) {
+        snprintf(err, errlen, "garbage: %llu triangles per object are too few", (unsigned long long)G->per);
         return -1;
     }
-    GLuint base = sg_gen_lists(s, 8);
-    if (!base) {
-        snprintf(err, errlen, "garbage: glGenLists failed");
-        return -1;
-    }
+    return 0;
+}
+
+void sg_garbage_compile(sg *s, const sg_garbage_plan *G, GLuint base)
+{
     for (int k = 0; k < 4; k++)
         for (int big = 0; big < 2; big++) {
             sg_new_list(s, base + (GLuint)(2 * k + big));
-            garbage_shape(s, k, q + (uint64_t)big);
+            garbage_shape(s, k, G->per + (uint64_t)big);
             sg_end_list(s);
         }
+}
 
+void sg_garbage_object(sg_rng *r, const sg_garbage_plan *G, uint64_t i, float t, sg_garbage_obj *o)
+{
+    float side = G->side;
+    int kind = sg_rng_int(r, 4);
+    float x = (float)sg_rng_range(r, -0.5, 0.5) * side, y = (float)sg_rng_range(r, -0.5, 0.5) * side;
+    float z = (float)sg_rng_range(r, -0.5, 0.5) * side;
+    float vx = (float)sg_rng_range(r, -0.3, 0.3), vy = (float)sg_rng_range(r, -0.3, 0.1);
+    float vz = (float)sg_rng_range(r, -0.3, 0.3);
+    float ax = (float)sg_rng_range(r, -1, 1), ay = (float)sg_rng_range(r, -1, 1);
+    float az = (float)sg_rng_range(r, -1, 1);
+    float a0 = (float)sg_rng_range(r, 0, 360), spin = (float)sg_rng_range(r, -20, 20);
+    o->scale = (float)sg_rng_range(r, 0.6, 1.3);
+    o->color[0] = (float)sg_rng_range(r, 0.2, 1);
+    o->color[1] = (float)sg_rng_range(r, 0.2, 1);
+    o->color[2] = (float)sg_rng_range(r, 0.2, 1);
+    o->pos[0] = x + vx * t;
+    o->pos[1] = y + vy * t;
+    o->pos[2] = z + vz * t;
+    o->angle = a0 + spin * t;
+    o->axis[0] = ax;
+    o->axis[1] = ay;
+    o->axis[2] = az + 0.01f;
+    o->list = 2 * kind + (i < G->extra ? 1 : 0);
+}
+
+void sg_garbage_view(const sg_garbage_plan *G, float t, float eye[3], float at[3])
+{
+    float ang = 0.4f + 0.15f * t, side = G->side;
+    eye[0] = 1.6f * side * sinf(ang);
+    eye[1] = 0.9f * side;
+    eye[2] = 1.6f * side * cosf(ang);
+    at[0] = at[1] = at[2] = 0;
+}
+
+void sg_garbage_state(sg *s)
+{
     G(s, Enable, GL_DEPTH_TEST);
     G(s, Enable, GL_CULL_FACE);
     G(s, ShadeModel, GL_SMOOTH);
@@ -107,44 +148,51 @@ int sg_scene_garbage(sg *s, const sg_params *p, char *err, size_t errlen)
     const float spec[4] = {0.4f, 0.4f, 0.4f, 1};
     G(s, Materialfv, GL_FRONT, GL_SPECULAR, spec);
     G(s, Materialf, GL_FRONT, GL_SHININESS, 24.0f);
-    sg_perspective(s, 50.0, (double)p->width / p->height, 1.0, 1000.0);
+}
 
-    /* The can: a box of side ~ cube root of n, objects ~2 m apart. */
-    float side = 2.2f * (float)cbrt((double)n);
+void sg_garbage_lights(sg *s)
+{
+    const float l0[4] = {0.3f, 1.0f, 0.5f, 0}, d0[4] = {0.8f, 0.8f, 0.75f, 1}, sp[4] = {1, 1, 1, 1};
+    const float l1[4] = {-0.8f, 0.2f, -0.3f, 0}, d1[4] = {0.3f, 0.3f, 0.45f, 1};
+    const float l2[4] = {0.0f, -1.0f, 0.2f, 0}, d2[4] = {0.25f, 0.2f, 0.1f, 1};
+    sg_light(s, GL_LIGHT0, l0, d0, NULL, sp);
+    sg_light(s, GL_LIGHT1, l1, d1, NULL, NULL);
+    sg_light(s, GL_LIGHT2, l2, d2, NULL, NULL);
+}
+
+int sg_scene_garbage(sg *s, const sg_params *p, char *err, size_t errlen)
+{
+    sg_garbage_plan Gp;
+    if (sg_garbage_plan_make(&Gp, p, err, errlen) != 0) return -1;
+    GLuint base = sg_gen_lists(s, 8);
+    if (!base) {
+        snprintf(err, errlen, "garbage: glGenLists failed");
+        return -1;
+    }
+    sg_garbage_compile(s, &Gp, base);
+    sg_garbage_state(s);
+    sg_perspective(s, SG_GARBAGE_FOVY, (double)p->width / p->height, SG_GARBAGE_ZNEAR, SG_GARBAGE_ZFAR);
+
     for (int fr = 0; fr < p->frames; fr++) {
         float t = (float)fr;
         sg_frame_begin(s, 0.15f, 0.15f, 0.15f);
         G0(s, LoadIdentity);
-        float ang = 0.4f + 0.15f * t;
-        const float eye[3] = {1.6f * side * sinf(ang), 0.9f * side, 1.6f * side * cosf(ang)};
-        const float at[3] = {0, 0, 0}, up[3] = {0, 1, 0};
+        float eye[3], at[3];
+        sg_garbage_view(&Gp, t, eye, at);
+        const float up[3] = {0, 1, 0};
         sg_look_at(s, eye, at, up);
-        const float l0[4] = {0.3f, 1.0f, 0.5f, 0}, d0[4] = {0.8f, 0.8f, 0.75f, 1}, sp[4] = {1, 1, 1, 1};
-        const float l1[4] = {-0.8f, 0.2f, -0.3f, 0}, d1[4] = {0.3f, 0.3f, 0.45f, 1};
-        const float l2[4] = {0.0f, -1.0f, 0.2f, 0}, d2[4] = {0.25f, 0.2f, 0.1f, 1};
-        sg_light(s, GL_LIGHT0, l0, d0, NULL, sp);
-        sg_light(s, GL_LIGHT1, l1, d1, NULL, NULL);
-        sg_light(s, GL_LIGHT2, l2, d2, NULL, NULL);
+        sg_garbage_lights(s);
         sg_rng r;
         sg_rng_seed(&r, p->seed * 7919 + 11);
-        for (uint64_t i = 0; i < n; i++) {
-            int kind = sg_rng_int(&r, 4);
-            float x = (float)sg_rng_range(&r, -0.5, 0.5) * side, y = (float)sg_rng_range(&r, -0.5, 0.5) * side;
-            float z = (float)sg_rng_range(&r, -0.5, 0.5) * side;
-            float vx = (float)sg_rng_range(&r, -0.3, 0.3), vy = (float)sg_rng_range(&r, -0.3, 0.1);
-            float vz = (float)sg_rng_range(&r, -0.3, 0.3);
-            float ax = (float)sg_rng_range(&r, -1, 1), ay = (float)sg_rng_range(&r, -1, 1);
-            float az = (float)sg_rng_range(&r, -1, 1);
-            float a0 = (float)sg_rng_range(&r, 0, 360), spin = (float)sg_rng_range(&r, -20, 20);
-            float sc = (float)sg_rng_range(&r, 0.6, 1.3);
-            float cr = (float)sg_rng_range(&r, 0.2, 1), cg = (float)sg_rng_range(&r, 0.2, 1);
-            float cb = (float)sg_rng_range(&r, 0.2, 1);
-            G(s, Color3f, cr, cg, cb);
+        for (uint64_t i = 0; i < Gp.n; i++) {
+            sg_garbage_obj o;
+            sg_garbage_object(&r, &Gp, i, t, &o);
+            G(s, Color3f, o.color[0], o.color[1], o.color[2]);
             G0(s, PushMatrix);
-            G(s, Translatef, x + vx * t, y + vy * t, z + vz * t);
-            G(s, Rotatef, a0 + spin * t, ax, ay, az + 0.01f);
-            G(s, Scalef, sc, sc, sc);
-            sg_call_list(s, base + (GLuint)(2 * kind + (i < extra ? 1 : 0)));
+            G(s, Translatef, o.pos[0], o.pos[1], o.pos[2]);
+            G(s, Rotatef, o.angle, o.axis[0], o.axis[1], o.axis[2]);
+            G(s, Scalef, o.scale, o.scale, o.scale);
+            sg_call_list(s, base + (GLuint)o.list);
             G0(s, PopMatrix);
         }
         sg_frame_end(s);

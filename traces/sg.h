@@ -209,6 +209,80 @@ void sg_city_lot(sg_rng *lots, const sg_city_plan *pl, uint64_t i, int *variant,
 /* The lot's model transform, as glTranslate/glRotate calls. */
 void sg_city_lot_transform(sg *s, const sg_city_plan *pl, uint64_t i, int turn);
 
+/* The cathedrals generator's parts (scene_cathedral.c), shared with the
+ * culling program: one cathedral is a shell and 2 x cols bays (a column and
+ * its arch), each setting its own colours. */
+typedef struct sg_cath_params {
+    int cols;       /* columns per row */
+    int slices, stacks;
+    int arch_seg, vault_seg, vault_len, wall_sub, floor_sub;
+    uint64_t rose[2];
+} sg_cath_params;
+#define SG_CATH_FOVY 65.0
+#define SG_CATH_ZNEAR 0.3
+#define SG_CATH_ZFAR 800.0
+/* The tessellation giving one copy exactly 'per' triangles; 0 or -1 (err). */
+int sg_cath_plan(sg_cath_params *P, uint64_t per, char *err, size_t errlen);
+/* Compiles the column into 'list'; 0 or -1 (err). */
+int sg_cath_compile_column(sg *s, const sg_cath_params *P, GLuint list, char *err, size_t errlen);
+void sg_cath_shell(sg *s, const sg_cath_params *P);
+void sg_cath_bay(sg *s, const sg_cath_params *P, GLuint column_list, int side, int i);
+/* Model-space bounds of the shell (bay -1) or of bay 0..2 cols-1 (side -1
+ * first), with a margin. */
+void sg_cath_bounds(const sg_cath_params *P, int bay, float lo[3], float hi[3]);
+void sg_cath_copy_offset(int k, float t[3]);   /* copy k of 8 */
+void sg_cath_view(float t, float eye[3], float at[3]);   /* path position t in [0, 1] */
+void sg_cath_state(sg *s);
+void sg_cath_lights(sg *s);
+
+/* The forest generator's parts (scene_forest.c), shared with the culling
+ * program: three tree variants in lists base..base+2, the castle in base+3
+ * (with the ground, as the scene draws it, or without: then
+ * sg_forest_ground draws it), 12 trees placed on the meadow. */
+typedef struct sg_forest_plan {
+    int sub, stacks;      /* the castle's wall subdivision and tower stacks */
+    uint64_t court;       /* the courtyard fan's triangles */
+    uint64_t tree;        /* triangles per tree */
+} sg_forest_plan;
+#define SG_FOREST_FOVY 55.0
+#define SG_FOREST_ZNEAR 0.5
+#define SG_FOREST_ZFAR 1000.0
+int sg_forest_plan_make(sg_forest_plan *F, const sg_params *p, char *err, size_t errlen);
+int sg_forest_compile(sg *s, const sg_forest_plan *F, uint64_t seed, GLuint base, int with_ground, char *err,
+                      size_t errlen);
+void sg_forest_ground(sg *s);
+void sg_forest_trees(uint64_t seed, float tx[12], float tz[12], int tv[12]);
+/* Model-space bounds of a tree (castle 0) or of the castle, with a margin. */
+void sg_forest_bounds(int castle, float lo[3], float hi[3]);
+void sg_forest_view(float t, float eye[3], float at[3]);
+void sg_forest_state(sg *s);
+void sg_forest_lights(sg *s);
+
+/* The garbage generator's parts (scene_garbage.c), shared with the culling
+ * program: n objects of four shapes (lists base..base+7), each frame placed
+ * by drawing sg_garbage_object for i = 0..n-1 from one generator seeded with
+ * seed * 7919 + 11; t is the frame number. */
+typedef struct sg_garbage_plan {
+    uint64_t n, per, extra;  /* objects; triangles per object; objects with one more */
+    float side;              /* the can's side */
+} sg_garbage_plan;
+typedef struct sg_garbage_obj {
+    float pos[3], angle, axis[3], scale, color[3];
+    int list;                /* offset from the lists' base */
+} sg_garbage_obj;
+#define SG_GARBAGE_FOVY 50.0
+#define SG_GARBAGE_ZNEAR 1.0
+#define SG_GARBAGE_ZFAR 1000.0
+/* Every shape lies within this radius of its origin (the box's corner,
+ * sqrt(3) x 0.7 m, is the farthest point), before the object's scale. */
+#define SG_GARBAGE_RADIUS 1.25f
+int sg_garbage_plan_make(sg_garbage_plan *G, const sg_params *p, char *err, size_t errlen);
+void sg_garbage_compile(sg *s, const sg_garbage_plan *G, GLuint base);
+void sg_garbage_object(sg_rng *r, const sg_garbage_plan *G, uint64_t i, float t, sg_garbage_obj *o);
+void sg_garbage_view(const sg_garbage_plan *G, float t, float eye[3], float at[3]);
+void sg_garbage_state(sg *s);
+void sg_garbage_lights(sg *s);
+
 /* Scene entry points (traces/scene_*.c). */
 int sg_scene_city(sg *s, const sg_params *p, char *err, size_t errlen);
 int sg_scene_norwich(sg *s, const sg_params *p, char *err, size_t errlen);
