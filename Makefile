@@ -110,7 +110,7 @@ $(SCENEGEN): $(SCENE_SRCS:%.c=$(BUILD)/%.o) $(LIB)
 # (cullstudy-osmesa: llvmpipe).  The scene generators' emitter and the city
 # are compiled again with SG_DIRECT_GL, so they send plain gl* calls.
 CULL_SRCS := $(wildcard traces/culling/*.c)
-CULL_GEOM := traces/sg.c traces/scene_city.c
+CULL_GEOM := traces/sg.c traces/scene_city.c traces/scene_cathedral.c traces/scene_forest.c traces/scene_garbage.c
 CULL_OBJS := $(CULL_SRCS:%.c=$(BUILD)/cull/%.o) $(CULL_GEOM:%.c=$(BUILD)/cull/%.o)
 CULLSTUDY := $(BUILD)/cullstudy $(BUILD)/cullstudy-osmesa
 .PHONY: cullstudy

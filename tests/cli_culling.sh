@@ -1,7 +1,7 @@
 #!/bin/bash
 # The culling study's program (traces/culling/, issue 21): build/cullstudy on
-# the model (the shim) and build/cullstudy-osmesa on libOSMesa, small city,
-# a few frames.  Culling with exact tests is conservative (Huettner 1999,
+# the model (the shim) and build/cullstudy-osmesa on libOSMesa, the four
+# scenes of Table 3.1 at small scale, a few frames.  Culling with exact tests is conservative (Huettner 1999,
 # sec. 3.1.6), so every method's images must equal DR's at tolerance 0, on
 # both libraries; the query methods must make the same decisions and images
 # on the model as on llvmpipe.
@@ -31,32 +31,70 @@ col_sum() { # CSV COLUMN_NAME -> the column's sum
     awk -F, -v c="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == c) k = i; next } { s += $k } END { print s + 0 }' "$1"
 }
 
+SCENES="city cathedrals forest garbage"
+
+# Every method and test, every scene (garbage: leaf-only tests, its default).
 test_methods_identical_to_dr_on_the_model() {
-    run_cull "$SHIMBIN" m_dr --method dr
-    for spec in "vfc query" "vo query" "cac query" "vo stencil" "vo hp"; do
-        set -- $spec
-        run_cull "$SHIMBIN" "m_$1_$2" --method "$1" --test "$2"
-        same_images "$WORK/m_dr" "$WORK/m_$1_$2"
+    for sc in $SCENES; do
+        run_cull "$SHIMBIN" "m_${sc}_dr" --scene "$sc" --method dr
+        for spec in "vfc query" "vfc query --vfc-select" "vo query" "ac query" "cac query" "vo stencil" \
+                    "vo hp" "vo brief" "vo query --vfc-select"; do
+            set -- $spec
+            run_cull "$SHIMBIN" "m_${sc}_$1_$2${3:-}" --scene "$sc" --method "$1" --test "$2" ${3:-}
+            same_images "$WORK/m_${sc}_dr" "$WORK/m_${sc}_$1_$2${3:-}"
+        done
     done
 }
 
 test_methods_identical_to_dr_on_osmesa() {
-    run_cull "$OSMBIN" o_dr --method dr
-    for spec in "vfc query" "vo query" "cac query" "vo stencil"; do
-        set -- $spec
-        run_cull "$OSMBIN" "o_$1_$2" --method "$1" --test "$2"
-        same_images "$WORK/o_dr" "$WORK/o_$1_$2"
+    for sc in $SCENES; do
+        run_cull "$OSMBIN" "o_${sc}_dr" --scene "$sc" --method dr
+        for spec in "vfc query" "vfc query --vfc-select" "vo query" "ac query" "cac query" "vo stencil"; do
+            set -- $spec
+            run_cull "$OSMBIN" "o_${sc}_$1_$2${3:-}" --scene "$sc" --method "$1" --test "$2" ${3:-}
+            same_images "$WORK/o_${sc}_dr" "$WORK/o_${sc}_$1_$2${3:-}"
+        done
     done
 }
 
+# The same decisions on both libraries, and the same images.  Known
+# difference: on cathedrals (and forest at other sizes) the model's lighting differs from
+# llvmpipe's by 1 in one channel of at most a few pixels a frame (the
+# rounding the corpus's program traces show too, docs/conformance.md);
+# checked as such, so that this test fails when it goes away.
+KNOWN_1LSB="cathedrals"
 test_query_methods_model_equals_osmesa() {
-    for spec in "dr query" "vo query" "cac query" "vo stencil"; do
-        set -- $spec
-        run_cull "$SHIMBIN" "s_$1_$2" --method "$1" --test "$2"
-        run_cull "$OSMBIN" "l_$1_$2" --method "$1" --test "$2"
-        same_images "$WORK/l_$1_$2" "$WORK/s_$1_$2"
-        diff "$WORK/l_$1_$2/culling.csv" "$WORK/s_$1_$2/culling.csv" >&2 ||
-            fail "$1 $2: the model's culling decisions differ from llvmpipe's"
+    for sc in $SCENES; do
+        KNOWN_SEEN=0
+        for spec in "dr query" "vo query" "vo stencil" "vfc query --vfc-select"; do
+            set -- $spec
+            run_cull "$SHIMBIN" "s_${sc}_$1_$2${3:-}" --scene "$sc" --method "$1" --test "$2" ${3:-}
+            run_cull "$OSMBIN" "l_${sc}_$1_$2${3:-}" --scene "$sc" --method "$1" --test "$2" ${3:-}
+            diff "$WORK/l_${sc}_$1_$2${3:-}/culling.csv" "$WORK/s_${sc}_$1_$2${3:-}/culling.csv" >&2 ||
+                fail "$sc $1 $2 ${3:-}: the model's culling decisions differ from llvmpipe's"
+            case " $KNOWN_1LSB " in
+            *" $sc "*) known_small_difference "$WORK/l_${sc}_$1_$2${3:-}" "$WORK/s_${sc}_$1_$2${3:-}" ;;
+            *) same_images "$WORK/l_${sc}_$1_$2${3:-}" "$WORK/s_${sc}_$1_$2${3:-}" ;;
+            esac
+        done
+        case " $KNOWN_1LSB " in
+        *" $sc "*) [ "$KNOWN_SEEN" = 1 ] || fail "$sc: now identical to llvmpipe's images: take it off KNOWN_1LSB" ;;
+        esac
+    done
+}
+
+# DIR_A DIR_B: every difference is at most 1 in at most 8 pixels of a
+# frame; KNOWN_SEEN=1 when there is one.
+known_small_difference() {
+    for f in $(seq 0 $((FRAMES - 1))); do
+        local n; n=$(printf 'frame_%04d.png' "$f")
+        if ! "$FRAGSIM" diff "$1/$n" "$2/$n" >"$WORK/diff.txt" 2>&1; then
+            KNOWN_SEEN=1
+            local px md
+            px=$(sed -nE 's/^([0-9]+) of [0-9]+ pixels differ, max diff ([0-9]+).*/\1/p' "$WORK/diff.txt")
+            md=$(sed -nE 's/^([0-9]+) of [0-9]+ pixels differ, max diff ([0-9]+).*/\2/p' "$WORK/diff.txt")
+            [ -n "$px" ] && [ "$px" -le 8 ] && [ "$md" -le 1 ] || fail "$2/$n: $(tail -n 1 "$WORK/diff.txt")"
+        fi
     done
 }
 
@@ -74,15 +112,34 @@ test_culling_culls() {
     [ "$vo" -lt "$vfc" ] && [ "$occ" -gt 0 ] || fail "V+O drew $vo houses (VFC $vfc), $occ nodes occluded"
 }
 
+# GL_BRIEF_OCCLUSION's NOHC is the query's count (both count the box's
+# fragments passing the depth test), so the decisions are the same; VFC in
+# selection mode culls in the static scenes, and the cathedrals' other copies and
+# hidden bays are occluded; garbage tests at leaves only.
+test_brief_selection_and_scenes() {
+    for sc in $SCENES; do
+        run_cull "$SHIMBIN" "b_${sc}_q" --scene "$sc" --method vo --test query
+        run_cull "$SHIMBIN" "b_${sc}_b" --scene "$sc" --method vo --test brief
+        diff <(cut -d, -f4- "$WORK/b_${sc}_q/culling.csv") <(cut -d, -f4- "$WORK/b_${sc}_b/culling.csv") >&2 ||
+            fail "$sc: brief and query decide differently"
+        [ "$sc" = garbage ] && continue # the orbit keeps the whole can in view
+        run_cull "$SHIMBIN" "b_${sc}_sel" --scene "$sc" --method vfc --vfc-select
+        [ "$(col_sum "$WORK/b_${sc}_sel/culling.csv" vfc_culled)" -gt 0 ] || fail "$sc: selection-mode VFC culled nothing"
+    done
+    [ "$(col_sum "$WORK/b_cathedrals_q/culling.csv" occ_culled)" -gt 0 ] || fail "cathedrals: nothing occluded"
+    grep -q "occlusion tests at leaves only" "$WORK/b_garbage_q.out" || fail "garbage: $(cat "$WORK/b_garbage_q.out")"
+}
+
 # Node and leaf counts: one house per leaf gives 36 leaves; p-HBVO's trees are
 # binary (sec. 3.1.5: "non-sloppy binary trees"), so 2 * 36 - 1 nodes.
 test_hierarchy_counts() {
     for h in phbvo dbvs sgi; do
         run_cull "$SHIMBIN" "h_$h" --method vfc --hierarchy "$h" --frames 1
     done
-    grep -qx "hierarchy p-HBVO: 71 nodes, 36 leaves, 36 objects" "$WORK/h_phbvo.out" || fail "$(cat "$WORK/h_phbvo.out")"
-    grep -qE "^hierarchy D-BVS: [0-9]+ nodes, 36 leaves" "$WORK/h_dbvs.out" || fail "$(cat "$WORK/h_dbvs.out")"
-    grep -qE "^hierarchy SGI: [0-9]+ nodes, 36 leaves" "$WORK/h_sgi.out" || fail "$(cat "$WORK/h_sgi.out")"
+    grep -qx "scene city (small): hierarchy p-HBVO: 71 nodes, 36 leaves, 36 objects" "$WORK/h_phbvo.out" ||
+        fail "$(cat "$WORK/h_phbvo.out")"
+    grep -qE "hierarchy D-BVS: [0-9]+ nodes, 36 leaves" "$WORK/h_dbvs.out" || fail "$(cat "$WORK/h_dbvs.out")"
+    grep -qE "hierarchy SGI: [0-9]+ nodes, 36 leaves" "$WORK/h_sgi.out" || fail "$(cat "$WORK/h_sgi.out")"
     local line nodes leaves
     line=$("$SHIMBIN" --method dr --frames 1 --size 64x64 --leaf 2 --out "$WORK/h2")
     nodes=$(echo "$line" | sed -nE 's/.*: ([0-9]+) nodes, ([0-9]+) leaves.*/\1/p')
@@ -109,11 +166,10 @@ test_unavailable_and_bad_options() {
     local out
     out=$("$OSMBIN" --test hp --frames 1 --out "$WORK/x1" 2>&1); [ $? -eq 2 ] || fail "hp on libOSMesa: not exit 2"
     echo "$out" | grep -q "does not offer GL_HP_occlusion_test" || fail "hp: $out"
-    out=$("$SHIMBIN" --test brief --frames 1 --out "$WORK/x2" 2>&1); [ $? -eq 2 ] || fail "brief: not exit 2"
-    echo "$out" | grep -q "not yet" || fail "brief: $out"
-    out=$("$SHIMBIN" --vfc-select 2>&1); [ $? -eq 2 ] || fail "--vfc-select: not exit 2"
-    echo "$out" | grep -q "selection mode.*not yet" || fail "--vfc-select: $out"
-    out=$("$SHIMBIN" --scene forest 2>&1); [ $? -eq 2 ] || fail "--scene forest: not exit 2"
+    out=$("$OSMBIN" --test brief --frames 1 --out "$WORK/x2" 2>&1); [ $? -eq 2 ] || fail "brief on libOSMesa: not exit 2"
+    echo "$out" | grep -q "does not offer GL_FRAGSIM_occlusion_unit" || fail "brief: $out"
+    out=$("$SHIMBIN" --scene moon 2>&1); [ $? -eq 2 ] || fail "--scene moon: not exit 2"
+    echo "$out" | grep -q "city, cathedrals, forest and garbage" || fail "--scene moon: $out"
     "$SHIMBIN" --method xyz >/dev/null 2>&1; [ $? -eq 2 ] || fail "--method xyz: not exit 2"
     "$SHIMBIN" --size 0x5 >/dev/null 2>&1; [ $? -eq 2 ] || fail "--size 0x5: not exit 2"
     "$SHIMBIN" --frames >/dev/null 2>&1; [ $? -eq 2 ] || fail "--frames without a value: not exit 2"
@@ -121,7 +177,8 @@ test_unavailable_and_bad_options() {
 }
 
 for t in test_methods_identical_to_dr_on_the_model test_methods_identical_to_dr_on_osmesa \
-         test_query_methods_model_equals_osmesa test_culling_culls test_hierarchy_counts \
+         test_query_methods_model_equals_osmesa test_brief_selection_and_scenes test_culling_culls \
+         test_hierarchy_counts \
          test_cycles_column_from_capture test_unavailable_and_bad_options; do
     run_test "$t"
 done

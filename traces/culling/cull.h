@@ -15,14 +15,42 @@ typedef struct cull_box { float lo[3], hi[3]; } cull_box;
 /* One object of the scene: the unit of geometry the hierarchies sort
  * (a furnished house of the city).  The dissertation subdivides polygons;
  * here a leaf holds whole objects, so no geometry is split or regrouped and
- * every method draws the very same display-list calls as DR. */
+ * every method draws the very same display-list calls as DR.  Drawn as
+ * glTranslatef(pre), glRotatef(angle, axis) if rotate, glTranslatef(post)
+ * if nonzero, glScalef(scale) if not 1, glColor3fv(color) if has_color,
+ * glCallList(list), between glPushMatrix and glPopMatrix. */
 typedef struct cull_obj {
-    cull_box box;
+    cull_box box;                 /* world space, this frame */
     uint64_t tris;
     GLuint list;
-    uint64_t lot;
-    int turn;
+    float pre[3], angle, axis[3], post[3], scale, color[3];
+    int rotate, has_color;
 } cull_obj;
+
+/* ---- scenes (cull_scenes.c): Huettner 1999, Table 3.1 ---- */
+typedef struct cull_camera { float eye[3], at[3]; double fovy, znear, zfar; } cull_camera;
+struct sg;
+typedef struct cull_scene {
+    struct sg *s;                 /* the emitter the geometry goes through */
+    int paper, frames;
+    uint64_t seed;
+    cull_obj *objs;
+    int n_objs;
+    uint64_t ground_tris;         /* what ops->ground draws */
+    void *priv;
+} cull_scene;
+typedef struct cull_scene_ops {
+    const char *name;
+    int dynamic;                  /* objects move: frame() places them and their boxes */
+    float clear[3];
+    int (*setup)(cull_scene *sc, char *err, size_t errlen);   /* lists, objects; 0 or -1 */
+    void (*state)(cull_scene *sc);                            /* GL state, once */
+    void (*frame)(cull_scene *sc, int frame, cull_camera *cam);
+    void (*lights)(cull_scene *sc);                           /* after the view */
+    void (*ground)(cull_scene *sc);                           /* drawn first by every method, or NULL */
+} cull_scene_ops;
+const cull_scene_ops *cull_scene_find(const char *name);
+void cull_scene_free(cull_scene *sc);
 
 /* A node of the snSP-tree (sec. 3.1.5): inner nodes only bound their
  * children (boxes of one level may overlap: "sloppy"); leaves hold objects. */
@@ -72,6 +100,10 @@ enum { CULL_TEST_QUERY, CULL_TEST_HP, CULL_TEST_BRIEF, CULL_TEST_STENCIL };
  * the box's rectangle is cleared again).  sampling > 1 reads every
  * sampling-th line of the stencil rectangle only (non-conservative). */
 uint64_t cull_occlusion_test(int test, const cull_view *v, const cull_box *b, int sampling);
+/* VFC in GL selection mode (sec. 3.1.6): does the box, drawn in GL_SELECT,
+ * reach into the view volume?  The caller handles boxes the eye is in or
+ * that reach in front of the near plane (they may contain the volume). */
+int cull_select_test(const cull_box *b);
 /* A reason the test cannot run on this GL, or NULL. */
 const char *cull_test_unavailable(int test);
 

@@ -9,7 +9,11 @@
  *  - stencil: the dissertation's "virtual occlusion buffer": the box is
  *             drawn into the stencil buffer (REPLACE on depth pass) and
  *             its screen rectangle read back with glReadPixels;
- *  - brief:   the proposed extension's GL_BRIEF_OCCLUSION tiles: not yet.
+ *  - brief:   the proposed extension's GL_BRIEF_OCCLUSION render mode
+ *             (sec. 3.2.1): the box drawn in that mode, its brief record's
+ *             NOHC read from the occlusion buffer (offered by the shim only).
+ * and the VFC test in GL selection mode (sec. 3.1.6), as the dissertation
+ * does it.
  */
 #define GL_GLEXT_PROTOTYPES 1
 #include <math.h>
@@ -17,7 +21,9 @@
 #include <string.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
+#include <GL/osmesa.h>
 #include "cull.h"
+#include "../../glext/GL_FRAGSIM_occlusion_unit.h"
 
 #ifndef GL_OCCLUSION_TEST_HP
 #define GL_OCCLUSION_TEST_HP 0x8165
@@ -67,7 +73,7 @@ int cull_box_contains(const cull_box *b, const float p[3])
     return 1;
 }
 
-/* The box as six quads; both faces rasterized (culling is off). */
+/* The box as six quads, counter-clockwise seen from outside. */
 static void draw_box(const cull_box *b)
 {
     static const unsigned char f[6][4] = {
@@ -145,11 +151,52 @@ static uint64_t stencil_test(const cull_view *v, const cull_box *b, int sampling
     return read ? n : 1; /* out of memory: visible, which is safe */
 }
 
+/* GL_BRIEF_OCCLUSION: the box's non-occlusion hits in the one tile (the
+ * whole viewport), from the brief record glRenderMode(GL_RENDER) writes. */
+static uint64_t brief_test(const cull_box *b)
+{
+    /* Looked up, not linked: libOSMesa has no such entry point, and the
+     * program is built against it too (cull_test_unavailable says so). */
+    PFNGLOCCLUSIONBUFFERSPROC occlusion_buffers =
+        (PFNGLOCCLUSIONBUFFERSPROC)OSMesaGetProcAddress("glOcclusionBuffers");
+    if (!occlusion_buffers) return 1; /* visible, which is safe */
+    GLuint rec[GL_OCCLUSION_RECORD_WORDS] = {0};
+    GLuint *bufs[1] = {rec};
+    const GLsizei sizes[1] = {GL_OCCLUSION_RECORD_WORDS};
+    occlusion_buffers(sizes, bufs);
+    glRenderMode(GL_BRIEF_OCCLUSION);
+    draw_box(b);
+    if (glRenderMode(GL_RENDER) < 0) return 1;
+    return rec[GL_OCCLUSION_RECORD_NOHC];
+}
+
+int cull_select_test(const cull_box *b)
+{
+    GLuint hits[4] = {0};
+    glSelectBuffer(4, hits);
+    glRenderMode(GL_SELECT);
+    glInitNames();
+    glPushName(1);
+    glDisable(GL_CULL_FACE); /* a face seen from behind still intersects the volume */
+    glDisable(GL_LIGHTING);
+    draw_box(b);
+    glEnable(GL_LIGHTING);
+    glEnable(GL_CULL_FACE);
+    GLint n = glRenderMode(GL_RENDER);
+    return n != 0; /* one hit record, or an overflow (-1): the box reaches into the view volume */
+}
+
 uint64_t cull_occlusion_test(int test, const cull_view *v, const cull_box *b, int sampling)
 {
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
+    /* Front faces only: "for the correct computation of occlusion, backface
+     * culling must be enabled, since otherwise hits can be counted twice"
+     * (Huettner 1999, sec. 3.2).  Still conservative: the eye is outside
+     * the box (occlusion_walk draws boxes it is in untested), so the front
+     * faces cover the box's projection and lie in front of its back faces. */
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
     glDisable(GL_LIGHTING);
     uint64_t n = 1;
     if (test == CULL_TEST_QUERY) {
@@ -170,6 +217,8 @@ uint64_t cull_occlusion_test(int test, const cull_view *v, const cull_box *b, in
         n = hit ? 1 : 0;
     } else if (test == CULL_TEST_STENCIL) {
         n = stencil_test(v, b, sampling);
+    } else if (test == CULL_TEST_BRIEF) {
+        n = brief_test(b);
     }
     glEnable(GL_LIGHTING);
     glEnable(GL_CULL_FACE);
@@ -181,8 +230,9 @@ uint64_t cull_occlusion_test(int test, const cull_view *v, const cull_box *b, in
 const char *cull_test_unavailable(int test)
 {
     const char *ext = (const char *)glGetString(GL_EXTENSIONS);
-    if (test == CULL_TEST_BRIEF)
-        return "--test brief (GL_BRIEF_OCCLUSION tiles) is not yet implemented";
+    if (test == CULL_TEST_BRIEF && (!ext || !strstr(ext, "GL_FRAGSIM_occlusion_unit") ||
+                                    !OSMesaGetProcAddress("glOcclusionBuffers")))
+        return "this GL does not offer GL_FRAGSIM_occlusion_unit (GL_BRIEF_OCCLUSION; libOSMesa does not, the shim does)";
     if (test == CULL_TEST_HP && (!ext || !strstr(ext, "GL_HP_occlusion_test")))
         return "this GL does not offer GL_HP_occlusion_test (libOSMesa 22.3 does not; the shim does)";
     if (test == CULL_TEST_STENCIL) {

@@ -30,6 +30,8 @@ enum { M_DR, M_VFC, M_VO, M_AC, M_CAC };
 typedef struct opts {
     const char *scene, *scale, *out;
     int method, test, hierarchy, frames, width, height, leaf_objs, sampling;
+    int leaf_only;         /* occlusion tests at leaves only (sec. 3.1.9, moving objects) */
+    int vfc_select;        /* VFC in GL selection mode (sec. 3.1.6) instead of on the CPU */
     double ac_threshold;   /* eq. 3.3 threshold, in pixels of a 650x650 view plane */
     double p_graphics;     /* eq. 3.4 */
     double test_cost;      /* one occlusion test, in triangles rendered (eq. 3.4's unit here) */
@@ -43,12 +45,10 @@ typedef struct frame_stats {
 typedef struct study {
     opts o;
     sg s;
-    sg_city_plan plan;
-    cull_obj *objs;
-    int n_objs;
+    const cull_scene_ops *ops;
+    cull_scene sc;
     cull_tree tree;
     cull_view view;
-    uint64_t ground_tris;
     double prev_render;    /* eq. 3.4's T_render: triangles of the previous frame */
     frame_stats st;
 } study;
@@ -56,10 +56,10 @@ typedef struct study {
 static int usage(const char *msg)
 {
     if (msg) fprintf(stderr, "cullstudy: %s\n", msg);
-    fprintf(stderr, "usage: cullstudy [--scene city] [--scale small|paper] [--method dr|vfc|vo|ac|cac]\n"
-                    "  [--test query|hp|brief|stencil] [--hierarchy phbvo|dbvs|sgi] [--frames N]\n"
-                    "  [--size WxH] [--out DIR] [--leaf N] [--sampling N] [--ac-threshold PIXELS]\n"
-                    "  [--test-cost TRIANGLES] [--vfc-select]\n");
+    fprintf(stderr, "usage: cullstudy [--scene city|cathedrals|forest|garbage] [--scale small|paper]\n"
+                    "  [--method dr|vfc|vo|ac|cac] [--test query|hp|brief|stencil] [--hierarchy phbvo|dbvs|sgi]\n"
+                    "  [--frames N] [--size WxH] [--out DIR] [--leaf N] [--leaf-only] [--sampling N]\n"
+                    "  [--ac-threshold PIXELS] [--test-cost TRIANGLES] [--vfc-select]\n");
     return 2;
 }
 
@@ -111,16 +111,18 @@ static int parse_opt(opts *o, const char *k, const char *v)
 
 static int parse_args(opts *o, int argc, char **argv)
 {
-    *o = (opts){"city", "small", "out/cullstudy", M_VO, CULL_TEST_QUERY, CULL_PHBVO, 100, 650, 650, 1, 1,
+    *o = (opts){"city", "small", "out/cullstudy", M_VO, CULL_TEST_QUERY, CULL_PHBVO, 100, 650, 650, 1, 1, -1,
                 100.0, 1.0 / 3.0, 100.0, 1};
     for (int i = 1; i < argc; i += 2) {
+        if (!strcmp(argv[i], "--leaf-only")) {
+            o->leaf_only = 1;
+            i--;
+            continue;
+        }
         if (!strcmp(argv[i], "--vfc-select")) {
-            /* TODO(issue 21, item 3): VFC through GL selection mode, as the
-             * dissertation does it (sec. 3.1.6), once GL_SELECT is in the
-             * model (GL 1.5 issue 19). */
-            fprintf(stderr, "cullstudy: --vfc-select (VFC in GL selection mode): not yet; "
-                            "--method vfc culls on the CPU\n");
-            return 2;
+            o->vfc_select = 1;
+            i--;
+            continue;
         }
         if (i + 1 >= argc) return usage("an option without its value");
         int rc = parse_opt(o, argv[i], argv[i + 1]);
@@ -133,9 +135,8 @@ static int parse_args(opts *o, int argc, char **argv)
             return usage(NULL);
         }
     }
-    if (strcmp(o->scene, "city") != 0) {
-        fprintf(stderr, "cullstudy: --scene %s: only city so far (cathedrals, forest, garbage: not yet)\n",
-                o->scene);
+    if (!cull_scene_find(o->scene)) {
+        fprintf(stderr, "cullstudy: --scene %s: the scenes are city, cathedrals, forest and garbage\n", o->scene);
         return 2;
     }
     if (strcmp(o->scale, "small") != 0 && strcmp(o->scale, "paper") != 0)
@@ -143,51 +144,7 @@ static int parse_args(opts *o, int argc, char **argv)
     return 0;
 }
 
-/* ---- the city (Huettner 1999, Table 3.1: 300 houses, 1,056,280 triangles) ---- */
-
-/* A house's bound, from scene_city.c's layout: footprint at most 13 x 10 m
- * placed at (-6, -5) and turned by quarter turns, so within 7 m of the lot's
- * centre; at most max_floors + 2 floors of 3 m and a roof of 0.45 x 10 m.
- * The margin keeps geometry strictly inside, so the box's front faces lie in
- * front of it (conservative tests, and VFC's float planes). */
-static cull_box lot_box(const sg_city_plan *pl, uint64_t i)
-{
-    const float m = 0.25f;
-    float cx = ((float)(i % (uint64_t)pl->cols) + 0.5f) * SG_CITY_LOT;
-    float cz = ((float)(i / (uint64_t)pl->cols) + 0.5f) * SG_CITY_LOT;
-    float top = (float)(pl->max_floors + 2) * SG_CITY_FLOOR_H + 4.5f;
-    cull_box b = {{cx - 7 - m, -m, cz - 7 - m}, {cx + 7 + m, top + m, cz + 7 + m}};
-    return b;
-}
-
-static int city_setup(study *S, char *err, size_t errlen)
-{
-    int paper = !strcmp(S->o.scale, "paper");
-    uint64_t houses = paper ? 300 : 36;
-    uint64_t target = paper ? 1056280 : 36 * 700;
-    if (sg_city_plan_make(&S->plan, houses, target, 3, "city", err, errlen) != 0) return -1;
-    GLuint base = sg_gen_lists(&S->s, S->plan.variants + 1);
-    if (!base || sg_city_compile(&S->s, &S->plan, S->o.seed, base, "city", err, errlen) != 0) return -1;
-    S->n_objs = (int)houses;
-    S->objs = calloc(houses, sizeof *S->objs);
-    if (!S->objs) return -1;
-    sg_rng lots;
-    sg_rng_seed(&lots, sg_city_lots_seed(S->o.seed));
-    for (uint64_t i = 0; i < houses; i++) {
-        int v, turn;
-        sg_city_lot(&lots, &S->plan, i, &v, &turn);
-        cull_obj *o = &S->objs[i];
-        o->box = lot_box(&S->plan, i);
-        o->list = base + (GLuint)v;
-        o->tris = sg_list_tris(&S->s, o->list);
-        o->lot = i;
-        o->turn = turn;
-    }
-    S->ground_tris = 2ull * (uint64_t)(S->plan.cols + 2) * (uint64_t)(S->plan.rows + 2);
-    return 0;
-}
-
-/* ---- camera: a walk down the middle street, as scenegen's city ---- */
+/* ---- camera ---- */
 
 static void mat_mul(const float a[16], const float b[16], float r[16])
 {
@@ -199,15 +156,12 @@ static void mat_mul(const float a[16], const float b[16], float r[16])
         }
 }
 
-/* gluPerspective's and gluLookAt's matrices (GLU 1.3, 4.1 and 4.2). */
-static void camera(study *S, int frame, float proj[16], float mv[16])
+/* gluPerspective's and gluLookAt's matrices (GLU 1.3, 4.1 and 4.2) of the
+ * scene's camera, and the view VFC tests against. */
+static void camera(study *S, const cull_camera *cam, float proj[16], float mv[16])
 {
-    const sg_city_plan *pl = &S->plan;
-    float t = S->o.frames > 1 ? (float)frame / (float)(S->o.frames - 1) : 0.0f;
-    float street_x = (float)(pl->cols / 2) * SG_CITY_LOT, z_end = (float)pl->rows * SG_CITY_LOT * 0.9f;
-    float yaw = 0.35f * sinf(6.2831853f * t * 1.5f);
-    float eye[3] = {street_x + 1.5f * sinf(3.0f * t), 1.7f, -4.0f + t * (z_end + 4.0f)};
-    float f[3] = {sinf(yaw), -0.1f, cosf(yaw)}, up[3] = {0, 1, 0};
+    const float *eye = cam->eye, up[3] = {0, 1, 0};
+    float f[3] = {cam->at[0] - eye[0], cam->at[1] - eye[1], cam->at[2] - eye[2]};
     float fl = sqrtf(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
     for (int a = 0; a < 3; a++) f[a] /= fl;
     float s[3] = {f[1] * up[2] - f[2] * up[1], f[2] * up[0] - f[0] * up[2], f[0] * up[1] - f[1] * up[0]};
@@ -219,14 +173,15 @@ static void camera(study *S, int frame, float proj[16], float mv[16])
     m[13] = -(u[0] * eye[0] + u[1] * eye[1] + u[2] * eye[2]);
     m[14] = f[0] * eye[0] + f[1] * eye[1] + f[2] * eye[2];
     memcpy(mv, m, sizeof m);
-    float zn = 0.5f, zf = 3000.0f, cot = 1.0f / tanf(30.0f * 3.14159265f / 180.0f);
+    float zn = (float)cam->znear, zf = (float)cam->zfar;
+    float cot = 1.0f / tanf((float)cam->fovy * 0.5f * 3.14159265f / 180.0f);
     float aspect = (float)S->o.width / (float)S->o.height;
     float p[16] = {cot / aspect, 0, 0, 0, 0, cot, 0, 0, 0, 0, (zf + zn) / (zn - zf), -1, 0, 0, 2 * zf * zn / (zn - zf), 0};
     memcpy(proj, p, sizeof p);
     cull_view *v = &S->view;
     mat_mul(p, m, v->mvp);
     cull_view_planes(v);
-    memcpy(v->eye, eye, sizeof eye);
+    memcpy(v->eye, eye, sizeof v->eye);
     memcpy(v->dir, f, sizeof f);
     v->znear = zn;
     v->width = S->o.width;
@@ -238,7 +193,11 @@ static void camera(study *S, int frame, float proj[16], float mv[16])
 static void draw_obj(study *S, const cull_obj *o)
 {
     glPushMatrix();
-    sg_city_lot_transform(&S->s, &S->plan, o->lot, o->turn);
+    glTranslatef(o->pre[0], o->pre[1], o->pre[2]);
+    if (o->rotate) glRotatef(o->angle, o->axis[0], o->axis[1], o->axis[2]);
+    if (o->post[0] != 0 || o->post[1] != 0 || o->post[2] != 0) glTranslatef(o->post[0], o->post[1], o->post[2]);
+    if (o->scale != 1.0f) glScalef(o->scale, o->scale, o->scale);
+    if (o->has_color) glColor3fv(o->color);
     sg_call_list(&S->s, o->list);
     glPopMatrix();
     S->st.objects++;
@@ -247,7 +206,7 @@ static void draw_obj(study *S, const cull_obj *o)
 
 static void draw_leaf(study *S, const cull_node *n)
 {
-    for (int k = 0; k < n->n_objs; k++) draw_obj(S, &S->objs[S->tree.obj_index[n->first_obj + k]]);
+    for (int k = 0; k < n->n_objs; k++) draw_obj(S, &S->sc.objs[S->tree.obj_index[n->first_obj + k]]);
 }
 
 static int is_leaf(const cull_node *n) { return n->n_children == 0; }
@@ -261,6 +220,13 @@ static int node_vfc(study *S, const cull_node *n, int parent_inside)
     if (parent_inside) return 2;
     S->st.vfc_tests++;
     int r = cull_frustum_test(&S->view, &n->box);
+    /* In selection mode GL decides "intersects"; "entirely inside" (which
+     * passes the subtree untested) stays the CPU's corner test.  A box the
+     * eye is in or reaching in front of the near plane may contain the
+     * whole volume and then has no face in it (sec. 3.1.6): not asked. */
+    if (S->o.vfc_select && r == 1 && cull_box_zmin(&S->view, &n->box) > S->view.znear &&
+        !cull_box_contains(&n->box, S->view.eye))
+        r = cull_select_test(&n->box);
     if (r == 0) S->st.vfc_culled++;
     return r;
 }
@@ -340,6 +306,7 @@ static void occlusion_walk(study *S)
         heap_item it = heap_pop(&h);
         const cull_node *n = &S->tree.node[it.node];
         int testable = it.key > S->view.znear && !cull_box_contains(&n->box, S->view.eye);
+        if (S->o.leaf_only && !is_leaf(n)) testable = 0; /* sec. 3.1.9: inner nodes bound moving objects loosely */
         if (budget >= 0 && used >= budget) testable = 0; /* eq. 3.4: budget spent, VFC only */
         if (testable) {
             S->st.occ_tests++;
@@ -356,38 +323,37 @@ static void occlusion_walk(study *S)
     free(h.a);
 }
 
-static void draw_frame(study *S, int frame)
+static int draw_frame(study *S, int frame)
 {
+    cull_camera cam;
+    S->ops->frame(&S->sc, frame, &cam);
+    if (S->ops->dynamic && S->o.method != M_DR) { /* the objects moved: a new hierarchy over them */
+        cull_tree_free(&S->tree);
+        if (cull_tree_build(&S->tree, S->o.hierarchy, S->sc.objs, S->sc.n_objs, S->o.leaf_objs) != 0) return -1;
+    }
     float proj[16], mv[16];
-    camera(S, frame, proj, mv);
+    camera(S, &cam, proj, mv);
     memset(&S->st, 0, sizeof S->st);
-    glClearColor(0.55f, 0.7f, 0.9f, 1.0f);
+    glClearColor(S->ops->clear[0], S->ops->clear[1], S->ops->clear[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glMatrixMode(GL_PROJECTION);
     glLoadMatrixf(proj);
     glMatrixMode(GL_MODELVIEW);
     glLoadMatrixf(mv);
-    /* Lights after the view so that they stay fixed in the world. */
-    const float sun[4] = {0.4f, 1.0f, 0.3f, 0.0f}, sund[4] = {0.85f, 0.8f, 0.7f, 1};
-    const float suna[4] = {0.25f, 0.25f, 0.3f, 1};
-    const float sky[4] = {-0.5f, 0.6f, -0.7f, 0.0f}, skyd[4] = {0.25f, 0.3f, 0.4f, 1};
-    sg_light(&S->s, GL_LIGHT0, sun, sund, suna, NULL);
-    sg_light(&S->s, GL_LIGHT1, sky, skyd, NULL, NULL);
-    /* The ground: drawn by every method, first, and the first occluder. */
-    glColor3f(0.42f, 0.42f, 0.4f);
-    const sg_city_plan *pl = &S->plan;
-    const float go[3] = {-SG_CITY_LOT, 0, -SG_CITY_LOT}, gu[3] = {0, 0, (float)(pl->rows + 2) * SG_CITY_LOT},
-                gv[3] = {(float)(pl->cols + 2) * SG_CITY_LOT, 0, 0};
-    sg_grid(&S->s, go, gu, gv, pl->rows + 2, pl->cols + 2);
-    S->st.tris += S->ground_tris;
+    S->ops->lights(&S->sc); /* after the view, so that they stay fixed in the world */
+    if (S->ops->ground) {
+        S->ops->ground(&S->sc);
+        S->st.tris += S->sc.ground_tris;
+    }
     if (S->o.method == M_DR)
-        for (int i = 0; i < S->n_objs; i++) draw_obj(S, &S->objs[i]);
+        for (int i = 0; i < S->sc.n_objs; i++) draw_obj(S, &S->sc.objs[i]);
     else if (S->o.method == M_VFC)
         vfc_walk(S, 0, 0);
     else
         occlusion_walk(S);
     glFinish();
     S->prev_render = (double)S->st.tris;
+    return 0;
 }
 
 static int write_frame(const study *S, const unsigned char *buf, int frame)
@@ -419,33 +385,26 @@ static void make_dirs(const char *path)
     mkdir(p, 0777);
 }
 
-static void gl_setup(study *S)
-{
-    glEnable(GL_DEPTH_TEST);
-    glEnable(GL_CULL_FACE);
-    glCullFace(GL_BACK);
-    glShadeModel(GL_FLAT);
-    sg_lighting(&S->s, GL_FRONT);
-    glEnable(GL_NORMALIZE);
-}
-
 static int run(study *S, unsigned char *buf, FILE *csv)
 {
     static const char *const mnames[] = {"dr", "vfc", "vo", "ac", "cac"};
     static const char *const tnames[] = {"query", "hp", "brief", "stencil"};
     S->prev_render = 0;
-    for (int i = 0; i < S->n_objs; i++) S->prev_render += (double)S->objs[i].tris; /* frame -1: DR */
+    for (int i = 0; i < S->sc.n_objs; i++) S->prev_render += (double)S->sc.objs[i].tris; /* frame -1: DR */
     /* cycles: the shim runs the functional model only; cycles come from
      * replaying a FRAGSIM_TRACE capture with fragsim replay --mode cycle. */
     fprintf(csv, "frame,method,test,vfc_tests,vfc_culled,occ_tests,occ_culled,objects_rendered,"
                  "objects_culled,triangles_rendered,cycles\n");
     for (int f = 0; f < S->o.frames; f++) {
-        draw_frame(S, f);
+        if (draw_frame(S, f) != 0) {
+            fprintf(stderr, "cullstudy: out of memory\n");
+            return 1;
+        }
         fprintf(csv, "%d,%s,%s,%llu,%llu,%llu,%llu,%llu,%llu,%llu,\n", f, mnames[S->o.method],
                 S->o.method >= M_VO ? tnames[S->o.test] : "", (unsigned long long)S->st.vfc_tests,
                 (unsigned long long)S->st.vfc_culled, (unsigned long long)S->st.occ_tests,
                 (unsigned long long)S->st.occ_culled, (unsigned long long)S->st.objects,
-                (unsigned long long)(S->n_objs - S->st.objects), (unsigned long long)S->st.tris);
+                (unsigned long long)((uint64_t)S->sc.n_objs - S->st.objects), (unsigned long long)S->st.tris);
         if (write_frame(S, buf, f)) return 1;
     }
     return 0;
@@ -472,14 +431,28 @@ int main(int argc, char **argv)
     static char live;
     sg_init(&S.s, (fs_context *)(void *)&live);
     char err[256] = "";
-    gl_setup(&S);
-    if (city_setup(&S, err, sizeof err) != 0 ||
-        cull_tree_build(&S.tree, S.o.hierarchy, S.objs, S.n_objs, S.o.leaf_objs) != 0) {
+    S.ops = cull_scene_find(S.o.scene);
+    S.sc.s = &S.s;
+    S.sc.paper = !strcmp(S.o.scale, "paper");
+    S.sc.frames = S.o.frames;
+    S.sc.seed = S.o.seed;
+    if (S.o.leaf_only < 0) S.o.leaf_only = S.ops->dynamic;
+    S.ops->state(&S.sc);
+    if (S.ops->setup(&S.sc, err, sizeof err) != 0) {
         fprintf(stderr, "cullstudy: %s\n", err[0] ? err : "out of memory");
         return 1;
     }
-    printf("hierarchy %s: %d nodes, %d leaves, %d objects\n", cull_tree_name(S.o.hierarchy), S.tree.n_nodes,
-           S.tree.n_leaves, S.n_objs);
+    if (S.ops->dynamic) { /* the hierarchy of frame 0's placement (rebuilt every frame) */
+        cull_camera cam;
+        S.ops->frame(&S.sc, 0, &cam);
+    }
+    if (cull_tree_build(&S.tree, S.o.hierarchy, S.sc.objs, S.sc.n_objs, S.o.leaf_objs) != 0) {
+        fprintf(stderr, "cullstudy: out of memory\n");
+        return 1;
+    }
+    printf("scene %s (%s): hierarchy %s: %d nodes, %d leaves, %d objects%s\n", S.o.scene, S.o.scale,
+           cull_tree_name(S.o.hierarchy), S.tree.n_nodes, S.tree.n_leaves, S.sc.n_objs,
+           S.o.leaf_only ? "; occlusion tests at leaves only" : "");
     make_dirs(S.o.out);
     char path[4096];
     snprintf(path, sizeof path, "%s/culling.csv", S.o.out);
@@ -491,7 +464,7 @@ int main(int argc, char **argv)
     rc = run(&S, buf, csv);
     if (fclose(csv) != 0) rc = 1;
     cull_tree_free(&S.tree);
-    free(S.objs);
+    cull_scene_free(&S.sc);
     sg_free(&S.s);
     OSMesaDestroyContext(ctx);
     free(buf);
