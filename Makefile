@@ -50,7 +50,7 @@ LAYER_LIBS := $(BUILD)/libfragsim_driver.a $(BUILD)/libfragsim_rtl.a $(BUILD)/li
 WHOLE_LIB = -Wl,--whole-archive $(LAYER_LIBS) -Wl,--no-whole-archive
 
 .PHONY: all deps test run sanitize fuzz bench golden docs clean scenes tests shim study-filters exec-check gl-coverage
-.PHONY: studies study-occlusion study-query-cost study-texture-cache conformance conformance-run
+.PHONY: studies study-occlusion study-query-cost study-texture-cache study-culling conformance conformance-run
 all: $(LIB) $(FRAGSIM) tests scenes shim exec-check cullstudy
 
 deps:
@@ -149,6 +149,12 @@ study-filters: $(FRAGSIM)
 
 golden: all
 	@scripts/golden.sh $(BUILD)
+
+# The culling study (issue 21; Huettner 1999, sec. 3.1.9): regenerates
+# docs/studies/culling.md and its plots (large outputs in out/study-culling;
+# FRAMES=N sets the path's frames, default 10).
+study-culling: deps all
+	@scripts/study_culling.sh $(BUILD)
 
 # Studies: sweeps of configs/sweeps/NAME.ini into docs/studies/NAME.md and
 # its plots (big outputs in out/studies/).

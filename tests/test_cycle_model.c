@@ -255,6 +255,49 @@ TEST(rendermode_drain)
     }
 }
 
+/* GL_SELECT (VFC in selection mode, Huettner 1999, 3.1.6): entering the
+ * mode drains what was drawn before, leaving it returns the hit records.
+ * With rendermode_drain's latencies: the point leaves the per-fragment
+ * stage at 104; glRenderMode(GL_SELECT) is issued when the front end took
+ * it (1) and waits to 104 + M; nothing is in flight in selection mode (its
+ * primitives are not rasterized), so glRenderMode(GL_RENDER) waits M. */
+TEST(rendermode_drain_select)
+{
+    fs_run_config cfg;
+    fs_run_config_defaults(&cfg);
+    cfg.cycle.frontend_cycles_per_vertex = 1;
+    cfg.cycle.frontend_latency = cfg.cycle.setup_latency = cfg.cycle.raster_latency = 0;
+    cfg.cycle.setup_cycles_per_triangle = 1;
+    cfg.cycle.raster_fragments_per_cycle = 1;
+    cfg.cycle.fragment_cycles_per_fragment = 1;
+    cfg.cycle.fragment_latency = 100;
+    cfg.cycle.occlusion_latency = 0;
+    cfg.cycle.occlusion_merge_board_latency = 7;
+    cfg.cycle.occlusion_merge_global_latency = 11;
+    cfg.cycle.memory_bytes_per_cycle = 65536;
+    cfg.cycle.memory_latency = 0;
+    fs_cycle *cy;
+    fs_context *c = new_context(&cfg, &cy, FS_CYCLE_FULL);
+    fsglBegin(c, GL_POINTS);
+    fsglVertex2f(c, (ndc(20) + ndc(21)) / 2, (ndc(9) + ndc(10)) / 2);
+    fsglEnd(c);
+    GLuint hits[8];
+    fsglSelectBuffer(c, 8, hits);
+    fsglRenderMode(c, GL_SELECT);
+    fsglBegin(c, GL_POINTS);
+    fsglVertex2f(c, 0.0f, 0.0f);
+    fsglEnd(c);
+    CHECK_EQ_INT(fsglRenderMode(c, GL_RENDER), 1);
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    uint64_t M = 18;
+    fs_cycle_stats s;
+    fs_cycle_totals(cy, &s);
+    CHECK_EQ_UINT(s.syncs, 2);
+    CHECK_EQ_UINT(s.rendermode_sync_cycles, (104 + M - 1) + M);
+    fs_cycle_destroy(cy);
+    fs_context_destroy(c);
+}
+
 TEST(tile_sample_lattice)
 {
     /* Sampled mode's tile sample: exactly one tile in every block of N
@@ -712,6 +755,7 @@ TEST_LIST = {
     TEST_ENTRY(memory_bandwidth),
     TEST_ENTRY(occlusion_engines_ceil_t_over_e),
     TEST_ENTRY(rendermode_drain),
+    TEST_ENTRY(rendermode_drain_select),
     TEST_ENTRY(tile_sample_lattice),
     TEST_ENTRY(tile_sample_full_screen),
     TEST_ENTRY(tile_sample_clear),

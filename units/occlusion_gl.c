@@ -239,8 +239,14 @@ GLint fs_exec_RenderMode(fs_context *c, GLenum mode)
      * the mode all the same (measured: GL_RENDER_MODE is then GL_SELECT). */
     if (!fs_render_mode_may_enter(c, mode))
         fs_error(c, GL_INVALID_OPERATION);
-    if (!occlusion && !in_occlusion_mode(c->occlusion) && (mode != GL_RENDER || !c->occlusion))
-        return fs_render_mode_switch(c, mode);
+    if (!occlusion && !in_occlusion_mode(c->occlusion) && (mode != GL_RENDER || !c->occlusion)) {
+        /* GL_SELECT and GL_FEEDBACK too: leaving them returns the pass's
+         * records, so the cycle model drains there as well (the cost of
+         * VFC in selection mode, Huettner 1999, 3.1.6). */
+        GLint ret = fs_render_mode_switch(c, mode);
+        FS_OBSERVE(c, render_mode, c, mode);
+        return ret;
+    }
     struct fs_occlusion *o = state(c);
     if (!o) {
         fs_error(c, GL_OUT_OF_MEMORY);
