@@ -207,6 +207,24 @@ TEST(occlusion_engines_ceil_t_over_e)
     }
 }
 
+/* Only latencies and unit services; memory wide enough to cost one cycle
+ * (the drain tests' set-up). */
+static void drain_config(fs_run_config *cfg)
+{
+    fs_run_config_defaults(cfg);
+    cfg->cycle.frontend_cycles_per_vertex = 1;
+    cfg->cycle.frontend_latency = cfg->cycle.setup_latency = cfg->cycle.raster_latency = 0;
+    cfg->cycle.setup_cycles_per_triangle = 1;
+    cfg->cycle.raster_fragments_per_cycle = 1;
+    cfg->cycle.fragment_cycles_per_fragment = 1;
+    cfg->cycle.fragment_latency = 100;
+    cfg->cycle.occlusion_latency = 0;
+    cfg->cycle.occlusion_merge_board_latency = 7;
+    cfg->cycle.occlusion_merge_global_latency = 11;
+    cfg->cycle.memory_bytes_per_cycle = 65536;
+    cfg->cycle.memory_latency = 0;
+}
+
 TEST(rendermode_drain)
 {
     /* Only latencies and unit services; memory wide enough to cost one
@@ -221,19 +239,8 @@ TEST(rendermode_drain)
      *   (M+1), results ready at M+104+k, merged M later. */
     for (int T = 1; T <= 6; T++) {
         fs_run_config cfg;
-        fs_run_config_defaults(&cfg);
+        drain_config(&cfg);
         cfg.gl.occlusion_engines = 2;
-        cfg.cycle.frontend_cycles_per_vertex = 1;
-        cfg.cycle.frontend_latency = cfg.cycle.setup_latency = cfg.cycle.raster_latency = 0;
-        cfg.cycle.setup_cycles_per_triangle = 1;
-        cfg.cycle.raster_fragments_per_cycle = 1;
-        cfg.cycle.fragment_cycles_per_fragment = 1;
-        cfg.cycle.fragment_latency = 100;
-        cfg.cycle.occlusion_latency = 0;
-        cfg.cycle.occlusion_merge_board_latency = 7;
-        cfg.cycle.occlusion_merge_global_latency = 11;
-        cfg.cycle.memory_bytes_per_cycle = 65536;
-        cfg.cycle.memory_latency = 0;
         fs_cycle *cy;
         fs_context *c = new_context(&cfg, &cy, FS_CYCLE_FULL);
         brief_occlusion_tiles(c, T);
@@ -264,18 +271,7 @@ TEST(rendermode_drain)
 TEST(rendermode_drain_select)
 {
     fs_run_config cfg;
-    fs_run_config_defaults(&cfg);
-    cfg.cycle.frontend_cycles_per_vertex = 1;
-    cfg.cycle.frontend_latency = cfg.cycle.setup_latency = cfg.cycle.raster_latency = 0;
-    cfg.cycle.setup_cycles_per_triangle = 1;
-    cfg.cycle.raster_fragments_per_cycle = 1;
-    cfg.cycle.fragment_cycles_per_fragment = 1;
-    cfg.cycle.fragment_latency = 100;
-    cfg.cycle.occlusion_latency = 0;
-    cfg.cycle.occlusion_merge_board_latency = 7;
-    cfg.cycle.occlusion_merge_global_latency = 11;
-    cfg.cycle.memory_bytes_per_cycle = 65536;
-    cfg.cycle.memory_latency = 0;
+    drain_config(&cfg);
     fs_cycle *cy;
     fs_context *c = new_context(&cfg, &cy, FS_CYCLE_FULL);
     fsglBegin(c, GL_POINTS);

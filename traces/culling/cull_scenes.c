@@ -175,16 +175,18 @@ static int cath_setup(cull_scene *sc, char *err, size_t errlen)
     return 0;
 }
 
-static void cath_state(cull_scene *sc) { sg_cath_state(sc->s); }
-
-static void cath_frame(cull_scene *sc, int frame, cull_camera *cam)
-{
-    float eye[3], at[3];
-    sg_cath_view(path_t(sc, frame), eye, at);
-    set_camera(cam, eye, at, SG_CATH_FOVY, SG_CATH_ZNEAR, SG_CATH_ZFAR);
-}
-
-static void cath_lights(cull_scene *sc) { sg_cath_lights(sc->s); }
+/* The adapters of a static scene whose generator exports sg_P_state,
+ * sg_P_view(t, eye, at), sg_P_lights and SG_PP_FOVY/ZNEAR/ZFAR. */
+#define PATH_SCENE(p, P)                                                    \
+    static void p##_state(cull_scene *sc) { sg_##p##_state(sc->s); }      \
+    static void p##_lights(cull_scene *sc) { sg_##p##_lights(sc->s); }    \
+    static void p##_frame(cull_scene *sc, int frame, cull_camera *cam)    \
+    {                                                                       \
+        float eye[3], at[3];                                                \
+        sg_##p##_view(path_t(sc, frame), eye, at);                          \
+        set_camera(cam, eye, at, SG_##P##_FOVY, SG_##P##_ZNEAR, SG_##P##_ZFAR); \
+    }
+PATH_SCENE(cath, CATH)
 
 /* ---- forest: 12 trees of 28,500 triangles before a castle of 110,981 ---- */
 
@@ -214,16 +216,7 @@ static int forest_setup(cull_scene *sc, char *err, size_t errlen)
     return 0;
 }
 
-static void forest_state(cull_scene *sc) { sg_forest_state(sc->s); }
-
-static void forest_frame(cull_scene *sc, int frame, cull_camera *cam)
-{
-    float eye[3], at[3];
-    sg_forest_view(path_t(sc, frame), eye, at);
-    set_camera(cam, eye, at, SG_FOREST_FOVY, SG_FOREST_ZNEAR, SG_FOREST_ZFAR);
-}
-
-static void forest_lights(cull_scene *sc) { sg_forest_lights(sc->s); }
+PATH_SCENE(forest, FOREST)
 static void forest_ground(cull_scene *sc) { sg_forest_ground(sc->s); }
 
 /* ---- garbage: 2,500 moving objects, 5,331,146 triangles ---- */
