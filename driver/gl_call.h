@@ -227,6 +227,11 @@ int fs_occlusion_tile_count(fs_context *c);
  * under the current unpack state, values of glTexParameter*v/glTexEnv*v. */
 int64_t fs_teximage_bytes(fs_context *c, GLsizei w, GLsizei h, GLenum format, GLenum type);
 int fs_texparam_count(GLenum pname);
+/* Evaluators (pipeline/evaluator.c): the elements glMap1 and glMap2 read
+ * (0 for arguments they refuse), the values glGetMap writes. */
+int64_t fs_map1_points(GLenum target, GLint stride, GLint order);
+int64_t fs_map2_points(GLenum target, GLint ustride, GLint uorder, GLint vstride, GLint vorder);
+int fs_getmap_count(fs_context *c, GLenum target, GLenum query);
 int fs_texenv_count(GLenum pname);
 /* Bytes glGetTexImage writes under the current pack state (0 when it
  * writes nothing: an error or an undefined level). */

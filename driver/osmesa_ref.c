@@ -105,6 +105,23 @@ static int64_t osm_gettex_bytes(GLenum target, GLint level, GLenum format, GLenu
     return osm_image_bytes(true, w, h, format, type);
 }
 
+/* The values OSMesa's glGetMap writes: GL_COEFF's count from its own
+ * orders (evaluator targets are GL_MAP1_* and GL_MAP2_*, table 5.1). */
+static int osm_getmap_count(GLenum target, GLenum query)
+{
+    static const int comps[9] = {4, 1, 3, 1, 2, 3, 4, 3, 4};
+    bool map2 = target >= GL_MAP2_COLOR_4 && target <= GL_MAP2_VERTEX_4;
+    if (!map2 && !(target >= GL_MAP1_COLOR_4 && target <= GL_MAP1_VERTEX_4))
+        return 0;
+    if (query == GL_ORDER || query == GL_DOMAIN)
+        return (map2 ? 2 : 1) * (query == GL_DOMAIN ? 2 : 1);
+    if (query != GL_COEFF)
+        return 0;
+    GLint order[2] = {1, 1};
+    glGetMapiv(target, GL_ORDER, order);
+    return order[0] * (map2 ? order[1] : 1) * comps[target - (map2 ? GL_MAP2_COLOR_4 : GL_MAP1_COLOR_4)];
+}
+
 /* A recorded address (FS_ARG_ADDR) reaching here is an offset into a
  * buffer OSMesa has bound (osm_addresses). */
 #define FS_OCK_ARR(k, name, cnt) \
@@ -153,6 +170,7 @@ static int64_t osm_gettex_bytes(GLenum target, GLint level, GLenum format, GLenu
 #define fs_readpixels_bytes(c, w, h, f, t) osm_readpixels_bytes(w, h, f, t)
 #define fs_teximage_bytes(c, w, h, f, t) osm_teximage_bytes(w, h, f, t)
 #define fs_gettexImage_bytes(c, tg, l, f, t) osm_gettex_bytes(tg, l, f, t)
+#define fs_getmap_count(c, tg, q) osm_getmap_count(tg, q)
 #define FS_OCALL_V(e) e
 #define FS_OCALL_U(e) (void)(e)
 #define FS_OCALL_E(e) (void)(e)
@@ -242,6 +260,7 @@ int fs_osmesa_dispatch(fs_osmesa *o, const fs_call *in)
 #undef fs_readpixels_bytes
 #undef fs_teximage_bytes
 #undef fs_gettexImage_bytes
+#undef fs_getmap_count
 
 const uint8_t *fs_osmesa_color(fs_osmesa *o)
 {

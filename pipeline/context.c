@@ -57,6 +57,7 @@ void fs_context_destroy(fs_context *c)
     fs_state_free(c);
     fs_occlusion_free(c);
     fs_texture_free(c);
+    fs_eval_free(c);
     fs_buffer_objects_free(c);
     fs_vertex_stage_free(c);
     fs_framebuffer_free(&c->fb);

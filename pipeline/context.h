@@ -21,6 +21,7 @@
 #include "raster_pos.h"
 #include "observer.h"
 #include "render_mode.h"
+#include "evaluator.h"
 
 struct fs_dlist_state;      /* driver/display_list.c */
 struct fs_capture;          /* driver/capture.c */
@@ -50,6 +51,11 @@ struct fs_context {
     /* glRenderMode's GL_SELECT and GL_FEEDBACK, the name stack and their
      * buffers (GL 1.5 spec 5.2, 5.3; pipeline/render_mode.c). */
     fs_render_mode_state rmode;
+    /* Evaluators (GL 1.5 spec 5.1; pipeline/evaluator.c): the enables and
+     * grids of GL_EVAL_BIT here, the maps (in no attribute group, table
+     * 6.26) behind eval_maps, made at first use. */
+    fs_eval_state eval;
+    struct fs_eval_maps *eval_maps;
 
     GLint pack_alignment, unpack_alignment, unpack_row_length, pack_row_length;
     /* The rest of the pixel-store state (GL 1.5 spec table 3.1 / 4.5; all

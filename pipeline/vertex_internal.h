@@ -243,7 +243,10 @@ void fs_emit_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
 void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v);
 /* The executors of the current attributes (immediate.c; prototypes as the
  * command table generates them in driver/gl_call.h, which the pipeline
- * does not include), which glArrayElement calls (GL 1.5 spec 2.8). */
+ * does not include), which glArrayElement calls (GL 1.5 spec 2.8), and
+ * glBegin/glEnd, which glEvalMesh calls (5.1, evaluator.c). */
+void fs_exec_Begin(fs_context *c, GLenum mode);
+void fs_exec_End(fs_context *c);
 void fs_exec_Color4fv(fs_context *c, const GLfloat *v);
 void fs_exec_Normal3fv(fs_context *c, const GLfloat *v);
 void fs_exec_Vertex4fv(fs_context *c, const GLfloat *v);
