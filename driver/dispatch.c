@@ -564,6 +564,7 @@ static int dispatch_call(fs_context *c, fs_call *call)
 #define fs_occlusion_tile_count(c) 0
 #define fs_teximage_bytes(c, w, h, f, t) 0
 #define fs_getmap_count(c, t, q) 0
+#define fs_teximage_nd_bytes(c, n, w, h, d, f, t) 0
 
 int fs_call_validate(const fs_call *call)
 {
@@ -585,6 +586,7 @@ int fs_call_validate(const fs_call *call)
 #undef fs_occlusion_tile_count
 #undef fs_teximage_bytes
 #undef fs_getmap_count
+#undef fs_teximage_nd_bytes
 
 /* fs_submit without the capture. */
 static int submit_call(fs_context *c, fs_call *call)

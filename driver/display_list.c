@@ -171,6 +171,8 @@ void fs_dlist_compile(fs_context *c, const fs_call *call)
     /* The image blob was sized by the current unpack state
      * (fs_teximage_bytes); keep that state with it. */
     e->has_unpack = call->cmd == FS_CMD_TexImage2D || call->cmd == FS_CMD_TexSubImage2D ||
+                    call->cmd == FS_CMD_TexImage1D || call->cmd == FS_CMD_TexSubImage1D ||
+                    call->cmd == FS_CMD_TexImage3D || call->cmd == FS_CMD_TexSubImage3D ||
                     call->cmd == FS_CMD_Bitmap || call->cmd == FS_CMD_DrawPixels;
     e->unpack = fs_pixel_store_unpack(c);
     const fs_cmd_info *info = &fs_cmd_table[call->cmd];

@@ -87,7 +87,7 @@ enum fs_kind {
 #define LIST FS_F_LIST
 #define NOLIST FS_F_NOLIST
 
-#define FS_MAX_ARGS 10
+#define FS_MAX_ARGS 11 /* glTexSubImage3D */
 
 typedef struct fs_arg {
     union {
@@ -158,6 +158,7 @@ int fs_cmd_lookup(const char *name);
 #define FS_MAP8(m, a, b, c, d, e, f, g, h) FS_MAP7(m, a, b, c, d, e, f, g) FS_APPLY(m, 7, h)
 #define FS_MAP9(m, a, b, c, d, e, f, g, h, i) FS_MAP8(m, a, b, c, d, e, f, g, h) FS_APPLY(m, 8, i)
 #define FS_MAP10(m, a, b, c, d, e, f, g, h, i, j) FS_MAP9(m, a, b, c, d, e, f, g, h, i) FS_APPLY(m, 9, j)
+#define FS_MAP11(m, a, b, c, d, e, f, g, h, i, j, k) FS_MAP10(m, a, b, c, d, e, f, g, h, i, j) FS_APPLY(m, 10, k)
 #define FS_MAP(n, m, ...) FS_MAP##n(m, __VA_ARGS__)
 
 #define FS_PDECL(k, kind, name, cnt) , FS_CT_##kind name
@@ -226,6 +227,8 @@ int fs_occlusion_tile_count(fs_context *c);
 /* Texture unit (units/texture_object.c): bytes a glTexImage2D image reads
  * under the current unpack state, values of glTexParameter*v/glTexEnv*v. */
 int64_t fs_teximage_bytes(fs_context *c, GLsizei w, GLsizei h, GLenum format, GLenum type);
+/* The same for an image of dims 1, 2 or 3 (glTexImage1D/3D, glTexSubImage1D/3D). */
+int64_t fs_teximage_nd_bytes(fs_context *c, int dims, GLsizei w, GLsizei h, GLsizei d, GLenum format, GLenum type);
 int fs_texparam_count(GLenum pname);
 /* Evaluators (pipeline/evaluator.c): the elements glMap1 and glMap2 read
  * (0 for arguments they refuse), the values glGetMap writes. */

@@ -62,17 +62,18 @@ static void *scratch(fs_osmesa *o, size_t bytes)
  * which the same call stream sets. */
 static fs_pixel_store osm_pixel_store(bool pack)
 {
-    static const GLenum names[2][6] = {
+    static const GLenum names[2][8] = {
         {GL_UNPACK_ALIGNMENT, GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_PIXELS, GL_UNPACK_SKIP_ROWS,
-         GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST},
+         GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST, GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_IMAGES},
         {GL_PACK_ALIGNMENT, GL_PACK_ROW_LENGTH, GL_PACK_SKIP_PIXELS, GL_PACK_SKIP_ROWS, GL_PACK_SWAP_BYTES,
-         GL_PACK_LSB_FIRST},
+         GL_PACK_LSB_FIRST, GL_PACK_IMAGE_HEIGHT, GL_PACK_SKIP_IMAGES},
     };
-    GLint v[6] = {4, 0, 0, 0, 0, 0};
-    for (int k = 0; k < 6; k++)
+    GLint v[8] = {4, 0, 0, 0, 0, 0, 0, 0};
+    for (int k = 0; k < 8; k++)
         glGetIntegerv(names[pack][k], &v[k]);
     return (fs_pixel_store){.alignment = v[0], .row_length = v[1], .skip_pixels = v[2], .skip_rows = v[3],
-                            .swap_bytes = v[4] != 0, .lsb_first = v[5] != 0};
+                            .swap_bytes = v[4] != 0, .lsb_first = v[5] != 0, .image_height = v[6],
+                            .skip_images = v[7]};
 }
 
 /* glReadPixels, glTexImage2D and glGetTexImage read or write by OSMesa's
@@ -80,11 +81,16 @@ static fs_pixel_store osm_pixel_store(bool pack)
  * (pipeline/pixel_transfer.h).  A pair GL 1.5 does not have (Mesa takes
  * more, e.g. half floats) is sized as the largest group, RGBA floats, so
  * that OSMesa never reads or writes past the buffer. */
-static int64_t osm_image_bytes(bool pack, GLsizei w, GLsizei h, GLenum format, GLenum type)
+static int64_t osm_image_nd_bytes(bool pack, int dims, GLsizei w, GLsizei h, GLsizei d, GLenum format, GLenum type)
 {
     fs_pixel_store ps = osm_pixel_store(pack);
-    int64_t n = fs_pixel_image_bytes(&ps, 2, w, h, 1, format, type);
-    return n || w <= 0 || h <= 0 ? n : fs_pixel_image_bytes(&ps, 2, w, h, 1, GL_RGBA, GL_FLOAT);
+    int64_t n = fs_pixel_image_bytes(&ps, dims, w, h, d, format, type);
+    return n || w <= 0 || h <= 0 || d <= 0 ? n : fs_pixel_image_bytes(&ps, dims, w, h, d, GL_RGBA, GL_FLOAT);
+}
+
+static int64_t osm_image_bytes(bool pack, GLsizei w, GLsizei h, GLenum format, GLenum type)
+{
+    return osm_image_nd_bytes(pack, 2, w, h, 1, format, type);
 }
 
 static int64_t osm_readpixels_bytes(GLsizei w, GLsizei h, GLenum format, GLenum type)
@@ -99,10 +105,12 @@ static int64_t osm_teximage_bytes(GLsizei w, GLsizei h, GLenum format, GLenum ty
 
 static int64_t osm_gettex_bytes(GLenum target, GLint level, GLenum format, GLenum type)
 {
-    GLint w = 0, h = 0;
+    GLint w = 0, h = 0, d = 0;
     glGetTexLevelParameteriv(target, level, GL_TEXTURE_WIDTH, &w);
     glGetTexLevelParameteriv(target, level, GL_TEXTURE_HEIGHT, &h);
-    return osm_image_bytes(true, w, h, format, type);
+    glGetTexLevelParameteriv(target, level, GL_TEXTURE_DEPTH, &d);
+    return osm_image_nd_bytes(true, target == GL_TEXTURE_3D ? 3 : target == GL_TEXTURE_1D ? 1 : 2, w, h, d, format,
+                              type);
 }
 
 /* The values OSMesa's glGetMap writes: GL_COEFF's count from its own
@@ -169,6 +177,7 @@ static int osm_getmap_count(GLenum target, GLenum query)
 #define FS_OCHECK(k, kind, name, cnt) FS_OCK_##kind(k, name, cnt)
 #define fs_readpixels_bytes(c, w, h, f, t) osm_readpixels_bytes(w, h, f, t)
 #define fs_teximage_bytes(c, w, h, f, t) osm_teximage_bytes(w, h, f, t)
+#define fs_teximage_nd_bytes(c, n, w, h, d, f, t) osm_image_nd_bytes(false, n, w, h, d, f, t)
 #define fs_gettexImage_bytes(c, tg, l, f, t) osm_gettex_bytes(tg, l, f, t)
 #define fs_getmap_count(c, tg, q) osm_getmap_count(tg, q)
 #define FS_OCALL_V(e) e
@@ -259,6 +268,7 @@ int fs_osmesa_dispatch(fs_osmesa *o, const fs_call *in)
 }
 #undef fs_readpixels_bytes
 #undef fs_teximage_bytes
+#undef fs_teximage_nd_bytes
 #undef fs_gettexImage_bytes
 #undef fs_getmap_count
 

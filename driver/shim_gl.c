@@ -37,6 +37,7 @@
 #define FS_SHIM_PARAMS_8(...) FS_SHIM_DROP1(FS_MAP8(FS_PDECL, __VA_ARGS__))
 #define FS_SHIM_PARAMS_9(...) FS_SHIM_DROP1(FS_MAP9(FS_PDECL, __VA_ARGS__))
 #define FS_SHIM_PARAMS_10(...) FS_SHIM_DROP1(FS_MAP10(FS_PDECL, __VA_ARGS__))
+#define FS_SHIM_PARAMS_11(...) FS_SHIM_DROP1(FS_MAP11(FS_PDECL, __VA_ARGS__))
 #define FS_SHIM_ARG(k, kind, name, cnt) , name
 
 /* Result handling per return kind. */

@@ -96,6 +96,42 @@ static inline long img_lit_pixels(const uint8_t *rgba, long n)
     return lit;
 }
 
+/* One sequence of calls and queries on both: fn(NULL, ref, nr) on a new
+ * w x h OSMesa context, then fn(c, mine, nm) on a model context; each
+ * appends the values it reads to its array.  False when a context cannot
+ * be made. */
+typedef void (*osm_values_fn)(fs_context *c, double *v, int *n);
+static inline bool osm_run_values(osm_values_fn fn, int w, int h, double *ref, int *nr, double *mine, int *nm)
+{
+    osm o;
+    *nr = *nm = 0;
+    if (!osm_open(&o, w, h)) {
+        osm_close(&o);
+        return false;
+    }
+    fn(NULL, ref, nr);
+    osm_close(&o);
+    fs_context *c = fs_context_create(NULL, w, h);
+    if (!c)
+        return false;
+    fn(c, mine, nm);
+    fs_context_destroy(c);
+    return true;
+}
+
+/* A test's check that fn reads the same values on both (at most cap of
+ * them; check.h's macros, expanded in the test). */
+#define OSM_CHECK_VALUES(fn, w, h, cap)                                                    \
+    do {                                                                                   \
+        static double ref_[cap], mine_[cap];                                               \
+        int nr_, nm_;                                                                      \
+        REQUIRE(osm_run_values(fn, w, h, ref_, &nr_, mine_, &nm_));                        \
+        CHECK_EQ_INT(nm_, nr_);                                                            \
+        for (int i_ = 0; i_ < nr_ && i_ < nm_; i_++)                                       \
+            if (mine_[i_] != ref_[i_])                                                     \
+                CHECK_FAIL_("value %d: fragsim %.9g, OSMesa %.9g", i_, mine_[i_], ref_[i_]); \
+    } while (0)
+
 /* One drawing on both: draw(NULL, ...) on a new OSMesa context, then
  * draw(c, ...) on a model context from create(w, h) (fs_context_create's
  * defaults when create is NULL), and the colour buffers compared into d.

@@ -52,15 +52,8 @@ static void proxy_sequence(fs_context *c, double *v, int *n)
 TEST(proxy_levels_vs_osmesa)
 {
     double ref[512], mine[512];
-    int nr = 0, nm = 0;
-    osm o;
-    REQUIRE(osm_open(&o, 8, 8));
-    proxy_sequence(NULL, ref, &nr);
-    osm_close(&o);
-    fs_context *c = fs_context_create(NULL, 8, 8);
-    REQUIRE(c);
-    proxy_sequence(c, mine, &nm);
-    fs_context_destroy(c);
+    int nr, nm;
+    REQUIRE(osm_run_values(proxy_sequence, 8, 8, ref, &nr, mine, &nm));
     CHECK_EQ_INT(nm, nr);
     int bad = 0;
     for (int i = 0; i < nr && i < nm; i++)

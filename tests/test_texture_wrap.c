@@ -202,20 +202,7 @@ static void border_queries(fs_context *c, double *v, int *n)
 
 TEST(border_levels_vs_osmesa)
 {
-    double ref[32], mine[32];
-    int nr = 0, nm = 0;
-    osm o;
-    REQUIRE(osm_open(&o, 16, 16));
-    border_queries(NULL, ref, &nr);
-    osm_close(&o);
-    fs_context *c = fs_context_create(NULL, 16, 16);
-    REQUIRE(c);
-    border_queries(c, mine, &nm);
-    fs_context_destroy(c);
-    CHECK_EQ_INT(nm, nr);
-    for (int i = 0; i < nr && i < nm; i++)
-        if (mine[i] != ref[i])
-            CHECK_FAIL_("value %d: fragsim %.9g, OSMesa %.9g", i, mine[i], ref[i]);
+    OSM_CHECK_VALUES(border_queries, 16, 16, 32);
 }
 
 TEST_LIST = {

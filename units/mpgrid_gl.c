@@ -133,6 +133,7 @@ void fs_exec_MPGridTexture(fs_context *c, GLenum target, GLsizei n, GLsizei m, G
         if (l < L.levels) {
             img->width = L.n * fs_mpgrid_level_w(&L, l);
             img->height = L.m * fs_mpgrid_level_h(&L, l);
+            img->depth = 1;
             img->internal_format = internalformat;
             img->base_format = base;
         }

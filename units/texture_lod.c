@@ -204,6 +204,10 @@ void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int level)
     const fs_tex_image *b = &t->level[level];
     if (!b->texels || !base_fits_pyramid(t, level))
         return;
+    if (b->depth > 1) {
+        fs_unsupported(c, "GL_GENERATE_MIPMAP on a 3D texture");
+        return;
+    }
     int w = b->width, h = b->height;
     for (int l = level + 1; l < FS_TEX_MAX_LEVELS && l <= t->max_level && (w > 1 || h > 1); l++) {
         w = w > 1 ? w / 2 : 1;
@@ -218,6 +222,7 @@ void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int level)
         img->texels = texels;
         img->width = w;
         img->height = h;
+        img->depth = 1;
         img->internal_format = b->internal_format;
         img->base_format = b->base_format;
         downsample(&t->level[l - 1], img);

@@ -22,7 +22,7 @@ static void object_defaults(fs_tex_object *t, GLuint name)
     t->name = name;
     t->min_filter = GL_NEAREST_MIPMAP_LINEAR;
     t->mag_filter = GL_LINEAR;
-    t->wrap_s = t->wrap_t = GL_REPEAT;
+    t->wrap_s = t->wrap_t = t->wrap_r = GL_REPEAT;
     t->priority = 1.0f;
     t->footprint_budget = 16;
     t->footprint_snap = GL_FOOTPRINT_SNAP_INTEGER_FRAGSIM;
@@ -42,8 +42,10 @@ int fs_texture_init(fs_context *c)
     struct fs_texture_state *s = calloc(1, sizeof *s);
     if (!s)
         return -1;
-    for (int t = 0; t < FS_TEX_TARGETS; t++)
+    for (int t = 0; t < FS_TEX_TARGETS; t++) {
         object_defaults(&s->default_obj[t], 0);
+        s->default_obj[t].target = (enum fs_tex_target)t;
+    }
     for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
         for (int t = 0; t < FS_TEX_TARGETS; t++)
             s->unit[u].bound[t] = &s->default_obj[t];
@@ -75,7 +77,10 @@ void fs_texture_free(fs_context *c)
 
 bool *fs_texture_enable_flag(fs_context *c, GLenum cap)
 {
-    return cap == GL_TEXTURE_2D ? &fs_tex_active(c)->enabled[FS_TEX_2D] : NULL;
+    fs_tex_target_info ti;
+    if (!fs_tex_target_of(cap, &ti) || ti.proxy)
+        return NULL;
+    return &fs_tex_active(c)->enabled[ti.k];
 }
 
 void fs_texture_enables_changed(fs_context *c)
@@ -88,10 +93,11 @@ void fs_texture_enables_changed(fs_context *c)
     bool pair = false;
     for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
         const fs_tex_unit *tu = &c->texture->unit[u];
-        if (!tu->enabled[FS_TEX_2D])
+        int k = fs_tex_unit_target(tu);
+        if (k < 0)
             continue;
         mask |= 1u << u;
-        pair = pair || fs_tex_pair_decides(tu->bound[FS_TEX_2D]);
+        pair = pair || fs_tex_pair_decides(tu->bound[k]);
     }
     c->raster.tex_mask = mask;
     c->raster.tex_units = mask ? 32 - __builtin_clz(mask) : 1;
@@ -127,8 +133,7 @@ bool fs_tex_pair_decides(const fs_tex_object *t)
      * lp_build_sample_mipmap_both). */
     GLenum mf = t->min_filter;
     bool min_linear = mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR;
-    return (!fs_tex_simple_wrap(t->wrap_s) || !fs_tex_simple_wrap(t->wrap_t)) &&
-           (GLenum)(min_linear ? GL_LINEAR : GL_NEAREST) != t->mag_filter;
+    return !fs_tex_simple_wraps(t) && (GLenum)(min_linear ? GL_LINEAR : GL_NEAREST) != t->mag_filter;
 }
 
 uint64_t fs_texture_quads_sampled(const fs_context *c) { return c->texture->quads_sampled; }
@@ -224,39 +229,41 @@ void fs_exec_DeleteTextures(fs_context *c, GLsizei n, const GLuint *textures)
     }
 }
 
-/* Binds texture (0: the default object) to the 2D target of unit u. */
-static void bind_2d(fs_context *c, int u, GLuint texture)
+/* Binds texture (0: the default object) to target k of unit u.  A texture
+ * bound before to another target is GL_INVALID_OPERATION (3.8.12: its
+ * target is fixed by its first bind). */
+static void bind(fs_context *c, int u, enum fs_tex_target k, GLuint texture)
 {
     struct fs_texture_state *s = c->texture;
+    fs_tex_object *t = &s->default_obj[k];
+    if (texture != 0) {
+        t = lookup(s, texture, NULL);
+        if (t && t->bound_once && t->target != k) {
+            fs_error(c, GL_INVALID_OPERATION);
+            return;
+        }
+        if (!t)
+            t = create_object(s, texture);
+        if (!t) {
+            fs_error(c, GL_OUT_OF_MEMORY);
+            return;
+        }
+        t->bound_once = true;
+        t->target = k;
+    }
     fs_state_mark(c, GL_TEXTURE_BIT);
-    if (texture == 0) {
-        s->unit[u].bound[FS_TEX_2D] = &s->default_obj[FS_TEX_2D];
-        fs_texture_enables_changed(c); /* the rasterizer's tex_pair_lod */
-        return;
-    }
-    fs_tex_object *t = lookup(s, texture, NULL);
-    if (!t)
-        t = create_object(s, texture);
-    if (!t) {
-        fs_error(c, GL_OUT_OF_MEMORY);
-        return;
-    }
-    t->bound_once = true;
-    s->unit[u].bound[FS_TEX_2D] = t;
+    s->unit[u].bound[k] = t;
     fs_texture_enables_changed(c); /* the rasterizer's tex_pair_lod */
 }
 
 void fs_exec_BindTexture(fs_context *c, GLenum target, GLuint texture)
 {
-    if (target == GL_TEXTURE_1D || target == GL_TEXTURE_3D) {
-        fs_unsupported(c, target == GL_TEXTURE_1D ? "glBindTexture(GL_TEXTURE_1D)" : "glBindTexture(GL_TEXTURE_3D)");
-        return;
-    }
-    if (target != GL_TEXTURE_2D) {
+    fs_tex_target_info ti;
+    if (!fs_tex_target_of(target, &ti) || ti.proxy) {
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    bind_2d(c, fs_active_unit(c), texture);
+    bind(c, fs_active_unit(c), ti.k, texture);
 }
 
 GLboolean fs_exec_IsTexture(fs_context *c, GLuint texture)
@@ -290,6 +297,12 @@ int64_t fs_teximage_bytes(fs_context *c, GLsizei w, GLsizei h, GLenum format, GL
 {
     fs_pixel_store ps = fs_pixel_store_unpack(c);
     return fs_pixel_image_bytes(&ps, 2, w, h, 1, format, type);
+}
+
+int64_t fs_teximage_nd_bytes(fs_context *c, int dims, GLsizei w, GLsizei h, GLsizei d, GLenum format, GLenum type)
+{
+    fs_pixel_store ps = fs_pixel_store_unpack(c);
+    return fs_pixel_image_bytes(&ps, dims, w, h, d, format, type);
 }
 
 int fs_texparam_count(GLenum pname) { return pname == GL_TEXTURE_BORDER_COLOR ? 4 : 1; }
@@ -349,46 +362,57 @@ static void store_texel(uint8_t *dst, const uint8_t rgba[4], GLenum base)
     }
 }
 
-/* Unpacks a client image into rows [y0, y0+h) and columns [x0, x0+w) of img
+/* Texel (x, y, z) of an image (slices of 3D images follow each other). */
+static uint8_t *texel_addr(const fs_tex_image *img, int x, int y, int z)
+{
+    return img->texels + (((size_t)z * (size_t)img->height + (size_t)y) * (size_t)img->width + (size_t)x) * 4;
+}
+
+/* Unpacks a client image of w x h x d (dims 1, 2 or 3) into img at off
  * (3.6.4 to RGBA, then table 3.15's components of the base format). */
-static void unpack_image(fs_context *c, fs_tex_image *img, int x0, int y0, int w, int h, GLenum format,
-                         GLenum type, const uint8_t *pixels)
+static void unpack_image(fs_context *c, fs_tex_image *img, int dims, const int off[3], int w, int h, int d,
+                         GLenum format, GLenum type, const uint8_t *pixels)
 {
     fs_pixel_store ps = fs_pixel_store_unpack(c);
     fs_pixel_layout l;
-    if (!fs_pixel_layout_init(&l, &ps, 2, w, h, 1, format, type))
+    if (!fs_pixel_layout_init(&l, &ps, dims, w, h, d, format, type))
         return;
-    for (int y = 0; y < h; y++) {
-        uint8_t *dst = img->texels + ((size_t)(y0 + y) * (size_t)img->width + (size_t)x0) * 4;
-        fs_pixel_unpack_rgba8(&l, pixels, 0, y, 0, w, dst);
-        if (img->base_format != GL_RGBA)
-            for (int x = 0; x < w; x++) {
-                uint8_t rgba[4];
-                memcpy(rgba, dst + 4 * x, 4);
-                store_texel(dst + 4 * x, rgba, img->base_format);
-            }
-    }
+    for (int z = 0; z < d; z++)
+        for (int y = 0; y < h; y++) {
+            uint8_t *dst = texel_addr(img, off[0], off[1] + y, off[2] + z);
+            fs_pixel_unpack_rgba8(&l, pixels, z, y, 0, w, dst);
+            if (img->base_format != GL_RGBA)
+                for (int x = 0; x < w; x++) {
+                    uint8_t rgba[4];
+                    memcpy(rgba, dst + 4 * x, 4);
+                    store_texel(dst + 4 * x, rgba, img->base_format);
+                }
+        }
 }
 
-/* Unpacks a client image of width x height into img, which is that image
- * without `border` texels on each side. */
-static void unpack_inner(fs_context *c, fs_tex_image *img, int border, int width, int height, GLenum format,
-                         GLenum type, const uint8_t *pixels)
+static const int no_offset[3] = {0, 0, 0};
+
+/* Unpacks a client image of size[0..dims-1] into img, which is that image
+ * without `border` texels on each side of each of its dimensions. */
+static void unpack_inner(fs_context *c, fs_tex_image *img, int dims, int border, const GLsizei size[3],
+                         GLenum format, GLenum type, const uint8_t *pixels)
 {
+    int w = size[0], h = dims > 1 ? size[1] : 1, d = dims > 2 ? size[2] : 1;
     if (!border) {
-        unpack_image(c, img, 0, 0, width, height, format, type, pixels);
+        unpack_image(c, img, dims, no_offset, w, h, d, format, type, pixels);
         return;
     }
-    fs_tex_image whole = {.width = width, .height = height, .base_format = img->base_format};
-    whole.texels = malloc((size_t)width * (size_t)height * 4);
+    fs_tex_image whole = {.width = w, .height = h, .depth = d, .base_format = img->base_format};
+    whole.texels = malloc((size_t)w * (size_t)h * (size_t)d * 4);
     if (!whole.texels) {
         fs_error(c, GL_OUT_OF_MEMORY);
         return;
     }
-    unpack_image(c, &whole, 0, 0, width, height, format, type, pixels);
-    for (int y = 0; y < img->height; y++)
-        memcpy(img->texels + (size_t)y * (size_t)img->width * 4,
-               whole.texels + ((size_t)(y + border) * (size_t)width + (size_t)border) * 4, (size_t)img->width * 4);
+    unpack_image(c, &whole, dims, no_offset, w, h, d, format, type, pixels);
+    int by = dims > 1 ? border : 0, bz = dims > 2 ? border : 0;
+    for (int z = 0; z < img->depth; z++)
+        for (int y = 0; y < img->height; y++)
+            memcpy(texel_addr(img, 0, y, z), texel_addr(&whole, border, y + by, z + bz), (size_t)img->width * 4);
     free(whole.texels);
 }
 
@@ -406,8 +430,8 @@ GLenum fs_tex_unpack_rgba8(fs_context *c, uint8_t *dst, int w, int h, GLenum bas
     if (err != GL_NO_ERROR)
         return err;
     if (dst && pixels && w > 0 && h > 0) {
-        fs_tex_image img = {.width = w, .height = h, .base_format = base, .texels = dst};
-        unpack_image(c, &img, 0, 0, w, h, format, type, pixels);
+        fs_tex_image img = {.width = w, .height = h, .depth = 1, .base_format = base, .texels = dst};
+        unpack_image(c, &img, 2, no_offset, w, h, 1, format, type, pixels);
     }
     return GL_NO_ERROR;
 }
@@ -432,39 +456,57 @@ static bool keeps_wide_texels(GLint internalformat, GLenum format, GLenum type)
 
 static bool is_pow2_or_zero(GLsizei v) { return (v & (v - 1)) == 0; }
 
-/* Checks shared by glTexImage2D and glCopyTexImage2D (3.8.1): returns the
- * GL error or GL_NO_ERROR.  Border 1 images are valid GL; the model keeps
- * their inner image, as Mesa does for gallium (fs_exec_TexImage2D). */
-static GLenum check_image_args(GLint level, GLint internalformat, GLsizei width, GLsizei height, GLint border)
+/* One size of an image of level `level` of a target whose largest image is
+ * 2^max_log2 (3.8.1): 2^n + 2 border (GL 1.x has no non-power-of-two
+ * textures), at most the largest size >> level; zero is a valid, empty
+ * image. */
+static bool size_ok(GLsizei v, GLint border, int max_log2, GLint level)
 {
-    if (level < 0 || level > FS_TEX_MAX_LOG2)
+    if (v < 0 || v > (1 << max_log2) + 2 * border)
+        return false;
+    GLsizei inner = v - 2 * border;
+    if (v > 0 && (inner < 0 || !is_pow2_or_zero(inner)))
+        return false;
+    return inner <= ((1 << max_log2) >> level);
+}
+
+/* Checks shared by glTexImage and glCopyTexImage of every target (3.8.1):
+ * returns the GL error or GL_NO_ERROR.  Border 1 images are valid GL; the
+ * model keeps their inner image, as Mesa does for gallium
+ * (fs_tex_image_nd). */
+static GLenum check_image_args(const fs_tex_target_info *ti, GLint level, GLint internalformat,
+                               const GLsizei size[3], GLint border)
+{
+    int max_log2 = fs_tex_target_max_log2(ti->k);
+    if (level < 0 || level > max_log2)
         return GL_INVALID_VALUE;
     if (!base_format(internalformat))
         return GL_INVALID_VALUE;
     if (border != 0 && border != 1)
         return GL_INVALID_VALUE;
-    /* w = 2^n + 2*border (GL 1.x has no non-power-of-two textures); zero
-     * is a valid, empty image. */
-    if (width < 0 || height < 0 || width > FS_TEX_MAX_SIZE + 2 * border || height > FS_TEX_MAX_SIZE + 2 * border)
-        return GL_INVALID_VALUE;
-    GLsizei iw = width - 2 * border, ih = height - 2 * border;
-    if ((width > 0 && (iw < 0 || !is_pow2_or_zero(iw))) || (height > 0 && (ih < 0 || !is_pow2_or_zero(ih))))
-        return GL_INVALID_VALUE;
-    /* A level's size can be at most max_size >> level. */
-    if (iw > (FS_TEX_MAX_SIZE >> level) || ih > (FS_TEX_MAX_SIZE >> level))
-        return GL_INVALID_VALUE;
+    for (int i = 0; i < ti->dims; i++)
+        if (!size_ok(size[i], border, max_log2, level))
+            return GL_INVALID_VALUE;
     return GL_NO_ERROR;
 }
 
-/* Replaces level `level` of the bound texture with an allocated, undefined
- * width x height image.  Returns it, or NULL (GL_OUT_OF_MEMORY set). */
-static fs_tex_image *define_level(fs_context *c, GLint level, GLint internalformat, GLsizei width, GLsizei height)
+/* The size an image keeps without its border; 1 in the dimensions its
+ * target does not have. */
+static void inner_size(int dims, const GLsizei size[3], GLint border, int inner[3])
 {
-    fs_tex_object *t = fs_tex_bound_2d(c);
+    for (int i = 0; i < 3; i++)
+        inner[i] = i < dims ? size[i] - 2 * border : 1;
+}
+
+/* Replaces level `level` of t with an allocated, undefined image of
+ * size[0] x size[1] x size[2].  Returns it, or NULL (GL_OUT_OF_MEMORY set). */
+static fs_tex_image *define_level(fs_context *c, fs_tex_object *t, GLint level, GLint internalformat,
+                                  const int size[3])
+{
     fs_tex_image *img = &t->level[level];
     uint8_t *texels = NULL;
-    if (width > 0 && height > 0) {
-        texels = calloc((size_t)width * (size_t)height, 4);
+    if (size[0] > 0 && size[1] > 0 && size[2] > 0) {
+        texels = calloc((size_t)size[0] * (size_t)size[1] * (size_t)size[2], 4);
         if (!texels) {
             fs_error(c, GL_OUT_OF_MEMORY);
             return NULL;
@@ -472,8 +514,9 @@ static fs_tex_image *define_level(fs_context *c, GLint level, GLint internalform
     }
     free(img->texels);
     img->texels = texels;
-    img->width = texels ? width : 0;
-    img->height = texels ? height : 0;
+    img->width = texels ? size[0] : 0;
+    img->height = texels ? size[1] : 0;
+    img->depth = texels ? size[2] : 0;
     img->internal_format = internalformat;
     img->base_format = base_format(internalformat);
     t->complete = -1;
@@ -482,24 +525,26 @@ static fs_tex_image *define_level(fs_context *c, GLint level, GLint internalform
     return img;
 }
 
-/* glTexImage2D on GL_PROXY_TEXTURE_2D (3.8.11): the level's state as the
- * image would set it (its border kept, as Mesa keeps it for a proxy), or
- * all zero when only the size is refused (too large, not 2^n + 2 border),
+/* glTexImage on a proxy target (3.8.11): the level's state as the image
+ * would set it (its border kept, as Mesa keeps it for a proxy), or all
+ * zero when only the size is refused (too large, not 2^n + 2 border),
  * which raises no error.  err is the image's error; false when it is an
  * error to raise (a bad level, format, border or negative size). */
-static bool proxy_image(fs_context *c, GLenum err, GLint level, GLint internalformat, GLsizei width, GLsizei height,
-                        GLint border)
+static bool proxy_image(fs_context *c, const fs_tex_target_info *ti, GLenum err, GLint level, GLint internalformat,
+                        const GLsizei size[3], GLint border)
 {
-    bool size_only = level >= 0 && level <= FS_TEX_MAX_LOG2 && base_format(internalformat) &&
-                     (border == 0 || border == 1) && width >= 0 && height >= 0;
+    bool sizes = size[0] >= 0 && (ti->dims < 2 || size[1] >= 0) && (ti->dims < 3 || size[2] >= 0);
+    bool size_only = level >= 0 && level <= fs_tex_target_max_log2(ti->k) && base_format(internalformat) &&
+                     (border == 0 || border == 1) && sizes;
     if (err != GL_NO_ERROR && !(err == GL_INVALID_VALUE && size_only))
         return false;
-    fs_tex_image *img = &c->texture->proxy_2d[level];
+    fs_tex_image *img = &c->texture->proxy[ti->k][level];
     memset(img, 0, sizeof *img);
     if (err != GL_NO_ERROR)
         return true;
-    img->width = width;
-    img->height = height;
+    img->width = size[0];
+    img->height = ti->dims > 1 ? size[1] : 1;
+    img->depth = ti->dims > 2 ? size[2] : 1;
     img->border = border;
     img->internal_format = internalformat;
     img->base_format = base_format(internalformat);
@@ -507,70 +552,100 @@ static bool proxy_image(fs_context *c, GLenum err, GLint level, GLint internalfo
     return true;
 }
 
-void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint internalformat, GLsizei width,
-                        GLsizei height, GLint border, GLenum format, GLenum type, const GLvoid *pixels)
+/* The target of an image command taking dims-dimensional images: false
+ * (GL_INVALID_ENUM set) for another target, or a proxy where none is
+ * allowed. */
+static bool image_target(fs_context *c, GLenum target, int dims, bool proxy_ok, fs_tex_target_info *ti)
 {
-    if (target != GL_TEXTURE_2D && target != GL_PROXY_TEXTURE_2D) {
-        fs_error(c, GL_INVALID_ENUM);
+    if (fs_tex_target_of(target, ti) && ti->dims == dims && (proxy_ok || !ti->proxy))
+        return true;
+    fs_error(c, GL_INVALID_ENUM);
+    return false;
+}
+
+void fs_tex_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLint internalformat, GLsizei w, GLsizei h,
+                     GLsizei d, GLint border, GLenum format, GLenum type, const GLvoid *pixels)
+{
+    static const char *const color_index[3] = {"glTexImage1D(GL_COLOR_INDEX)", "glTexImage2D(GL_COLOR_INDEX)",
+                                               "glTexImage3D(GL_COLOR_INDEX)"};
+    fs_tex_target_info ti;
+    if (!image_target(c, target, dims, true, &ti))
         return;
-    }
+    const GLsizei size[3] = {w, h, d};
     GLenum err = tex_format_error(format, type);
     if (err == GL_NO_ERROR)
-        err = check_image_args(level, internalformat, width, height, border);
-    if (target == GL_PROXY_TEXTURE_2D && proxy_image(c, err, level, internalformat, width, height, border))
+        err = check_image_args(&ti, level, internalformat, size, border);
+    if (ti.proxy && proxy_image(c, &ti, err, level, internalformat, size, border))
         return;
     if (err != GL_NO_ERROR) {
         fs_error(c, err);
         return;
     }
     if (format == GL_COLOR_INDEX) {
-        fs_unsupported(c, "glTexImage2D(GL_COLOR_INDEX)");
+        fs_unsupported(c, color_index[dims - 1]);
         return;
     }
     /* A border (3.8.1) is dropped, as Mesa does for gallium, which has no
      * texture borders: the level is the inner image (measured on OSMesa:
      * TEXTURE_WIDTH w - 2, TEXTURE_BORDER 0, sampling never reads it). */
-    fs_tex_image *img = define_level(c, level, internalformat, width - 2 * border, height - 2 * border);
+    int inner[3];
+    inner_size(dims, size, border, inner);
+    fs_tex_object *t = fs_tex_active(c)->bound[ti.k];
+    fs_tex_image *img = define_level(c, t, level, internalformat, inner);
     if (img && keeps_wide_texels(internalformat, format, type))
         fs_unsupported(c, "16/10-bit texels, unsized internal format (stored at 8 bits)");
     if (img && img->texels && pixels)
-        unpack_inner(c, img, border, width, height, format, type, pixels);
+        unpack_inner(c, img, dims, border, size, format, type, pixels);
     if (img)
-        fs_tex_image_changed(c, fs_tex_bound_2d(c), level);
+        fs_tex_image_changed(c, t, level);
 }
 
-/* The level a TexSubImage2D or CopyTexSubImage2D writes into, after the
- * checks both share (3.8.2): level and size in range, the level defined by
- * TexImage, the rectangle inside it.  NULL when one fails; the error is set. */
-static fs_tex_image *subimage_target(fs_context *c, GLint level, GLint xoffset, GLint yoffset, GLsizei width,
-                                     GLsizei height)
+void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint internalformat, GLsizei width,
+                        GLsizei height, GLint border, GLenum format, GLenum type, const GLvoid *pixels)
 {
-    if (level < 0 || level > FS_TEX_MAX_LOG2 || width < 0 || height < 0) {
+    fs_tex_image_nd(c, 2, target, level, internalformat, width, height, 1, border, format, type, pixels);
+}
+
+/* The level a TexSubImage or CopyTexSubImage writes into, after the
+ * checks they share (3.8.2): level and size in range, the level defined by
+ * TexImage, the box inside it.  NULL when one fails; the error is set. */
+static fs_tex_image *subimage_target(fs_context *c, const fs_tex_target_info *ti, GLint level, const GLint off[3],
+                                     const GLsizei size[3])
+{
+    if (level < 0 || level > fs_tex_target_max_log2(ti->k) || size[0] < 0 || size[1] < 0 || size[2] < 0) {
         fs_error(c, GL_INVALID_VALUE);
         return NULL;
     }
-    fs_tex_image *img = &fs_tex_bound_2d(c)->level[level];
+    fs_tex_image *img = &fs_tex_active(c)->bound[ti->k]->level[level];
     if (!img->texels) {
         fs_error(c, GL_INVALID_OPERATION);
         return NULL;
     }
-    if (xoffset < 0 || yoffset < 0 || (int64_t)xoffset + width > img->width ||
-        (int64_t)yoffset + height > img->height) {
-        fs_error(c, GL_INVALID_VALUE);
-        return NULL;
-    }
+    const int dim[3] = {img->width, img->height, img->depth};
+    for (int i = 0; i < 3; i++)
+        if (off[i] < 0 || (int64_t)off[i] + size[i] > dim[i]) {
+            fs_error(c, GL_INVALID_VALUE);
+            return NULL;
+        }
     return img;
 }
 
-void fs_exec_TexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoffset, GLint yoffset,
-                           GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *pixels)
+void fs_tex_subimage_nd(fs_context *c, int dims, GLenum target, GLint level, const GLint off[3], GLsizei w,
+                        GLsizei h, GLsizei d, GLenum format, GLenum type, const GLvoid *pixels)
 {
-    GLenum err = target != GL_TEXTURE_2D ? GL_INVALID_ENUM : tex_format_error(format, type);
+    static const char *const color_index[3] = {"glTexSubImage1D(GL_COLOR_INDEX)",
+                                               "glTexSubImage2D(GL_COLOR_INDEX)",
+                                               "glTexSubImage3D(GL_COLOR_INDEX)"};
+    fs_tex_target_info ti;
+    if (!image_target(c, target, dims, false, &ti))
+        return;
+    GLenum err = tex_format_error(format, type);
     if (err == GL_INVALID_ENUM) {
         fs_error(c, err);
         return;
     }
-    fs_tex_image *img = subimage_target(c, level, xoffset, yoffset, width, height);
+    const GLsizei size[3] = {w, h, d};
+    fs_tex_image *img = subimage_target(c, &ti, level, off, size);
     if (!img)
         return;
     if (err != GL_NO_ERROR) {
@@ -578,18 +653,25 @@ void fs_exec_TexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoff
         return;
     }
     if (format == GL_COLOR_INDEX) {
-        fs_unsupported(c, "glTexSubImage2D(GL_COLOR_INDEX)");
+        fs_unsupported(c, color_index[dims - 1]);
         return;
     }
-    if (width > 0 && height > 0 && pixels)
-        unpack_image(c, img, xoffset, yoffset, width, height, format, type, pixels);
-    fs_tex_image_changed(c, fs_tex_bound_2d(c), level);
+    if (w > 0 && h > 0 && d > 0 && pixels)
+        unpack_image(c, img, dims, off, w, h, d, format, type, pixels);
+    fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], level);
 }
 
-/* Copies a framebuffer rectangle into img at (dx, dy) (3.8.2: the pixels
- * are taken as by ReadPixels of RGBA; pixels outside the window are
- * undefined, fragsim leaves them as they were). */
-static void copy_from_framebuffer(fs_context *c, fs_tex_image *img, int dx, int dy, GLint x, GLint y, GLsizei w,
+void fs_exec_TexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoffset, GLint yoffset,
+                           GLsizei width, GLsizei height, GLenum format, GLenum type, const GLvoid *pixels)
+{
+    const GLint off[3] = {xoffset, yoffset, 0};
+    fs_tex_subimage_nd(c, 2, target, level, off, width, height, 1, format, type, pixels);
+}
+
+/* Copies a framebuffer rectangle into slice dz of img at (dx, dy) (3.8.2:
+ * the pixels are taken as by ReadPixels of RGBA; pixels outside the window
+ * are undefined, fragsim leaves them as they were). */
+static void copy_from_framebuffer(fs_context *c, fs_tex_image *img, const int dst[3], GLint x, GLint y, GLsizei w,
                                   GLsizei h)
 {
     const fs_framebuffer *fb = &c->fb;
@@ -602,51 +684,65 @@ static void copy_from_framebuffer(fs_context *c, fs_tex_image *img, int dx, int 
             if (sx < 0 || sx >= fb->width)
                 continue;
             const uint8_t *src = fb->color + ((size_t)sy * (size_t)fb->width + (size_t)sx) * 4;
-            uint8_t *dst = img->texels + ((size_t)(dy + j) * (size_t)img->width + (size_t)(dx + i)) * 4;
-            store_texel(dst, src, img->base_format);
+            store_texel(texel_addr(img, dst[0] + i, dst[1] + j, dst[2]), src, img->base_format);
         }
     }
+}
+
+void fs_tex_copy_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLenum internalformat, GLint x,
+                          GLint y, GLsizei w, GLsizei h, GLint border)
+{
+    fs_tex_target_info ti;
+    if (!image_target(c, target, dims, false, &ti))
+        return;
+    const GLsizei size[3] = {w, h, 1};
+    /* Table 3.16: the internal formats 1-4 are not accepted here. */
+    GLenum err = internalformat >= 1 && internalformat <= 4
+                     ? GL_INVALID_VALUE
+                     : check_image_args(&ti, level, (GLint)internalformat, size, border);
+    if (err != GL_NO_ERROR) {
+        fs_error(c, err);
+        return;
+    }
+    /* The border is dropped as by glTexImage: the inner rectangle is
+     * copied. */
+    int inner[3];
+    inner_size(dims, size, border, inner);
+    fs_tex_object *t = fs_tex_active(c)->bound[ti.k];
+    fs_tex_image *img = define_level(c, t, level, (GLint)internalformat, inner);
+    /* (at x or y = INT_MAX everything read is outside the window anyway) */
+    GLint bx = x < INT_MAX ? x + border : x, by = dims > 1 && y < INT_MAX ? y + border : y;
+    if (img && img->texels)
+        copy_from_framebuffer(c, img, no_offset, bx, by, img->width, img->height);
+    if (img)
+        fs_tex_image_changed(c, t, level);
 }
 
 void fs_exec_CopyTexImage2D(fs_context *c, GLenum target, GLint level, GLenum internalformat, GLint x, GLint y,
                             GLsizei width, GLsizei height, GLint border)
 {
-    if (target != GL_TEXTURE_2D) {
-        fs_error(c, GL_INVALID_ENUM);
+    fs_tex_copy_image_nd(c, 2, target, level, internalformat, x, y, width, height, border);
+}
+
+void fs_tex_copy_subimage_nd(fs_context *c, int dims, GLenum target, GLint level, const GLint off[3], GLint x,
+                             GLint y, GLsizei w, GLsizei h)
+{
+    fs_tex_target_info ti;
+    if (!image_target(c, target, dims, false, &ti))
         return;
-    }
-    /* Table 3.16: the internal formats 1-4 are not accepted here. */
-    GLenum err = internalformat >= 1 && internalformat <= 4
-                     ? GL_INVALID_VALUE
-                     : check_image_args(level, (GLint)internalformat, width, height, border);
-    if (err != GL_NO_ERROR) {
-        fs_error(c, err);
+    const GLsizei size[3] = {w, h, 1};
+    fs_tex_image *img = subimage_target(c, &ti, level, off, size);
+    if (!img)
         return;
-    }
-    /* The border is dropped as by glTexImage2D: the inner rectangle is
-     * copied. */
-    fs_tex_image *img =
-        define_level(c, level, (GLint)internalformat, width - 2 * border, height - 2 * border);
-    if (img && img->texels)
-        /* (at x or y = INT_MAX everything read is outside the window anyway) */
-        copy_from_framebuffer(c, img, 0, 0, x < INT_MAX ? x + border : x, y < INT_MAX ? y + border : y, img->width,
-                              img->height);
-    if (img)
-        fs_tex_image_changed(c, fs_tex_bound_2d(c), level);
+    copy_from_framebuffer(c, img, off, x, y, w, h);
+    fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], level);
 }
 
 void fs_exec_CopyTexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x,
                                GLint y, GLsizei width, GLsizei height)
 {
-    if (target != GL_TEXTURE_2D) {
-        fs_error(c, GL_INVALID_ENUM);
-        return;
-    }
-    fs_tex_image *img = subimage_target(c, level, xoffset, yoffset, width, height);
-    if (!img)
-        return;
-    copy_from_framebuffer(c, img, xoffset, yoffset, x, y, width, height);
-    fs_tex_image_changed(c, fs_tex_bound_2d(c), level);
+    const GLint off[3] = {xoffset, yoffset, 0};
+    fs_tex_copy_subimage_nd(c, 2, target, level, off, x, y, width, height);
 }
 
 /* ---- parameters (3.8.4) ---- */
@@ -688,19 +784,19 @@ static float clamp01_param(float v) { return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 
  * integer forms convert colours as 2.14.9 says, enums exactly). */
 static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const float *vals, bool vector)
 {
-    if (target != GL_TEXTURE_2D) {
-        if (target == GL_TEXTURE_1D || target == GL_TEXTURE_3D)
-            fs_unsupported(c, "glTexParameter on a 1D/3D texture");
-        else
-            fs_error(c, GL_INVALID_ENUM);
+    fs_tex_target_info ti;
+    if (!fs_tex_target_of(target, &ti) || ti.proxy) {
+        fs_error(c, GL_INVALID_ENUM);
         return;
     }
     fs_state_mark(c, GL_TEXTURE_BIT);
-    fs_tex_object *t = fs_tex_bound_2d(c);
+    fs_tex_object *t = fs_tex_active(c)->bound[ti.k];
     GLenum e = float_to_enum(vals[0]);
     switch (pname) {
     case GL_TEXTURE_MIN_FILTER:
-        if (!is_min_filter(e))
+        /* The footprint filters are defined for 2D textures only
+         * (docs/extensions/footprint_filter.txt). */
+        if (!is_min_filter(e) || ((e == GL_FOOTPRINT_FRAGSIM || e == GL_FOOTPRINT_HYBRID_FRAGSIM) && ti.k != FS_TEX_2D))
             break;
         t->min_filter = e;
         t->complete = -1;
@@ -712,9 +808,10 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
         return;
     case GL_TEXTURE_WRAP_S:
     case GL_TEXTURE_WRAP_T:
+    case GL_TEXTURE_WRAP_R: /* GL 1.2; Mesa takes it for every target */
         if (!is_wrap(e))
             break;
-        *(pname == GL_TEXTURE_WRAP_S ? &t->wrap_s : &t->wrap_t) = e;
+        *(pname == GL_TEXTURE_WRAP_S ? &t->wrap_s : pname == GL_TEXTURE_WRAP_T ? &t->wrap_t : &t->wrap_r) = e;
         return;
     case GL_TEXTURE_BORDER_COLOR:
         if (!vector)
@@ -825,13 +922,15 @@ bool fs_tex_complete(fs_tex_object *t)
     bool mip = t->min_filter != GL_NEAREST && t->min_filter != GL_LINEAR;
     if (ok && mip) {
         ok = t->max_level >= base;
-        int w = b->width, h = b->height;
-        while (ok && (w > 1 || h > 1) && last < t->max_level) {
+        int w = b->width, h = b->height, d = b->depth;
+        while (ok && (w > 1 || h > 1 || d > 1) && last < t->max_level) {
             w = w > 1 ? w / 2 : 1;
             h = h > 1 ? h / 2 : 1;
+            d = d > 1 ? d / 2 : 1;
             last++;
             const fs_tex_image *l = last < FS_TEX_MAX_LEVELS ? &t->level[last] : NULL;
-            ok = l && l->texels && l->width == w && l->height == h && l->internal_format == b->internal_format;
+            ok = l && l->texels && l->width == w && l->height == h && l->depth == d &&
+                 l->internal_format == b->internal_format;
         }
     }
     t->first_level = ok ? base : 0;
@@ -908,7 +1007,7 @@ void fs_exec_TexEnvfv(fs_context *c, GLenum target, GLenum pname, const GLfloat 
 
 /* The scalar fields fs_tex_params shares with fs_tex_object, by name. */
 #define FS_TEX_PARAM_FIELDS(X) \
-    X(min_filter) X(mag_filter) X(wrap_s) X(wrap_t) X(priority) X(footprint_budget) X(footprint_snap) \
+    X(min_filter) X(mag_filter) X(wrap_s) X(wrap_t) X(wrap_r) X(priority) X(footprint_budget) X(footprint_snap) \
     X(base_level) X(max_level) X(min_lod) X(max_lod) X(lod_bias) X(generate_mipmap)
 
 static void params_save(const fs_tex_object *t, fs_tex_params *p)
@@ -935,25 +1034,30 @@ void fs_texture_attrib_save(const fs_context *c, fs_texture_attrib *a)
     const struct fs_texture_state *s = c->texture;
     for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
         const fs_tex_unit *tu = &s->unit[u];
-        a->unit[u].binding_2d = tu->bound[FS_TEX_2D]->name;
-        params_save(tu->bound[FS_TEX_2D], &a->unit[u].bound);
+        for (int k = 0; k < FS_TEX_TARGETS; k++) {
+            a->unit[u].binding[k] = tu->bound[k]->name;
+            params_save(tu->bound[k], &a->unit[u].bound[k]);
+        }
         a->unit[u].env = tu->env;
     }
-    params_save(&s->default_obj[FS_TEX_2D], &a->default_2d);
+    for (int k = 0; k < FS_TEX_TARGETS; k++)
+        params_save(&s->default_obj[k], &a->defaults[k]);
 }
 
 void fs_texture_attrib_restore(fs_context *c, const fs_texture_attrib *a)
 {
     struct fs_texture_state *s = c->texture;
-    fs_tex_object *def = &s->default_obj[FS_TEX_2D];
     for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
         fs_tex_unit *tu = &s->unit[u];
-        bind_2d(c, u, a->unit[u].binding_2d);
-        if (tu->bound[FS_TEX_2D] != def)
-            params_restore(tu->bound[FS_TEX_2D], &a->unit[u].bound);
+        for (int k = 0; k < FS_TEX_TARGETS; k++) {
+            bind(c, u, (enum fs_tex_target)k, a->unit[u].binding[k]);
+            if (tu->bound[k] != &s->default_obj[k])
+                params_restore(tu->bound[k], &a->unit[u].bound[k]);
+        }
         tu->env = a->unit[u].env;
     }
-    params_restore(def, &a->default_2d);
+    for (int k = 0; k < FS_TEX_TARGETS; k++)
+        params_restore(&s->default_obj[k], &a->defaults[k]);
     fs_texture_enables_changed(c); /* the restored parameters decide tex_pair_lod */
 }
 
@@ -962,6 +1066,12 @@ void fs_texture_attrib_restore(fs_context *c, const fs_texture_attrib *a)
  * integers (6.1.2), as Mesa returns them. */
 
 GLuint fs_texture_binding_2d(const fs_context *c) { return fs_tex_bound_2d(c)->name; }
+
+GLuint fs_texture_binding(const fs_context *c, GLenum target)
+{
+    fs_tex_target_info ti;
+    return fs_tex_target_of(target, &ti) && !ti.proxy ? fs_tex_active(c)->bound[ti.k]->name : 0;
+}
 
 GLuint fs_tex_object_name(const fs_tex_object *t) { return t->name; }
 
@@ -973,16 +1083,13 @@ bool fs_tex_level_size(const fs_tex_object *t, int level, int *width, int *heigh
     return stored && level >= t->first_level && level <= t->last_level && *width > 0 && *height > 0;
 }
 
-/* A texture target the queries accept; sets the error (or counts the
- * unsupported 1D/3D target) and returns false otherwise. */
-static bool query_target_ok(fs_context *c, GLenum target, bool proxy_ok, const char *what)
+/* A texture target the queries accept (a proxy only where proxy_ok); sets
+ * GL_INVALID_ENUM and returns false otherwise. */
+static bool query_target_ok(fs_context *c, GLenum target, bool proxy_ok, fs_tex_target_info *ti)
 {
-    if (target == GL_TEXTURE_2D || (proxy_ok && target == GL_PROXY_TEXTURE_2D))
+    if (fs_tex_target_of(target, ti) && (proxy_ok || !ti->proxy))
         return true;
-    if (target == GL_TEXTURE_1D || target == GL_TEXTURE_3D)
-        fs_unsupported(c, what);
-    else
-        fs_error(c, GL_INVALID_ENUM);
+    fs_error(c, GL_INVALID_ENUM);
     return false;
 }
 
@@ -1005,6 +1112,7 @@ static int tex_parameter_value(const fs_tex_object *t, GLenum pname, tex_param_v
     case GL_TEXTURE_MAG_FILTER: v[0] = (float)t->mag_filter; return 1;
     case GL_TEXTURE_WRAP_S: v[0] = (float)t->wrap_s; return 1;
     case GL_TEXTURE_WRAP_T: v[0] = (float)t->wrap_t; return 1;
+    case GL_TEXTURE_WRAP_R: v[0] = (float)t->wrap_r; return 1;
     case GL_TEXTURE_BORDER_COLOR: memcpy(v, t->border, 4 * sizeof *v); p->norm = true; return 4;
     case GL_TEXTURE_PRIORITY: v[0] = t->priority; p->norm = true; return 1;
     /* 3.8.12: a texture of the model is always resident. */
@@ -1020,9 +1128,10 @@ static int tex_parameter_value(const fs_tex_object *t, GLenum pname, tex_param_v
 
 static int get_tex_parameter(fs_context *c, GLenum target, GLenum pname, tex_param_value *p)
 {
-    if (!query_target_ok(c, target, false, "glGetTexParameter on a 1D/3D texture"))
+    fs_tex_target_info ti;
+    if (!query_target_ok(c, target, false, &ti))
         return 0;
-    int n = tex_parameter_value(fs_tex_bound_2d(c), pname, p);
+    int n = tex_parameter_value(fs_tex_active(c)->bound[ti.k], pname, p);
     if (n == 0)
         fs_error(c, GL_INVALID_ENUM);
     return n;
@@ -1071,7 +1180,7 @@ static bool tex_level_value(const fs_tex_image *img, GLenum pname, GLint *v)
     switch (pname) {
     case GL_TEXTURE_WIDTH: *v = defined ? img->width : 0; return true;
     case GL_TEXTURE_HEIGHT: *v = defined ? img->height : 0; return true;
-    case GL_TEXTURE_DEPTH: *v = defined ? 1 : 0; return true;
+    case GL_TEXTURE_DEPTH: *v = defined ? img->depth : 0; return true;
     case GL_TEXTURE_INTERNAL_FORMAT: *v = defined ? img->internal_format : GL_RGBA; return true;
     case GL_TEXTURE_BORDER: *v = defined ? img->border : 0; return true;
     case GL_TEXTURE_COMPRESSED: *v = GL_FALSE; return true;
@@ -1087,14 +1196,15 @@ static bool tex_level_value(const fs_tex_image *img, GLenum pname, GLint *v)
 
 static bool get_tex_level(fs_context *c, GLenum target, GLint level, GLenum pname, GLint *v)
 {
-    if (!query_target_ok(c, target, true, "glGetTexLevelParameter on a 1D/3D texture"))
+    fs_tex_target_info ti;
+    if (!query_target_ok(c, target, true, &ti))
         return false;
-    if (level < 0 || level >= FS_TEX_MAX_LEVELS) {
+    if (level < 0 || level > fs_tex_target_max_log2(ti.k)) {
         fs_error(c, GL_INVALID_VALUE);
         return false;
     }
     const fs_tex_image *img =
-        target == GL_TEXTURE_2D ? &fs_tex_bound_2d(c)->level[level] : &c->texture->proxy_2d[level];
+        ti.proxy ? &c->texture->proxy[ti.k][level] : &fs_tex_active(c)->bound[ti.k]->level[level];
     if (!tex_level_value(img, pname, v)) {
         fs_error(c, GL_INVALID_ENUM);
         return false;
@@ -1211,17 +1321,27 @@ static GLenum get_image_format_error(GLenum format, GLenum type)
     return err;
 }
 
+/* The defined level glGetTexImage reads, NULL when there is none. */
+static const fs_tex_image *get_image_level(fs_context *c, const fs_tex_target_info *ti, GLint level)
+{
+    if (ti->proxy || level < 0 || level >= FS_TEX_MAX_LEVELS)
+        return NULL;
+    const fs_tex_image *img = &fs_tex_active(c)->bound[ti->k]->level[level];
+    return img->texels ? img : NULL;
+}
+
 int64_t fs_gettexImage_bytes(fs_context *c, GLenum target, GLint level, GLenum format, GLenum type)
 {
-    if (target != GL_TEXTURE_2D || level < 0 || level >= FS_TEX_MAX_LEVELS ||
-        get_image_format_error(format, type) != GL_NO_ERROR)
+    fs_tex_target_info ti;
+    if (!fs_tex_target_of(target, &ti) || get_image_format_error(format, type) != GL_NO_ERROR)
         return 0;
-    const fs_tex_image *img = &fs_tex_bound_2d(c)->level[level];
-    if (!img->texels)
+    const fs_tex_image *img = get_image_level(c, &ti, level);
+    if (!img)
         return 0;
-    /* The pack layout is glReadPixels' (4.3.2, 6.1.4). */
+    /* The pack layout is glReadPixels' (4.3.2, 6.1.4), with the image
+     * height and skipped images for a 3D image. */
     fs_pixel_store ps = fs_pixel_store_pack(c);
-    return fs_pixel_image_bytes(&ps, 2, img->width, img->height, 1, format, type);
+    return fs_pixel_image_bytes(&ps, ti.dims, img->width, img->height, img->depth, format, type);
 }
 
 /* A texel as GetTexImage sees it: table 6.1 assigns the base format's
@@ -1242,9 +1362,10 @@ static void texel_for_get(const uint8_t *t, GLenum base, uint8_t out[4])
 
 void fs_exec_GetTexImage(fs_context *c, GLenum target, GLint level, GLenum format, GLenum type, GLvoid *pixels)
 {
-    if (!query_target_ok(c, target, false, "glGetTexImage on a 1D/3D texture"))
+    fs_tex_target_info ti;
+    if (!query_target_ok(c, target, false, &ti))
         return;
-    if (level < 0 || level >= FS_TEX_MAX_LEVELS) {
+    if (level < 0 || level > fs_tex_target_max_log2(ti.k)) {
         fs_error(c, GL_INVALID_VALUE);
         return;
     }
@@ -1253,12 +1374,12 @@ void fs_exec_GetTexImage(fs_context *c, GLenum target, GLint level, GLenum forma
         fs_error(c, err);
         return;
     }
-    const fs_tex_image *img = &fs_tex_bound_2d(c)->level[level];
-    if (!img->texels || !pixels)
+    const fs_tex_image *img = get_image_level(c, &ti, level);
+    if (!img || !pixels)
         return; /* an undefined level writes nothing */
     fs_pixel_store ps = fs_pixel_store_pack(c);
     fs_pixel_layout l;
-    if (!fs_pixel_layout_init(&l, &ps, 2, img->width, img->height, 1, format, type))
+    if (!fs_pixel_layout_init(&l, &ps, ti.dims, img->width, img->height, img->depth, format, type))
         return; /* an image too large to address: nothing written */
     /* Luminance is R (6.1.4); Mesa packs a texture whose base format is
      * not RGBA through float, and luminance as GL_UNSIGNED_INT
@@ -1269,11 +1390,14 @@ void fs_exec_GetTexImage(fs_context *c, GLenum target, GLint level, GLenum forma
         fs_error(c, GL_OUT_OF_MEMORY);
         return;
     }
-    for (int y = 0; y < img->height; y++) {
-        const uint8_t *src = img->texels + (size_t)y * (size_t)img->width * 4;
-        for (int x = 0; x < img->width; x++)
-            texel_for_get(src + 4 * x, img->base_format, row + 4 * x);
-        fs_pixel_pack_rgba8(&l, pixels, y, 0, img->width, row, flags);
-    }
+    /* Slice z of a 3D image is packed image_stride bytes after slice 0. */
+    for (int z = 0; z < img->depth; z++)
+        for (int y = 0; y < img->height; y++) {
+            const uint8_t *src = texel_addr(img, 0, y, z);
+            for (int x = 0; x < img->width; x++)
+                texel_for_get(src + 4 * x, img->base_format, row + 4 * x);
+            fs_pixel_pack_rgba8(&l, (uint8_t *)pixels + (size_t)z * (size_t)l.image_stride, y, 0, img->width, row,
+                                flags);
+        }
     free(row);
 }

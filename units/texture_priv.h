@@ -15,19 +15,28 @@
  * the texture environment, whose functions depend on it (table 3.22). */
 typedef struct fs_tex_image {
     int width, height;          /* 0: the level is not defined */
+    int depth;                  /* 1 for 1D and 2D images; a 3D image's slices follow each other */
     GLint internal_format;      /* as given (for the completeness rule) */
     GLenum base_format;         /* GL_RGBA, GL_RGB, GL_LUMINANCE, ... */
-    uint8_t *texels;            /* width*height*4 bytes, row 0 = t near 0 */
+    uint8_t *texels;            /* width*height*depth*4 bytes, row 0 = t near 0, slice 0 = r near 0 */
     /* A proxy level (3.8.11) has no texels: described tells that its
      * state is set, border is the one given (images keep none). */
     bool described;
     int border;
 } fs_tex_image;
 
+/* The texture targets as indices into a unit's bindings and enables and
+ * the default objects (GL 1.5 spec 3.8.12: each target has its own texture
+ * 0).  A new target is one more name here and in units/texture_target.c. */
+enum fs_tex_target { FS_TEX_2D, FS_TEX_1D, FS_TEX_3D, FS_TEX_TARGETS };
+_Static_assert(FS_TEX_TARGETS == FS_TEX_TARGET_COUNT, "texture_unit.h counts the targets");
+
 typedef struct fs_tex_object {
     GLuint name;
     bool bound_once;            /* has been bound: its target is fixed (3.8.12) */
+    enum fs_tex_target target;  /* the target of the first bind (texture_target.c) */
     GLenum min_filter, mag_filter, wrap_s, wrap_t;
+    GLenum wrap_r;              /* GL 1.2 (3.8.4), sampled for 3D textures only */
     float border[4];
     float priority;
     /* GL_FRAGSIM_footprint_filter: the budget M and the corner snapping. */
@@ -50,10 +59,6 @@ typedef struct fs_tex_object {
     struct fs_mpgrid_tex *mpgrid;
 } fs_tex_object;
 
-/* The texture targets as indices into a unit's bindings and enables and
- * the default objects (GL 1.5 spec 3.8.12: each target has its own texture
- * 0).  A new target is one more name here. */
-enum fs_tex_target { FS_TEX_2D, FS_TEX_TARGETS };
 
 /* units/texture_combine.c: the initial environment; glTexEnv of a
  * GL_COMBINE parameter (false: pname is none; *error GL_NO_ERROR or the
@@ -89,8 +94,8 @@ struct fs_texture_state {
     size_t count, cap;
     GLuint next_name;           /* where glGenTextures starts looking */
     uint64_t quads_sampled, quads_incomplete;
-    /* GL_PROXY_TEXTURE_2D's levels (3.8.11): state only, no texels. */
-    fs_tex_image proxy_2d[FS_TEX_MAX_LEVELS];
+    /* The proxy targets' levels (3.8.11), by target: state only, no texels. */
+    fs_tex_image proxy[FS_TEX_TARGETS][FS_TEX_MAX_LEVELS];
     /* Footprint filters (units/footprint.h) by M (8, 16, 32, 64), snapping
      * (integer, mid-point) and hybrid, created on first use: each holds
      * its weighting ROMs. */
@@ -100,6 +105,35 @@ struct fs_texture_state {
 /* The active texture unit (glActiveTexture, 2.7), and its 2D texture. */
 static inline fs_tex_unit *fs_tex_active(const fs_context *c) { return &c->texture->unit[fs_active_unit(c)]; }
 static inline fs_tex_object *fs_tex_bound_2d(const fs_context *c) { return fs_tex_active(c)->bound[FS_TEX_2D]; }
+
+/* ---- texture targets (units/texture_target.c) ---- */
+/* What a GL target enum names: the target, whether it is the proxy, and
+ * the image dimensions (1, 2, 3); false for an enum that names none. */
+typedef struct fs_tex_target_info {
+    enum fs_tex_target k;
+    bool proxy;
+    int dims;
+} fs_tex_target_info;
+bool fs_tex_target_of(GLenum target, fs_tex_target_info *ti);
+/* log2 of the largest image of a target (GL_MAX_TEXTURE_SIZE,
+ * GL_MAX_3D_TEXTURE_SIZE as OSMesa reports them). */
+int fs_tex_target_max_log2(enum fs_tex_target k);
+int fs_tex_target_dims(enum fs_tex_target k);
+/* The target a unit samples (3.8.15: 3D before 2D before 1D), -1 when no
+ * target is enabled. */
+int fs_tex_unit_target(const fs_tex_unit *tu);
+/* The image commands of every target (texture_object.c): glTexImage*D,
+ * glTexSubImage*D, glCopyTexImage*D, glCopyTexSubImage*D with the target
+ * enum as given, dims the command's image dimensions; heights and depths
+ * a command does not have are 1, offsets 0. */
+void fs_tex_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLint internalformat, GLsizei w, GLsizei h,
+                     GLsizei d, GLint border, GLenum format, GLenum type, const GLvoid *pixels);
+void fs_tex_subimage_nd(fs_context *c, int dims, GLenum target, GLint level, const GLint off[3], GLsizei w,
+                        GLsizei h, GLsizei d, GLenum format, GLenum type, const GLvoid *pixels);
+void fs_tex_copy_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLenum internalformat, GLint x,
+                          GLint y, GLsizei w, GLsizei h, GLint border);
+void fs_tex_copy_subimage_nd(fs_context *c, int dims, GLenum target, GLint level, const GLint off[3], GLint x,
+                             GLint y, GLsizei w, GLsizei h);
 
 /* ---- level of detail (texture_lod.c) ---- */
 void fs_tex_lod_defaults(fs_tex_object *t);
@@ -131,6 +165,13 @@ void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int level);
 /* The wraps llvmpipe filters in 8-bit fixed point (gallivm
  * lp_is_simple_wrap_mode); the others take its float path. */
 static inline bool fs_tex_simple_wrap(GLenum w) { return w == GL_REPEAT || w == GL_CLAMP_TO_EDGE; }
+/* Whether every wrap of the dimensions a texture has is simple (gallivm
+ * checks wrap t from 2D up and wrap r for 3D only). */
+static inline bool fs_tex_simple_wraps(const fs_tex_object *t)
+{
+    return fs_tex_simple_wrap(t->wrap_s) && (t->target == FS_TEX_1D || fs_tex_simple_wrap(t->wrap_t)) &&
+           (t->target != FS_TEX_3D || fs_tex_simple_wrap(t->wrap_r));
+}
 /* Completeness of an object, cached (3.8.10). */
 bool fs_tex_complete(fs_tex_object *t);
 /* Whether sampling a quad with this texture depends on the quad sharing

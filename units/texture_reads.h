@@ -10,8 +10,9 @@
 #ifndef FS_TEXTURE_READS_H
 #define FS_TEXTURE_READS_H
 
-/* At most a pixel: LINEAR on two levels (GL_LINEAR_MIPMAP_LINEAR). */
-#define FS_TEX_READS_MAX 8
+/* At most a pixel: LINEAR on two levels (GL_LINEAR_MIPMAP_LINEAR), 8
+ * texels a level for a 3D texture. */
+#define FS_TEX_READS_MAX 16
 
 typedef struct fs_tex_reads {
     unsigned n[4];

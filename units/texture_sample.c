@@ -137,10 +137,10 @@ static void lod_levels(const fs_tex_object *t, bool linear, float lod, int ip, l
  * limits replace lambda), and MIPMAP_NEAREST rounds it to even.  rho is
  * scaled by the base level's size (3.8.9: level_base is level 0 of the
  * pyramid lambda describes). */
-static void select_lod(const fs_tex_object *t, const fs_tex_lod *lp, const float s[4], const float tt[4],
-                       lod_result *r)
+static void select_lod(const fs_tex_object *t, const fs_tex_lod *lp, const float (*st)[4], lod_result *r)
 {
     const fs_tex_image *b = &t->level[t->first_level];
+    const float *s = st[0], *tt = st[1], *rr = st[2];
     /* llvmpipe's quad is (upper-left, upper-right, lower-left, lower-right)
      * in its y-down frame, i.e. fs_quad pixels 2, 3, 0, 1. */
     float fw = (float)b->width, fh = (float)b->height;
@@ -148,6 +148,14 @@ static void select_lod(const fs_tex_object *t, const fs_tex_lod *lp, const float
     float dtdx = (tt[3] - tt[2]) * fh, dtdy = (tt[0] - tt[2]) * fh;
     float rx = dsdx * dsdx + dtdx * dtdx;
     float ry = dsdy * dsdy + dtdy * dtdy;
+    if (t->target == FS_TEX_3D) {
+        /* 3D adds the r derivatives scaled by the depth, after s and t
+         * (gallivm lp_build_rho). */
+        float fd = (float)b->depth;
+        float drdx = (rr[3] - rr[2]) * fd, drdy = (rr[0] - rr[2]) * fd;
+        rx = rx + drdx * drdx;
+        ry = ry + drdy * drdy;
+    }
     float rho2 = rx > ry ? rx : ry;
     GLenum mf = t->min_filter;
     bool mip_none = mf == GL_NEAREST || mf == GL_LINEAR;
@@ -198,18 +206,30 @@ static inline int wrap_nearest(int x, int len, GLenum wrap)
  * texels come through the CTR and pointer table, units/mpgrid_gl.h), with
  * the record of what the reads did to it (mpgrid NULL otherwise); with a
  * observer (pipeline/observer.h), the record of the texels read by pixel `pixel` (reads, else
- * NULL; units/texture_reads.h). */
+ * NULL; units/texture_reads.h).  dims and wrap[] are the texture's
+ * dimensions and their wraps; an axis the target does not have has size 1,
+ * coordinate 0 and GL_REPEAT, which reads texel 0 with any filter and
+ * leaves every lerp exact (a lerp of a texel with itself), so 1D and 2D
+ * textures take the 3D code's results with fewer reads. */
 typedef struct tex_fetch {
     const fs_tex_object *t;
     struct fs_mpgrid_tex *mpgrid;
     fs_mpgrid_work work;
     fs_tex_reads *reads;
     int pixel;
+    int dims;
+    GLenum wrap[3];
 } tex_fetch;
 
-/* Address of texel (x, y) of a level (an MP-Grid's comes into tmp). */
-static inline const uint8_t *texel_at(tex_fetch *f, const fs_tex_image *img, int x, int y, uint8_t tmp[4])
+/* An image's size along axis a (0 s, 1 t, 2 r). */
+static inline int image_len(const fs_tex_image *img, int a) { return a == 0 ? img->width : a == 1 ? img->height : img->depth; }
+
+/* Address of texel (x, y, z) of a level (an MP-Grid's comes into tmp).
+ * The record for the cycle model keeps (level, x, y): it lays out 2D
+ * levels (units/texture_reads.h). */
+static inline const uint8_t *texel_at(tex_fetch *f, const fs_tex_image *img, const int xyz[3], uint8_t tmp[4])
 {
+    int x = xyz[0], y = xyz[1];
     if (f->reads && f->reads->n[f->pixel] < FS_TEX_READS_MAX) {
         struct fs_tex_read *r = &f->reads->texel[f->pixel][f->reads->n[f->pixel]++];
         r->level = (int)(img - f->t->level);
@@ -218,16 +238,18 @@ static inline const uint8_t *texel_at(tex_fetch *f, const fs_tex_image *img, int
     }
     if (f->mpgrid)
         return fs_mpgrid_gl_texel(f->mpgrid, &f->work, (int)(img - f->t->level), x, y, tmp);
-    return img->texels + ((size_t)y * (size_t)img->width + (size_t)x) * 4;
+    return img->texels + (((size_t)xyz[2] * (size_t)img->height + (size_t)y) * (size_t)img->width + (size_t)x) * 4;
 }
 
-static void sample_nearest8(tex_fetch *f, const fs_tex_image *img, float s, float tt, uint8_t out[4])
+static void sample_nearest8(tex_fetch *f, const fs_tex_image *img, const float st[3], uint8_t out[4])
 {
-    const fs_tex_object *t = f->t;
-    int x = wrap_nearest(to_int_floor(s * (float)img->width), img->width, t->wrap_s);
-    int y = wrap_nearest(to_int_floor(tt * (float)img->height), img->height, t->wrap_t);
+    int xyz[3];
+    for (int a = 0; a < 3; a++) {
+        int len = image_len(img, a);
+        xyz[a] = wrap_nearest(to_int_floor(st[a] * (float)len), len, f->wrap[a]);
+    }
     uint8_t tmp[4];
-    memcpy(out, texel_at(f, img, x, y, tmp), 4);
+    memcpy(out, texel_at(f, img, xyz, tmp), 4);
 }
 
 static void linear_coord8(float s, int len, GLenum wrap, int *i0, int *i1, int *frac)
@@ -246,37 +268,64 @@ static void linear_coord8(float s, int len, GLenum wrap, int *i0, int *i1, int *
     }
 }
 
-static void sample_linear8(tex_fetch *f, const fs_tex_image *img, float s, float tt, uint8_t out[4])
+/* The texel pair i[axis][0..1] and weight w[axis] of LINEAR on each axis. */
+typedef struct linear_taps {
+    int i[3][2];
+} linear_taps;
+
+/* Bilinear in slice k of the taps (8-bit lerps along s, then t). */
+static void bilinear8(tex_fetch *f, const fs_tex_image *img, const linear_taps *tp, int k, const int w[3],
+                      int out[4])
 {
-    const fs_tex_object *t = f->t;
-    int x0, x1, y0, y1, fx, fy;
-    linear_coord8(s, img->width, t->wrap_s, &x0, &x1, &fx);
-    linear_coord8(tt, img->height, t->wrap_t, &y0, &y1, &fy);
-    uint8_t m00[4], m10[4], m01[4], m11[4];
-    const uint8_t *t00 = texel_at(f, img, x0, y0, m00), *t10 = texel_at(f, img, x1, y0, m10);
-    const uint8_t *t01 = texel_at(f, img, x0, y1, m01), *t11 = texel_at(f, img, x1, y1, m11);
-    for (int k = 0; k < 4; k++) {
-        int a = lerp8(fx, t00[k], t10[k]);
-        int b = lerp8(fx, t01[k], t11[k]);
-        out[k] = (uint8_t)lerp8(fy, a, b);
+    uint8_t m[4][4];
+    const uint8_t *tx[4];
+    for (int j = 0; j < 4; j++) {
+        const int xyz[3] = {tp->i[0][j & 1], tp->i[1][j >> 1], tp->i[2][k]};
+        tx[j] = texel_at(f, img, xyz, m[j]);
+    }
+    for (int c = 0; c < 4; c++) {
+        int a = lerp8(w[0], tx[0][c], tx[1][c]);
+        int b = lerp8(w[0], tx[2][c], tx[3][c]);
+        out[c] = lerp8(w[1], a, b);
     }
 }
 
-static void sample_level8(tex_fetch *f, int level, GLenum filter, float s, float tt, uint8_t out[4])
+static void sample_linear8(tex_fetch *f, const fs_tex_image *img, const float st[3], uint8_t out[4])
+{
+    linear_taps tp;
+    int w[3];
+    for (int a = 0; a < 3; a++)
+        linear_coord8(st[a], image_len(img, a), f->wrap[a], &tp.i[a][0], &tp.i[a][1], &w[a]);
+    int v0[4];
+    bilinear8(f, img, &tp, 0, w, v0);
+    if (f->dims == 3) {
+        /* 3D: the two slices' bilinear results lerped along r, 8 texels
+         * (3.8.8 eq. 3.23). */
+        int v1[4];
+        bilinear8(f, img, &tp, 1, w, v1);
+        for (int c = 0; c < 4; c++)
+            v0[c] = lerp8(w[2], v0[c], v1[c]);
+    }
+    for (int c = 0; c < 4; c++)
+        out[c] = (uint8_t)v0[c];
+}
+
+static void sample_level8(tex_fetch *f, int level, GLenum filter, const float st[3], uint8_t out[4])
 {
     const fs_tex_object *t = f->t;
     if (filter == GL_NEAREST)
-        sample_nearest8(f, &t->level[level], s, tt, out);
+        sample_nearest8(f, &t->level[level], st, out);
     else
-        sample_linear8(f, &t->level[level], s, tt, out);
+        sample_linear8(f, &t->level[level], st, out);
 }
 
 /* ---- float filtering with a border (llvmpipe's SoA path for GL_CLAMP) ---- */
 
-static void fetch_f(tex_fetch *f, const fs_tex_image *img, int x, int y, float out[4])
+static void fetch_f(tex_fetch *f, const fs_tex_image *img, const int xyz[3], float out[4])
 {
     const fs_tex_object *t = f->t;
-    if (x < 0 || y < 0 || x >= img->width || y >= img->height) {
+    if (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0 || xyz[0] >= img->width || xyz[1] >= img->height ||
+        xyz[2] >= img->depth) {
         /* 3.8.7: the border colour is taken as a texel of the image's base
          * format, expanded like the stored texels (texture_priv.h), as
          * Mesa converts it for the sampler. */
@@ -292,7 +341,7 @@ static void fetch_f(tex_fetch *f, const fs_tex_image *img, int x, int y, float o
         return;
     }
     uint8_t tmp[4];
-    const uint8_t *p = texel_at(f, img, x, y, tmp);
+    const uint8_t *p = texel_at(f, img, xyz, tmp);
     for (int k = 0; k < 4; k++)
         out[k] = (float)p[k] * (1.0f / 255.0f);
 }
@@ -392,50 +441,74 @@ static void linear_coord_f(float s, int len, GLenum wrap, int *i0, int *i1, floa
 
 static inline float lerpf(float w, float a, float b) { return a + w * (b - a); }
 
-static void sample_level_f(tex_fetch *f, int level, GLenum filter, float s, float tt, float out[4])
+/* Bilinear in slice k of the taps, in float (lerps along s, then t). */
+static void bilinear_f(tex_fetch *f, const fs_tex_image *img, const linear_taps *tp, int k, const float w[3],
+                       float out[4])
 {
-    const fs_tex_object *t = f->t;
-    const fs_tex_image *img = &t->level[level];
+    float v[4][4];
+    for (int j = 0; j < 4; j++) {
+        const int xyz[3] = {tp->i[0][j & 1], tp->i[1][j >> 1], tp->i[2][k]};
+        fetch_f(f, img, xyz, v[j]);
+    }
+    for (int c = 0; c < 4; c++)
+        out[c] = lerpf(w[1], lerpf(w[0], v[0][c], v[1][c]), lerpf(w[0], v[2][c], v[3][c]));
+}
+
+/* LINEAR in float from the taps and weights: bilinear, and for 3D the two
+ * slices lerped along r (3.8.8 eq. 3.23). */
+static void linear_taps_f(tex_fetch *f, const fs_tex_image *img, const linear_taps *tp, const float w[3],
+                          float out[4])
+{
+    bilinear_f(f, img, tp, 0, w, out);
+    if (f->dims == 3) {
+        float v1[4];
+        bilinear_f(f, img, tp, 1, w, v1);
+        for (int c = 0; c < 4; c++)
+            out[c] = lerpf(w[2], out[c], v1[c]);
+    }
+}
+
+static void sample_level_f(tex_fetch *f, int level, GLenum filter, const float st[3], float out[4])
+{
+    const fs_tex_image *img = &f->t->level[level];
     if (filter == GL_NEAREST) {
-        fetch_f(f, img, nearest_coord_f(s, img->width, t->wrap_s), nearest_coord_f(tt, img->height, t->wrap_t),
-                out);
+        int xyz[3];
+        for (int a = 0; a < 3; a++)
+            xyz[a] = nearest_coord_f(st[a], image_len(img, a), f->wrap[a]);
+        fetch_f(f, img, xyz, out);
         return;
     }
-    int x0, x1, y0, y1;
-    float fx, fy, a[4], b[4], cc[4], d[4];
-    linear_coord_f(s, img->width, t->wrap_s, &x0, &x1, &fx);
-    linear_coord_f(tt, img->height, t->wrap_t, &y0, &y1, &fy);
-    fetch_f(f, img, x0, y0, a);
-    fetch_f(f, img, x1, y0, b);
-    fetch_f(f, img, x0, y1, cc);
-    fetch_f(f, img, x1, y1, d);
-    for (int k = 0; k < 4; k++)
-        out[k] = lerpf(fy, lerpf(fx, a[k], b[k]), lerpf(fx, cc[k], d[k]));
+    linear_taps tp;
+    float w[3];
+    for (int a = 0; a < 3; a++)
+        linear_coord_f(st[a], image_len(img, a), f->wrap[a], &tp.i[a][0], &tp.i[a][1], &w[a]);
+    linear_taps_f(f, img, &tp, w, out);
 }
 
 /* NEAREST the way llvmpipe's float path computes it for the nearest pixels
  * of a vector that also has LINEAR pixels (fs_tex_pair_decides): the
- * LINEAR texel pair with the weight rounded to 0 or 1 (a fraction of
- * exactly 0.5 keeps the first texel), so GL_CLAMP below 0 reaches the
- * border. */
-static void sample_nearest_via_linear_f(tex_fetch *f, int level, float s, float tt, float out[4])
+ * LINEAR code with each weight rounded to 0 or 1 (a fraction of exactly
+ * 0.5 keeps the first texel), so GL_CLAMP below 0 reaches the border and
+ * a weight of 1 gives a + (b - a), not always b. */
+static void sample_nearest_via_linear_f(tex_fetch *f, int level, const float st[3], float out[4])
 {
-    const fs_tex_object *t = f->t;
-    const fs_tex_image *img = &t->level[level];
-    int x0, x1, y0, y1;
-    float fx, fy;
-    linear_coord_f(s, img->width, t->wrap_s, &x0, &x1, &fx);
-    linear_coord_f(tt, img->height, t->wrap_t, &y0, &y1, &fy);
-    fetch_f(f, img, fx > 0.5f ? x1 : x0, fy > 0.5f ? y1 : y0, out);
+    const fs_tex_image *img = &f->t->level[level];
+    linear_taps tp;
+    float w[3];
+    for (int a = 0; a < 3; a++) {
+        linear_coord_f(st[a], image_len(img, a), f->wrap[a], &tp.i[a][0], &tp.i[a][1], &w[a]);
+        w[a] = w[a] > 0.5f ? 1.0f : 0.0f;
+    }
+    linear_taps_f(f, img, &tp, w, out);
 }
 
-static void sample_level_fv(tex_fetch *f, int level, GLenum filter, bool via_linear, float s, float tt,
+static void sample_level_fv(tex_fetch *f, int level, GLenum filter, bool via_linear, const float st[3],
                             float out[4])
 {
     if (via_linear && filter == GL_NEAREST)
-        sample_nearest_via_linear_f(f, level, s, tt, out);
+        sample_nearest_via_linear_f(f, level, st, out);
     else
-        sample_level_f(f, level, filter, s, tt, out);
+        sample_level_f(f, level, filter, st, out);
 }
 
 /* ---- texture environment (3.8.13, tables 3.22 and 3.23) ---- */
@@ -588,34 +661,94 @@ static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const fl
 
 /* ---- per quad ---- */
 
+/* The coordinates a texture of dims dimensions samples at the four pixels
+ * of v: (s, t, r) divided by q (Mesa's fixed-function program samples
+ * projectively); the coordinates of the axes a target lacks are 0
+ * (tex_fetch). */
+static void project_coords(int dims, const float (*v[4])[4], float st[3][4])
+{
+    for (int i = 0; i < 4; i++) {
+        const float *tc = *v[i];
+        float oq = 1.0f / tc[3];
+        for (int a = 0; a < 3; a++)
+            st[a][i] = a < dims ? tc[a] * oq : 0.0f;
+    }
+}
+
+/* Whether this NEAREST quad in llvmpipe's float path goes through the
+ * LINEAR code: when the quad sharing its vector (rows y, y+1 of
+ * fs_quad.tex_pair) uses LINEAR, i.e. takes the image filter that is
+ * LINEAR. */
+static bool nearest_via_linear(const fs_tex_object *t, const fs_tex_lod *lp, int dims, const fs_quad_tex *qt)
+{
+    const float (*v[4])[4];
+    for (int i = 0; i < 4; i++)
+        v[i] = &qt->tex_pair[1 + (i >> 1)][i & 1];
+    float pst[3][4];
+    project_coords(dims, v, pst);
+    lod_result other;
+    select_lod(t, lp, (const float(*)[4])pst, &other);
+    GLenum mf = t->min_filter;
+    bool min_linear = mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR;
+    return other.minified == min_linear;
+}
+
+/* One pixel's texel from the selected levels: the float path or the 8-bit
+ * one, the two levels blended for a MIPMAP_LINEAR filter. */
+static void sample_pixel(tex_fetch *f, const lod_result *lr, GLenum img_filter, bool mip_linear, bool float_path,
+                         bool via_linear, const float st[3], float tex[4])
+{
+    if (float_path) {
+        sample_level_fv(f, lr->level0, img_filter, via_linear, st, tex);
+        if (mip_linear && lr->weightf > 0.0f) {
+            float t1[4];
+            sample_level_fv(f, lr->level1, img_filter, via_linear, st, t1);
+            for (int k = 0; k < 4; k++)
+                tex[k] = lerpf(lr->weightf, tex[k], t1[k]);
+        }
+        return;
+    }
+    uint8_t v[4];
+    sample_level8(f, lr->level0, img_filter, st, v);
+    if (mip_linear && lr->weight8 > 0) {
+        uint8_t v1[4];
+        sample_level8(f, lr->level1, img_filter, st, v1);
+        for (int k = 0; k < 4; k++)
+            v[k] = (uint8_t)lerp8(lr->weight8, v[k], v1[k]);
+    }
+    for (int k = 0; k < 4; k++)
+        tex[k] = (float)v[k] * (1.0f / 255.0f);
+}
+
 /* The texels of enabled unit u for the covered pixels of a quad whose
  * coordinates for the unit are qt, into texel[pixel][u] (RGBA in [0, 1]);
- * false when the unit's texture is incomplete. */
+ * false when the unit's texture is incomplete.  The unit samples the
+ * target of highest priority that is enabled (3.8.15). */
 static bool sample_unit(fs_context *c, fs_quad *q, int u, const fs_quad_tex *qt,
                         float (*texel)[FS_MAX_TEXTURE_UNITS][4])
 {
     struct fs_texture_state *st = c->texture;
-    fs_tex_object *t = st->unit[u].bound[FS_TEX_2D];
+    fs_tex_object *t = st->unit[u].bound[fs_tex_unit_target(&st->unit[u])];
     if (!fs_tex_complete(t)) {
         /* 3.8.10: texturing is as if disabled for the unit. */
         st->quads_incomplete++;
         return false;
     }
     st->quads_sampled++;
-    float s[4], tt[4];
-    for (int i = 0; i < 4; i++) {
-        float oq = 1.0f / qt->tex[i][3];
-        s[i] = qt->tex[i][0] * oq;
-        tt[i] = qt->tex[i][1] * oq;
-    }
+    int dims = fs_tex_target_dims(t->target);
+    const float (*v[4])[4];
+    for (int i = 0; i < 4; i++)
+        v[i] = &qt->tex[i];
+    float str[3][4];
+    project_coords(dims, v, str);
     fs_tex_lod lp;
     fs_tex_lod_params(t, fs_tex_unit_lod_bias(c, u), &lp);
     lod_result lr;
-    select_lod(t, &lp, s, tt, &lr);
+    select_lod(t, &lp, (const float(*)[4])str, &lr);
     GLenum mf = t->min_filter;
     if ((mf == GL_FOOTPRINT_FRAGSIM || mf == GL_FOOTPRINT_HYBRID_FRAGSIM) && lr.minified) {
         float fp[4][4];
-        footprint_quad(c, t, q, s, tt, fp);
+        footprint_quad(c, t, q, str[0], str[1], fp);
         for (int i = 0; i < 4; i++)
             memcpy(texel[i][u], fp[i], sizeof fp[i]);
         return true;
@@ -632,56 +765,23 @@ static bool sample_unit(fs_context *c, fs_quad *q, int u, const fs_quad_tex *qt,
     }
     /* llvmpipe filters in 8-bit fixed point only with the "simple" wraps
      * REPEAT and CLAMP_TO_EDGE (gallivm lp_is_simple_wrap_mode); another
-     * wrap (CLAMP, CLAMP_TO_BORDER, MIRRORED_REPEAT) on either axis takes
-     * the float path, whatever the filter (its MIPmap blend then rounds
-     * differently, and LINEAR may reach the border). */
-    bool float_path = !fs_tex_simple_wrap(t->wrap_s) || !fs_tex_simple_wrap(t->wrap_t);
-    bool via_linear = false;
-    if (float_path && img_filter == GL_NEAREST && c->raster.tex_pair_lod && fs_tex_pair_decides(t)) {
-        /* This quad samples NEAREST; it goes through the LINEAR code when
-         * the quad sharing its vector (rows y, y+1 of fs_quad.tex_pair)
-         * uses LINEAR, i.e. takes the image filter that is LINEAR. */
-        float ps[4], pt[4];
-        for (int i = 0; i < 4; i++) {
-            const float *v = qt->tex_pair[1 + (i >> 1)][i & 1];
-            float oq = 1.0f / v[3];
-            ps[i] = v[0] * oq;
-            pt[i] = v[1] * oq;
-        }
-        lod_result other;
-        select_lod(t, &lp, ps, pt, &other);
-        bool min_linear = mf == GL_LINEAR || mf == GL_LINEAR_MIPMAP_NEAREST || mf == GL_LINEAR_MIPMAP_LINEAR;
-        via_linear = other.minified == min_linear;
-    }
+     * wrap (CLAMP, CLAMP_TO_BORDER, MIRRORED_REPEAT) on any axis the
+     * target has takes the float path, whatever the filter (its MIPmap
+     * blend then rounds differently, and LINEAR may reach the border). */
+    bool float_path = !fs_tex_simple_wraps(t);
+    bool via_linear = float_path && img_filter == GL_NEAREST && c->raster.tex_pair_lod && fs_tex_pair_decides(t) &&
+                      nearest_via_linear(t, &lp, dims, qt);
     fs_tex_reads reads;
-    tex_fetch f = {t, t->mpgrid, {0, 0, 0}, c->observer ? &reads : NULL, 0};
+    tex_fetch f = {t, t->mpgrid, {0, 0, 0}, c->observer ? &reads : NULL, 0, dims,
+                   {t->wrap_s, dims > 1 ? t->wrap_t : GL_REPEAT, dims > 2 ? t->wrap_r : GL_REPEAT}};
     if (c->observer)
         memset(reads.n, 0, sizeof reads.n);
     for (int i = 0; i < 4; i++) {
         if (!(q->mask & (1u << i)))
             continue;
-        float *tex = texel[i][u];
         f.pixel = i;
-        if (float_path) {
-            sample_level_fv(&f, lr.level0, img_filter, via_linear, s[i], tt[i], tex);
-            if (mip_linear && lr.weightf > 0.0f) {
-                float t1[4];
-                sample_level_fv(&f, lr.level1, img_filter, via_linear, s[i], tt[i], t1);
-                for (int k = 0; k < 4; k++)
-                    tex[k] = lerpf(lr.weightf, tex[k], t1[k]);
-            }
-        } else {
-            uint8_t v[4];
-            sample_level8(&f, lr.level0, img_filter, s[i], tt[i], v);
-            if (mip_linear && lr.weight8 > 0) {
-                uint8_t v1[4];
-                sample_level8(&f, lr.level1, img_filter, s[i], tt[i], v1);
-                for (int k = 0; k < 4; k++)
-                    v[k] = (uint8_t)lerp8(lr.weight8, v[k], v1[k]);
-            }
-            for (int k = 0; k < 4; k++)
-                tex[k] = (float)v[k] * (1.0f / 255.0f);
-        }
+        const float sti[3] = {str[0][i], str[1][i], str[2][i]};
+        sample_pixel(&f, &lr, img_filter, mip_linear, float_path, via_linear, sti, texel[i][u]);
     }
     if (f.mpgrid)
         fs_mpgrid_gl_work_done(f.mpgrid, &f.work);
@@ -708,7 +808,8 @@ static void texture_units(fs_context *c, fs_quad *q, const fs_quad_tex *tc)
     memcpy(primary, q->color, sizeof primary);
     FS_FOR_EACH_UNIT(u, valid) {
         const fs_tex_env *env = &st->unit[u].env;
-        GLenum base = st->unit[u].bound[FS_TEX_2D]->level[st->unit[u].bound[FS_TEX_2D]->first_level].base_format;
+        const fs_tex_object *t = st->unit[u].bound[fs_tex_unit_target(&st->unit[u])];
+        GLenum base = t->level[t->first_level].base_format;
         for (int i = 0; i < 4; i++) {
             if (!(q->mask & (1u << i)))
                 continue;

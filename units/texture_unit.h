@@ -1,9 +1,12 @@
 /*
- * The GL texture unit (GL 1.5 spec 3.8): texture objects, 2D images and
- * their MIPmap levels, sampling with the six min filters, and the texture
- * environment.  FS_MAX_TEXTURE_UNITS units (pipeline/rasterizer.h), each with
- * its binding, enable and environment, applied unit after unit (3.8.13);
- * 2D textures only.
+ * The GL texture unit (GL 1.5 spec 3.8): texture objects, 1D, 2D and 3D
+ * images and their MIPmap levels, sampling with the six min filters, and
+ * the texture environment.  FS_MAX_TEXTURE_UNITS units
+ * (pipeline/rasterizer.h), each with its bindings, enables and environment,
+ * applied unit after unit (3.8.13).  Cube maps are not modelled yet.  The
+ * MP-Grid (GL_FRAGSIM_mp_grid), the footprint filters and the cycle model's
+ * texel addresses (fs_tex_level_size, units/texture_reads.h: (level, x, y))
+ * are 2D only (units/texture_target.c).
  *
  * Where it sits: the rasterizer interpolates the texture coordinates of all
  * four pixels of a 2x2 quad (covered or not, because lambda needs the
@@ -15,7 +18,8 @@
  * lp_bld_sample*.c; read for the rules, not copied): see texture_sample.c.
  *
  * Files: texture_object.c (objects, images, parameters, environment, GL
- * errors), texture_sample.c (lambda, filters, environment arithmetic).
+ * errors), texture_target.c (targets, their priority, the 1D and 3D image
+ * commands), texture_sample.c (lambda, filters, environment arithmetic).
  */
 #ifndef FS_TEXTURE_UNIT_H
 #define FS_TEXTURE_UNIT_H
@@ -47,16 +51,20 @@ void fs_texture_enables_changed(fs_context *c);
  * attribute groups, pipeline/state.c), and setting them back. */
 uint64_t fs_texture_enables(const fs_context *c);
 void fs_texture_set_enables(fs_context *c, uint64_t bits);
-/* The name of the bound 2D texture (glGet, glPushAttrib; pipeline/state.c). */
+/* The name of the bound 2D texture (glGet, glPushAttrib; pipeline/state.c),
+ * and of the texture bound to a target enum of the active unit
+ * (GL_TEXTURE_BINDING_1D/2D/3D; 0 for an enum that names none). */
 GLuint fs_texture_binding_2d(const fs_context *c);
+GLuint fs_texture_binding(const fs_context *c, GLenum target);
 /* The texture unit's part of the texture attribute group (GL 1.5 spec
  * 6.1.14, tables 6.16-6.20), for glPushAttrib(GL_TEXTURE_BIT): each
- * unit's 2D binding, the parameters of the object bound there, its texture
- * environment, and the parameters of the default object (texture 0).  (The GL_TEXTURE_2D enable is
+ * unit's binding of each target, the parameters of the objects bound there,
+ * its texture environment, and the parameters of each target's default
+ * object (texture 0).  (The GL_TEXTURE_1D/2D/3D enables are
  * in the enable group too; pipeline/state.c restores it through
  * fs_texture_enable_flag.) */
 typedef struct fs_tex_params {
-    GLenum min_filter, mag_filter, wrap_s, wrap_t;
+    GLenum min_filter, mag_filter, wrap_s, wrap_t, wrap_r;
     float border[4], priority;
     int footprint_budget;         /* GL_FRAGSIM_footprint_filter's parameters */
     GLenum footprint_snap;
@@ -76,13 +84,15 @@ typedef struct fs_tex_env {
     float scale[2];             /* GL_RGB_SCALE, GL_ALPHA_SCALE */
     float lod_bias;             /* GL_TEXTURE_FILTER_CONTROL's bias (1.4, 3.8.8; texture_lod.c) */
 } fs_tex_env;
+/* The texture targets a unit binds (2D, 1D, 3D: units/texture_priv.h). */
+#define FS_TEX_TARGET_COUNT 3
 typedef struct fs_texture_attrib {
     struct {
-        GLuint binding_2d;
-        fs_tex_params bound;
+        GLuint binding[FS_TEX_TARGET_COUNT];
+        fs_tex_params bound[FS_TEX_TARGET_COUNT];
         fs_tex_env env;
     } unit[FS_MAX_TEXTURE_UNITS];
-    fs_tex_params default_2d;
+    fs_tex_params defaults[FS_TEX_TARGET_COUNT];
 } fs_texture_attrib;
 void fs_texture_attrib_save(const fs_context *c, fs_texture_attrib *a);
 /* 6.1.14: unit by unit, the binding is restored first, then the
