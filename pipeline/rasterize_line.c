@@ -69,6 +69,10 @@ void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
     const int W = c->fb.width, H = c->fb.height;
     const int order = r->subpixel_bits;
     const float one = (float)(1 << order);
+    if (r->line_smooth) {
+        fs_raster_line_smooth(c, va, vb); /* GL_LINE_SMOOTH: line_smooth.c */
+        return;
+    }
     /* Any width: the parallelogram's minor-axis extent is the width
      * rounded to whole pixels, at least one (llvmpipe draws wide lines
      * itself: its draw module's wide-line threshold is never reached). */
@@ -249,6 +253,7 @@ void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
     s.use_fog = r->interpolate_fog;
     s.tex_mask = r->tex_mask;
     s.zoffset = 0.0f;
+    s.aa_shade = NULL;
     line_coef(&s.z, &li, va->z, vb->z);
     s.perspective = !(va->inv_w == 1.0f && vb->inv_w == 1.0f);
     if (s.perspective)

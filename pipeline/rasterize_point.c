@@ -15,6 +15,57 @@ static inline int64_t iround(float f)
     return f >= 0.0f ? (int64_t)(f + 0.5f) : (int64_t)(f - 0.5f);
 }
 
+/* nir_lower_aapoint_fs: the distance d = s^2 + t^2 from the centre in
+ * the unit square's coordinates kills the fragment beyond 1; otherwise
+ * alpha is multiplied by (1 - d) / (1 - k) where d <= k and by 1 beyond
+ * (llvmpipe 22.3's select, measured: the inner disc, not the rim, gets the
+ * factor, which is at least 1 there and saturates at the colour
+ * conversion). */
+static void point_coverage(fs_quad *q)
+{
+    for (int i = 0; i < 4; i++) {
+        if (!(q->mask & (1u << i)))
+            continue;
+        const float *a = q->aa[i];
+        float d = a[0] * a[0] + a[1] * a[1];
+        if (a[3] < d) {
+            q->mask &= ~(1u << i);
+            continue;
+        }
+        float inv = 1.0f / (a[3] - a[2]);
+        float cov = inv * (a[3] - d);
+        float sel = a[2] >= d ? cov : a[3];
+        q->color[i][3] = q->color[i][3] * sel;
+    }
+}
+
+/* GL_POINT_SMOOTH (3.3.1) as Mesa's draw module does it for llvmpipe
+ * (draw_pipe_aapoint.c, read for the rule): a square of half side
+ * radius = size / 2 (1 for sizes up to 2) around the vertex, two triangles
+ * through the triangle setup with culling and offset off, whose corners
+ * carry (+-1, +-1, k, 1), k = (1 - 1 / radius)^2 (measured: the squared
+ * inner radius, computed as 1 - 2/r + 1/r^2); point_coverage ends the
+ * fragment shader. */
+static void raster_point_smooth(fs_context *c, const fs_rvertex *v, float x, float y, float size)
+{
+    float radius = size <= 2.0f ? 1.0f : 0.5f * size;
+    float k = 1.0f / radius;
+    k = 1.0f - 2.0f * k + k * k;
+    fs_rvertex q[4] = {*v, *v, *v, *v};
+    const float sx[4] = {-1, 1, 1, -1}, sy[4] = {-1, -1, 1, 1};
+    float aa[4][4];
+    for (int i = 0; i < 4; i++) {
+        q[i].x = sx[i] < 0 ? x - radius : x + radius;
+        q[i].y_raster = sy[i] < 0 ? y - radius : y + radius;
+        aa[i][0] = sx[i];
+        aa[i][1] = sy[i];
+        aa[i][2] = k;
+        aa[i][3] = 1.0f;
+    }
+    static const int tris[2][3] = {{0, 1, 2}, {0, 2, 3}};
+    fs_raster_quad_aa(c, q, (const float(*)[4])aa, tris, point_coverage);
+}
+
 void fs_raster_point(fs_context *c, const fs_rvertex *v)
 {
     const fs_raster_state *r = &c->raster;
@@ -32,6 +83,11 @@ void fs_raster_point(fs_context *c, const fs_rvertex *v)
         return;
     }
     c->stats.points_rasterized++;
+    if (r->point_smooth) {
+        /* The state tracker clamps the size to GL_SMOOTH_POINT_SIZE_RANGE. */
+        raster_point_smooth(c, v, x, y, size >= 1.0f ? size : 1.0f);
+        return;
+    }
 
     /* GL's legacy (non-sprite) point rule, GL 1.5 spec 3.3: the size is
      * rounded to an integer (halves down); an odd-sized point covers the
@@ -66,6 +122,7 @@ void fs_raster_point(fs_context *c, const fs_rvertex *v)
     s.use_fog = r->interpolate_fog;
     s.tex_mask = r->tex_mask;
     s.zoffset = 0.0f;
+    s.aa_shade = NULL;
     fs_plane_constant(&s.z, v->z);
     /* Perspective-correct constants are stored premultiplied by 1/w and
      * divided by the (constant) interpolated 1/w, as llvmpipe does. */

@@ -131,18 +131,19 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
  * out[4], perspective-correct like the colours (GL 1.5 spec 3.5.1 eq.
  * 3.7): for the quad's own pixels and for the rows and the neighbouring quad
  * llvmpipe's lambda also reads. */
-#define FS_TEX_AT(PLANE_AT, px, py, out)                                          \
+#define FS_PLANES4_AT(PLANE_AT, planes, px, py, out)                             \
     do {                                                                          \
         float *out_ = (out);                                                      \
         if (s->perspective) {                                                     \
             float oow_ = 1.0f / PLANE_AT(&s->w, px, py);                          \
             for (int k_ = 0; k_ < 4; k_++)                                        \
-                out_[k_] = PLANE_AT(&s->tex[u][k_], px, py) * oow_;               \
+                out_[k_] = PLANE_AT(&(planes)[k_], px, py) * oow_;                \
         } else {                                                                  \
             for (int k_ = 0; k_ < 4; k_++)                                        \
-                out_[k_] = PLANE_AT(&s->tex[u][k_], px, py);                      \
+                out_[k_] = PLANE_AT(&(planes)[k_], px, py);                       \
         }                                                                         \
     } while (0)
+#define FS_TEX_AT(PLANE_AT, px, py, out) FS_PLANES4_AT(PLANE_AT, s->tex[u], px, py, out)
 
 #define FS_EMIT_PIXELS(PLANE_AT)                                                  \
     for (int i = 0; i < 4; i++) {                                                 \
@@ -200,6 +201,16 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
                         float py = (float)fs_raster_row_to_gl(s->height, q->y - 1 + r); \
                         FS_TEX_AT(PLANE_AT, px, py, qt->tex_pair[r][j]);          \
                     }                                                             \
+        }                                                                         \
+    /* A smooth line's or point's coverage attribute: a generic varying,     \
+     * perspective-correct like the texture coordinates (fs_prim_setup.aa). */ \
+    if (s->aa_shade)                                                              \
+        for (int i = 0; i < 4; i++) {                                             \
+            if (!(m & (1u << i)))                                                 \
+                continue;                                                         \
+            float px = (float)(q->x + (i & 1));                                   \
+            float py = (float)fs_raster_row_to_gl(s->height, q->y + (i >> 1));    \
+            FS_PLANES4_AT(PLANE_AT, s->aa, px, py, q->aa[i]);                     \
         }
 
 static void emit_pixels(const fs_prim_setup *s, fs_quad *q, unsigned m, int depth_bits, bool tex_pair)
@@ -236,6 +247,8 @@ void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
         emit_pixels_fma(s, q, m, c->fb.depth_bits, c->raster.tex_pair_lod);
         if (s->use_tex)
             fs_texture_quad(c, q); /* texturing (GL 1.5 spec 3.8) precedes 4.1 */
+        if (s->aa_shade)
+            s->aa_shade(q); /* the end of llvmpipe's fragment shader */
         fs_quad_work w = fs_fragment_quad(c, q);
         FS_OBSERVE(c, quad, c, q, &w);
         return;
@@ -244,6 +257,8 @@ void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
     emit_pixels(s, q, m, c->fb.depth_bits, c->raster.tex_pair_lod);
     if (s->use_tex)
         fs_texture_quad(c, q);
+    if (s->aa_shade)
+        s->aa_shade(q);
     fs_quad_work w = fs_fragment_quad(c, q);
     FS_OBSERVE(c, quad, c, q, &w);
 }
@@ -455,12 +470,13 @@ void fs_raster_triangle_dropped(fs_context *c, const float x[3], const float y_r
     c->stats.triangles_rasterized++;
 }
 
-void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2)
+/* aa: NULL, or the coverage attribute of each vertex (fs_raster_triangle_aa). */
+static void raster_triangle(fs_context *c, const fs_rvertex *const v[3], const float (*aa)[4],
+                            void (*aa_shade)(fs_quad *q))
 {
     const fs_raster_state *r = &c->raster;
     const int W = c->fb.width, H = c->fb.height;
     const int order = r->subpixel_bits;
-    const fs_rvertex *v[3] = {v0, v1, v2};
     float px[3], py[3];
     for (int i = 0; i < 3; i++) {
         px[i] = v[i]->x;
@@ -592,11 +608,61 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
             calc_coef(&s.fog, &g, a->fog, b->fog, d->fog);
     }
 
+    s.aa_shade = aa_shade;
+    if (aa_shade)
+        for (int k = 0; k < 4; k++) {
+            const float *aa0 = aa[idx[0]], *aa1 = aa[idx[1]], *aa2 = aa[idx[2]];
+            if (s.perspective)
+                calc_coef(&s.aa[k], &g, aa0[k] * a->inv_w, aa1[k] * b->inv_w, aa2[k] * d->inv_w);
+            else
+                calc_coef(&s.aa[k], &g, aa0[k], aa1[k], aa2[k]);
+        }
+
     c->stats.triangles_rasterized++;
     if (r->reference_path)
         raster_tri_reference(c, &s, &e);
     else
         raster_tri_fast(c, &s, &e, ts);
+}
+
+void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2)
+{
+    const fs_rvertex *const v[3] = {v0, v1, v2};
+    raster_triangle(c, v, NULL, NULL);
+}
+
+void fs_raster_triangle_aa(fs_context *c, const fs_rvertex *const v[3], const float aa[3][4],
+                           void (*aa_shade)(fs_quad *q))
+{
+    /* The draw module's rasterizer state for these triangles keeps only
+     * scissor, flat shading and the pixel-centre rules: no culling, no
+     * polygon offset (draw_get_rasterizer_no_cull).  The vertices' y is in
+     * llvmpipe's frame (y_raster). */
+    fs_raster_state *r = &c->raster;
+    const fs_raster_state saved = *r;
+    r->cull_enabled = false;
+    r->offset_fill = r->offset_line = r->offset_point = false;
+    r->use_y_raster = true;
+    raster_triangle(c, v, aa, aa_shade);
+    r->cull_enabled = saved.cull_enabled;
+    r->offset_fill = saved.offset_fill;
+    r->offset_line = saved.offset_line;
+    r->offset_point = saved.offset_point;
+    r->use_y_raster = saved.use_y_raster;
+}
+
+void fs_raster_quad_aa(fs_context *c, const fs_rvertex v[4], const float aa[4][4], const int tris[2][3],
+                       void (*aa_shade)(fs_quad *q))
+{
+    for (int t = 0; t < 2; t++) {
+        const fs_rvertex *tv[3];
+        float ta[3][4];
+        for (int i = 0; i < 3; i++) {
+            tv[i] = &v[tris[t][i]];
+            memcpy(ta[i], aa[tris[t][i]], sizeof ta[i]);
+        }
+        fs_raster_triangle_aa(c, tv, (const float(*)[4])ta, aa_shade);
+    }
 }
 
 /* ---- coverage: the plain reference and the incremental fast path ---- */

@@ -88,6 +88,9 @@ typedef struct fs_quad {
      * colour's r, g, b of each covered pixel, interpolated as the colour is
      * (pipeline/color_sum.c adds it after texturing, GL 1.5 spec 3.9). */
     float color2[4][3];
+    /* Only for smooth lines and points (fs_prim_setup.aa_shade): their
+     * coverage attribute at each covered pixel. */
+    float aa[4][4];
 } fs_quad;
 
 /* Rasterizer state set by glCullFace, glFrontFace, glPolygonOffset,
@@ -105,6 +108,13 @@ typedef struct fs_raster_state {
     float offset_factor, offset_units;
     GLenum polygon_mode[2];     /* front, back: GL_FILL */
     float point_size, line_width;
+    /* GL_LINE_SMOOTH and GL_POINT_SMOOTH (3.4.4, 3.3.1): llvmpipe's
+     * coverage (line_smooth.c, rasterize_point.c). */
+    bool line_smooth, point_smooth;
+    /* GL_POLYGON_SMOOTH (3.5.6): stored only; llvmpipe draws polygons the
+     * same with it (measured on OSMesa, blending on and off: identical
+     * bytes), having no antialiased-triangle stage. */
+    bool polygon_smooth;
     int subpixel_bits;          /* from the config, default 8 */
     /* Set by texturing when a texture unit is enabled: interpolating the four
      * texture coordinates costs as much as the colour, so it is skipped

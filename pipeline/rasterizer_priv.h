@@ -37,6 +37,13 @@ typedef struct fs_prim_setup {
     unsigned tex_mask;   /* of these units (fs_raster_state.tex_mask) */
     bool front;
     int height;          /* framebuffer height, for the y flip */
+    /* Antialiased lines and points (line_smooth.c, rasterize_point.c):
+     * llvmpipe draws them as triangles carrying one more generic attribute,
+     * interpolated like a texture coordinate into fs_quad.aa, from which
+     * the primitive's coverage rule (aa_shade, after texturing) scales the
+     * fragment's alpha or kills it.  aa_shade NULL: no such attribute. */
+    fs_plane aa[4];
+    void (*aa_shade)(fs_quad *q);
 } fs_prim_setup;
 
 /* Quantises a window depth like llvmpipe's unorm depth conversion. */
@@ -45,6 +52,22 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits);
 /* Fills q->z, colours (and texture coordinates) for the pixels in q->mask,
  * counts the quad and hands it to the per-fragment operations. */
 void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q);
+
+/* A filled triangle (fs_raster_triangle's setup and coverage) whose
+ * vertices v[i] also carry the attribute aa[i] (fs_prim_setup.aa_shade):
+ * the triangles of a smooth line or point, which llvmpipe's draw module
+ * hands to the triangle setup with culling, polygon offset and stipple
+ * off (draw_get_rasterizer_no_cull). */
+void fs_raster_triangle_aa(fs_context *c, const fs_rvertex *const v[3], const float aa[3][4],
+                           void (*aa_shade)(fs_quad *q));
+
+/* The two triangles tris[0], tris[1] (indices into v and aa) of a smooth
+ * line's or point's quad, through fs_raster_triangle_aa. */
+void fs_raster_quad_aa(fs_context *c, const fs_rvertex v[4], const float aa[4][4], const int tris[2][3],
+                       void (*aa_shade)(fs_quad *q));
+
+/* A segment with GL_LINE_SMOOTH (line_smooth.c), from fs_raster_line. */
+void fs_raster_line_smooth(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb);
 
 /* Flat (constant) planes, used by points and lines whose attributes llvmpipe
  * sets up per primitive. */
