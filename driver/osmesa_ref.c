@@ -97,6 +97,15 @@ static int64_t osm_teximage_bytes(GLsizei w, GLsizei h, GLenum format, GLenum ty
     return osm_image_bytes(false, w, h, format, type);
 }
 
+/* The size OSMesa has for a pixel map (glGetPixelMap* writes that many). */
+static int osm_pixel_map_size(GLenum map)
+{
+    GLint n = 0;
+    if (map >= GL_PIXEL_MAP_I_TO_I && map <= GL_PIXEL_MAP_A_TO_A)
+        glGetIntegerv(GL_PIXEL_MAP_I_TO_I_SIZE + (map - GL_PIXEL_MAP_I_TO_I), &n);
+    return n;
+}
+
 static int64_t osm_gettex_bytes(GLenum target, GLint level, GLenum format, GLenum type)
 {
     GLint w = 0, h = 0;
@@ -147,12 +156,14 @@ static int64_t osm_gettex_bytes(GLenum target, GLint level, GLenum format, GLenu
 #define FS_OCK_OD(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLdouble))
 #define FS_OCK_OI(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLint))
 #define FS_OCK_OU(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLuint))
+#define FS_OCK_OUS(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLushort))
 #define FS_OCK_OB(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLboolean))
 #define FS_OCK_OP(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLvoid *))
 #define FS_OCHECK(k, kind, name, cnt) FS_OCK_##kind(k, name, cnt)
 #define fs_readpixels_bytes(c, w, h, f, t) osm_readpixels_bytes(w, h, f, t)
 #define fs_teximage_bytes(c, w, h, f, t) osm_teximage_bytes(w, h, f, t)
 #define fs_gettexImage_bytes(c, tg, l, f, t) osm_gettex_bytes(tg, l, f, t)
+#define fs_pixel_map_size(c, map) osm_pixel_map_size(map)
 #define FS_OCALL_V(e) e
 #define FS_OCALL_U(e) (void)(e)
 #define FS_OCALL_E(e) (void)(e)
@@ -242,6 +253,7 @@ int fs_osmesa_dispatch(fs_osmesa *o, const fs_call *in)
 #undef fs_readpixels_bytes
 #undef fs_teximage_bytes
 #undef fs_gettexImage_bytes
+#undef fs_pixel_map_size
 
 const uint8_t *fs_osmesa_color(fs_osmesa *o)
 {

@@ -21,6 +21,8 @@
 #include "raster_pos.h"
 #include "observer.h"
 #include "render_mode.h"
+#include "pixel_map.h"
+#include "accum.h"
 
 struct fs_dlist_state;      /* driver/display_list.c */
 struct fs_capture;          /* driver/capture.c */
@@ -50,6 +52,11 @@ struct fs_context {
     /* glRenderMode's GL_SELECT and GL_FEEDBACK, the name stack and their
      * buffers (GL 1.5 spec 5.2, 5.3; pipeline/render_mode.c). */
     fs_render_mode_state rmode;
+    /* glPixelTransfer and glPixelMap (GL 1.5 spec 3.6.3, table 6.24;
+     * pipeline/pixel_map.c). */
+    fs_pixel_xfer px;
+    /* The accumulation buffer (GL 1.5 spec 4.2.4; pipeline/accum.c). */
+    fs_accum_state accum;
 
     GLint pack_alignment, unpack_alignment, unpack_row_length, pack_row_length;
     /* The rest of the pixel-store state (GL 1.5 spec table 3.1 / 4.5; all

@@ -360,7 +360,9 @@ static void unpack_image(fs_context *c, fs_tex_image *img, int x0, int y0, int w
         return;
     for (int y = 0; y < h; y++) {
         uint8_t *dst = img->texels + ((size_t)(y0 + y) * (size_t)img->width + (size_t)x0) * 4;
-        fs_pixel_unpack_rgba8(&l, pixels, 0, y, 0, w, dst);
+        /* The pixel transfer operations of 3.6.5 (3.8.1: the image is
+         * taken as by glDrawPixels up to the final conversion). */
+        fs_pixel_unpack_transfer_rgba8(c, &l, pixels, 0, y, 0, w, dst);
         if (img->base_format != GL_RGBA)
             for (int x = 0; x < w; x++) {
                 uint8_t rgba[4];
@@ -523,10 +525,6 @@ void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint interna
         fs_error(c, err);
         return;
     }
-    if (format == GL_COLOR_INDEX) {
-        fs_unsupported(c, "glTexImage2D(GL_COLOR_INDEX)");
-        return;
-    }
     /* A border (3.8.1) is dropped, as Mesa does for gallium, which has no
      * texture borders: the level is the inner image (measured on OSMesa:
      * TEXTURE_WIDTH w - 2, TEXTURE_BORDER 0, sampling never reads it). */
@@ -575,10 +573,6 @@ void fs_exec_TexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoff
         return;
     if (err != GL_NO_ERROR) {
         fs_error(c, err);
-        return;
-    }
-    if (format == GL_COLOR_INDEX) {
-        fs_unsupported(c, "glTexSubImage2D(GL_COLOR_INDEX)");
         return;
     }
     if (width > 0 && height > 0 && pixels)
