@@ -272,7 +272,7 @@ static int is_array_kind(int k)
 {
     return k == FS_K_AF || k == FS_K_AD || k == FS_K_AI || k == FS_K_AU || k == FS_K_AUB ||
            k == FS_K_ABY || k == FS_K_AS || k == FS_K_AUS || k == FS_K_OF || k == FS_K_OD ||
-           k == FS_K_OI || k == FS_K_OU || k == FS_K_OB;
+           k == FS_K_OI || k == FS_K_OU || k == FS_K_OUS || k == FS_K_OB;
 }
 
 /* One array element of kind k at index i of p. */
@@ -295,7 +295,7 @@ static fs_tval array_elem(int k, const void *p, size_t i)
         t.type = FS_TV_SINT; t.i = ((const GLbyte *)p)[i]; break;
     case FS_K_AS:
         t.type = FS_TV_SINT; t.i = ((const GLshort *)p)[i]; break;
-    case FS_K_AUS:
+    case FS_K_AUS: case FS_K_OUS:
         t.type = FS_TV_UINT; t.u = ((const GLushort *)p)[i]; break;
     case FS_K_OB:
         t = bool_val(((const GLboolean *)p)[i]); break;
@@ -420,7 +420,7 @@ void fs_capture_call(fs_context *c, const fs_call *call)
     for (unsigned i = 0; i < info->nargs; i++) {
         int k = info->kinds[i];
         const fs_arg *a = &call->a[i];
-        if (k == FS_K_OV || k == FS_K_OF || k == FS_K_OD || k == FS_K_OI || k == FS_K_OU || k == FS_K_OB)
+        if (k == FS_K_OV || k == FS_K_OF || k == FS_K_OD || k == FS_K_OI || k == FS_K_OU || k == FS_K_OUS || k == FS_K_OB)
             tc.out_args |= 1ull << i;
         if (is_array_kind(k)) {
             memset(&args[i], 0, sizeof args[i]);

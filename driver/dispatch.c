@@ -134,6 +134,7 @@ static uint32_t count_u32(int64_t n)
 #define FS_PK_OD FS_PK_OUT
 #define FS_PK_OI FS_PK_OUT
 #define FS_PK_OU FS_PK_OUT
+#define FS_PK_OUS FS_PK_OUT
 #define FS_PK_OB FS_PK_OUT
 #define FS_PK_IP FS_PK_INT
 #define FS_PK_OP FS_PK_OUT
@@ -266,6 +267,7 @@ void fs_driver_state_free(fs_context *c)
 #define FS_CK_OD FS_CK_OUT
 #define FS_CK_OI FS_CK_OUT
 #define FS_CK_OU FS_CK_OUT
+#define FS_CK_OUS FS_CK_OUT
 #define FS_CK_OB FS_CK_OUT
 #define FS_CK_IP FS_CK_NONE
 #define FS_CK_OP FS_CK_OUT
@@ -546,6 +548,7 @@ static int dispatch_call(fs_context *c, fs_call *call)
 #define FS_VCK_OD FS_VCK_E
 #define FS_VCK_OI FS_VCK_E
 #define FS_VCK_OU FS_VCK_E
+#define FS_VCK_OUS FS_VCK_E
 #define FS_VCK_OB FS_VCK_E
 #define FS_VCK_IP FS_VCK_E
 #define FS_VCK_OP FS_VCK_E

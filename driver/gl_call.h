@@ -22,7 +22,7 @@ typedef struct fs_context fs_context;
     X(V)   X(E)   X(BM)  X(B)   X(I)   X(U)   X(SZ)  X(UB)  X(BY)  X(S)  X(US) \
     X(F)   X(D)   X(CF)  X(CD)  \
     X(AF)  X(AD)  X(AI)  X(AU)  X(AUB) X(ABY) X(AS)  X(AUS) \
-    X(BLOB) X(CPTR) X(OV) X(OF) X(OD) X(OI) X(OU) X(OB) X(STR) \
+    X(BLOB) X(CPTR) X(OV) X(OF) X(OD) X(OI) X(OU) X(OUS) X(OB) X(STR) \
     X(IP) X(OP) X(P)
 
 enum fs_kind {
@@ -63,6 +63,7 @@ enum fs_kind {
 #define FS_CT_OD GLdouble *
 #define FS_CT_OI GLint *
 #define FS_CT_OU GLuint *
+#define FS_CT_OUS GLushort * /* glGetPixelMapusv */
 #define FS_CT_OB GLboolean *
 #define FS_CT_STR const GLubyte *
 /* GL 1.5's GLintptr and GLsizeiptr (the same C type), glGetBufferPointerv's
@@ -211,6 +212,9 @@ int fs_fog_param_count(GLenum pname);
 int fs_material_param_count(GLenum pname);
 int fs_get_count(GLenum pname);
 int64_t fs_readpixels_bytes(fs_context *c, GLsizei w, GLsizei h, GLenum format, GLenum type);
+/* Elements glPixelMap* reads and glGetPixelMap* writes (pipeline/pixel_map.h). */
+int fs_pixel_map_count(GLsizei mapsize);
+int fs_pixel_map_size(const fs_context *c, GLenum map);
 int fs_type_size(GLenum type); /* bytes of GL_FLOAT, GL_UNSIGNED_BYTE, ...; 0 if unknown */
 /* Bytes per element of an array kind (BLOB: 1); 0 for kinds that are not arrays. */
 size_t fs_kind_elem_size(int kind);

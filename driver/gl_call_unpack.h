@@ -40,6 +40,7 @@
 #define FS_UP_OF FS_UP_OUT
 #define FS_UP_OD FS_UP_OUT
 #define FS_UP_OI FS_UP_OUT
+#define FS_UP_OUS FS_UP_OUT
 #define FS_UP_OU FS_UP_OUT
 #define FS_UP_OB FS_UP_OUT
 #define FS_UP_IP FS_UP_INT
@@ -52,6 +53,7 @@
 #define FS_ESIZE_OI sizeof(GLint)
 #define FS_ESIZE_OU sizeof(GLuint)
 #define FS_ESIZE_OB sizeof(GLboolean)
+#define FS_ESIZE_OUS sizeof(GLushort)
 #define FS_ESIZE_OP sizeof(GLvoid *)
 #define FS_ESIZE_IP 0
 #define FS_ESIZE_AF 0

@@ -103,6 +103,15 @@ static int64_t osm_teximage_bytes(GLsizei w, GLsizei h, GLenum format, GLenum ty
     return osm_image_bytes(false, w, h, format, type);
 }
 
+/* The size OSMesa has for a pixel map (glGetPixelMap* writes that many). */
+static int osm_pixel_map_size(GLenum map)
+{
+    GLint n = 0;
+    if (map >= GL_PIXEL_MAP_I_TO_I && map <= GL_PIXEL_MAP_A_TO_A)
+        glGetIntegerv(GL_PIXEL_MAP_I_TO_I_SIZE + (map - GL_PIXEL_MAP_I_TO_I), &n);
+    return n;
+}
+
 static int64_t osm_gettex_bytes(GLenum target, GLint level, GLenum format, GLenum type)
 {
     GLint w = 0, h = 0, d = 0;
@@ -172,6 +181,7 @@ static int osm_getmap_count(GLenum target, GLenum query)
 #define FS_OCK_OD(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLdouble))
 #define FS_OCK_OI(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLint))
 #define FS_OCK_OU(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLuint))
+#define FS_OCK_OUS(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLushort))
 #define FS_OCK_OB(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLboolean))
 #define FS_OCK_OP(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLvoid *))
 #define FS_OCHECK(k, kind, name, cnt) FS_OCK_##kind(k, name, cnt)
@@ -180,6 +190,7 @@ static int osm_getmap_count(GLenum target, GLenum query)
 #define fs_teximage_nd_bytes(c, n, w, h, d, f, t) osm_image_nd_bytes(false, n, w, h, d, f, t)
 #define fs_gettexImage_bytes(c, tg, l, f, t) osm_gettex_bytes(tg, l, f, t)
 #define fs_getmap_count(c, tg, q) osm_getmap_count(tg, q)
+#define fs_pixel_map_size(c, map) osm_pixel_map_size(map)
 #define FS_OCALL_V(e) e
 #define FS_OCALL_U(e) (void)(e)
 #define FS_OCALL_E(e) (void)(e)
@@ -271,6 +282,7 @@ int fs_osmesa_dispatch(fs_osmesa *o, const fs_call *in)
 #undef fs_teximage_nd_bytes
 #undef fs_gettexImage_bytes
 #undef fs_getmap_count
+#undef fs_pixel_map_size
 
 const uint8_t *fs_osmesa_color(fs_osmesa *o)
 {

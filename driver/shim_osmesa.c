@@ -241,7 +241,7 @@ void fs_shim_end(enum fs_cmd cmd)
  * or none.  The model always has a depth buffer: with depthBits 0 it keeps a
  * 24-bit one, so the depth test still tests where OSMesa's would pass (see
  * README: programs that enable GL_DEPTH_TEST without a depth buffer differ). */
-static int make_config(struct osmesa_context *o, GLint depth, GLint stencil)
+static int make_config(struct osmesa_context *o, GLint depth, GLint stencil, GLint accum)
 {
     fs_run_config_defaults(&o->cfg);
     const char *ini = getenv("FRAGSIM_CONFIG");
@@ -253,6 +253,8 @@ static int make_config(struct osmesa_context *o, GLint depth, GLint stencil)
     o->has_depth = depth > 0;
     o->cfg.gl.framebuffer_depth_bits = depth <= 0 || stencil > 0 || depth > 16 ? 24 : 16;
     o->cfg.gl.framebuffer_stencil_bits = stencil > 0 ? 8 : 0;
+    /* llvmpipe gives 16 bits a component for any accumBits above 0. */
+    o->cfg.gl.framebuffer_accum_bits = accum > 0 ? 16 : 0;
     if (fs_run_config_check(&o->cfg, err, sizeof err) != 0) {
         shim_message("FRAGSIM_CONFIG", err);
         return -1;
@@ -263,9 +265,7 @@ static int make_config(struct osmesa_context *o, GLint depth, GLint stencil)
 OSMesaContext GLAPIENTRY OSMesaCreateContextExt(GLenum format, GLint depthBits, GLint stencilBits,
                                                 GLint accumBits, OSMesaContext sharelist)
 {
-    /* No accumulation buffer in the model, and no display lists shared
-     * between contexts: accumBits and sharelist are ignored. */
-    (void)accumBits;
+    /* No display lists shared between contexts: sharelist is ignored. */
     (void)sharelist;
     /* OSMESA_RGB_565 and OSMESA_COLOR_INDEX are not modelled. */
     if (format != OSMESA_RGBA && format != OSMESA_BGRA && format != OSMESA_ARGB &&
@@ -274,7 +274,7 @@ OSMesaContext GLAPIENTRY OSMesaCreateContextExt(GLenum format, GLint depthBits, 
     struct osmesa_context *o = calloc(1, sizeof *o);
     if (!o)
         return NULL;
-    if (make_config(o, depthBits, stencilBits) != 0) {
+    if (make_config(o, depthBits, stencilBits, accumBits) != 0) {
         free(o);
         return NULL;
     }

@@ -23,9 +23,9 @@ void fs_exec_ClearStencil(fs_context *c, GLint s)
     c->frag.clear_stencil = s;
 }
 
-/* 4.2.3: the accumulation buffer's clear colour, clamped to [-1, 1], and
- * the colour index clear value.  The window has neither buffer (0
- * accumulation and index bits), so they only answer glGet. */
+/* 4.2.3: the accumulation buffer's clear colour, clamped to [-1, 1]
+ * (pipeline/accum.c clears with it), and the colour index clear value,
+ * which only answers glGet (no colour index mode). */
 void fs_exec_ClearAccum(fs_context *c, GLfloat red, GLfloat green, GLfloat blue, GLfloat alpha)
 {
     const float v[4] = {red, green, blue, alpha};
@@ -73,6 +73,8 @@ void fs_exec_Clear(fs_context *c, GLbitfield mask)
     const fs_fragment_state *f = &c->frag;
     size_t w = (size_t)fb->width;
     FS_OBSERVE(c, clear, c, mask, x1 - x0, y1 - y0);
+    if (mask & GL_ACCUM_BUFFER_BIT)
+        fs_accum_clear(c, x0, y0, x1, y1);
 
     bool color = (mask & GL_COLOR_BUFFER_BIT) && c->draw_buffer != GL_NONE && /* 4.2.1 */
                  (f->color_mask[0] || f->color_mask[1] || f->color_mask[2] || f->color_mask[3]);

@@ -25,6 +25,8 @@ fs_context *fs_context_create(const fs_config *cfg, int width, int height)
     fs_vertex_stage_init(c);
     fs_render_mode_init(c);
     fs_state_init(c); /* the initial values of GL 1.5 spec tables 6.5-6.32 */
+    for (int k = 0; k < 4; k++) /* 16 bits a component, or no buffer (pipeline/accum.h) */
+        c->accum.bits[k] = c->cfg.framebuffer_accum_bits > 0 ? 16 : 0;
     if (fs_texture_init(c) != 0) {
         fs_context_destroy(c);
         return NULL;
@@ -55,6 +57,7 @@ void fs_context_destroy(fs_context *c)
     if (c->driver_free)
         c->driver_free(c);
     fs_state_free(c);
+    fs_accum_free(c);
     fs_occlusion_free(c);
     fs_texture_free(c);
     fs_eval_free(c);

@@ -22,6 +22,8 @@
 #include "observer.h"
 #include "render_mode.h"
 #include "evaluator.h"
+#include "pixel_map.h"
+#include "accum.h"
 
 struct fs_dlist_state;      /* driver/display_list.c */
 struct fs_capture;          /* driver/capture.c */
@@ -56,6 +58,11 @@ struct fs_context {
      * 6.26) behind eval_maps, made at first use. */
     fs_eval_state eval;
     struct fs_eval_maps *eval_maps;
+    /* glPixelTransfer and glPixelMap (GL 1.5 spec 3.6.3, table 6.24;
+     * pipeline/pixel_map.c). */
+    fs_pixel_xfer px;
+    /* The accumulation buffer (GL 1.5 spec 4.2.4; pipeline/accum.c). */
+    fs_accum_state accum;
 
     GLint pack_alignment, unpack_alignment, unpack_row_length, pack_row_length;
     /* The rest of the pixel-store state (GL 1.5 spec table 3.1 / 4.5; all

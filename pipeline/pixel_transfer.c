@@ -375,44 +375,125 @@ static int format_order(GLenum format, int idx[4])
 
 /* ---- unpacking ---- */
 
-void fs_pixel_unpack_rgba8(const fs_pixel_layout *l, const void *pixels, int64_t z, int64_t y, int64_t x0,
-                           int64_t n, uint8_t *rgba)
+/* The elements of one group at src as raw values with their widths: a
+ * packed type's components (bits[k] their bits), else the format's
+ * elements of the type (bits[k] 0). */
+static void decode_group(const fs_pixel_layout *l, const packed_type *p, int nc, const uint8_t *src, uint32_t raw[4],
+                         int bits[4])
+{
+    if (p->bytes) {
+        uint32_t w = load(src, p->bytes, l->swap_bytes);
+        int shift = p->rev ? 0 : p->bytes * 8;
+        for (int k = 0; k < p->n; k++) {
+            int b = p->bits[k];
+            if (!p->rev)
+                shift -= b;
+            raw[k] = (w >> shift) & max_of(b);
+            bits[k] = b;
+            if (p->rev)
+                shift += b;
+        }
+        return;
+    }
+    for (int k = 0; k < nc; k++) {
+        raw[k] = load(src + k * l->elem_bytes, l->elem_bytes, l->swap_bytes);
+        bits[k] = 0;
+    }
+}
+
+/* Walks the n groups of a colour image from group x0 of row y of image z,
+ * calling put for each with the group's raw elements (see decode_group)
+ * and the RGBA index of each element.  False for a format that is not a
+ * colour format. */
+typedef void (*put_group_fn)(const fs_pixel_layout *l, const uint32_t raw[4], const int bits[4], const int idx[4],
+                             int nc, void *out, int64_t i);
+
+static bool each_group(const fs_pixel_layout *l, const void *pixels, int64_t z, int64_t y, int64_t x0, int64_t n,
+                       put_group_fn put, void *out)
 {
     int idx[4];
     int nc = format_order(l->format, idx);
     if (nc == 0 || n <= 0)
-        return;
+        return false;
     const uint8_t *src = group_at(l, pixels, z, y, x0);
-    if (l->format == GL_RGBA && l->type == GL_UNSIGNED_BYTE) {
-        memcpy(rgba, src, (size_t)n * 4);
+    packed_type p = packed_of(l->type);
+    for (int64_t i = 0; i < n; i++, src += l->group_bytes) {
+        uint32_t raw[4];
+        int bits[4];
+        decode_group(l, &p, nc, src, raw, bits);
+        put(l, raw, bits, idx, nc, out, i);
+    }
+    return true;
+}
+
+static void put_rgba8(const fs_pixel_layout *l, const uint32_t raw[4], const int bits[4], const int idx[4], int nc,
+                      void *out, int64_t i)
+{
+    uint8_t *rgba = (uint8_t *)out + 4 * i;
+    rgba[0] = rgba[1] = rgba[2] = 0;
+    rgba[3] = 255;
+    for (int k = 0; k < nc; k++)
+        rgba[idx[k]] = bits[k] ? unorm_to_8(raw[k], bits[k]) : elem_to_8(raw[k], l->type);
+    if (l->format == GL_LUMINANCE || l->format == GL_LUMINANCE_ALPHA)
+        rgba[1] = rgba[2] = rgba[0];
+}
+
+void fs_pixel_unpack_rgba8(const fs_pixel_layout *l, const void *pixels, int64_t z, int64_t y, int64_t x0,
+                           int64_t n, uint8_t *rgba)
+{
+    if (l->format == GL_RGBA && l->type == GL_UNSIGNED_BYTE && n > 0) {
+        memcpy(rgba, group_at(l, pixels, z, y, x0), (size_t)n * 4);
         return;
     }
-    packed_type p = packed_of(l->type);
-    bool lum = l->format == GL_LUMINANCE || l->format == GL_LUMINANCE_ALPHA;
-    for (int64_t i = 0; i < n; i++, src += l->group_bytes, rgba += 4) {
-        uint8_t e[4];
-        if (p.bytes) {
-            uint32_t w = load(src, p.bytes, l->swap_bytes);
-            int shift = p.rev ? 0 : p.bytes * 8;
-            for (int k = 0; k < p.n; k++) {
-                int b = p.bits[k];
-                if (!p.rev)
-                    shift -= b;
-                e[k] = unorm_to_8((w >> shift) & max_of(b), b);
-                if (p.rev)
-                    shift += b;
-            }
-        } else {
-            for (int k = 0; k < nc; k++)
-                e[k] = elem_to_8(load(src + k * l->elem_bytes, l->elem_bytes, l->swap_bytes), l->type);
-        }
-        rgba[0] = rgba[1] = rgba[2] = 0;
-        rgba[3] = 255;
-        for (int k = 0; k < nc; k++)
-            rgba[idx[k]] = e[k];
-        if (lum)
-            rgba[1] = rgba[2] = rgba[0];
+    each_group(l, pixels, z, y, x0, n, put_rgba8, rgba);
+}
+
+/* One element of an unpacked type as a float: c times the float
+ * 1 / (2^b - 1) for the unsigned types (table 2.9 as Mesa computes it;
+ * measured: c / 255 differs from llvmpipe near ties), the signed ones c
+ * times 1 / (2^(b-1) - 1) but at least -1 (GL 4.2's rule, which Mesa
+ * applies); floats as they are. */
+static float unorm_to_float(uint32_t raw, int b) { return (float)raw * (1.0f / (float)max_of(b)); }
+
+static float snorm_to_float(int32_t raw, int b)
+{
+    float f = (float)raw * (1.0f / (float)max_of(b - 1));
+    return f < -1.0f ? -1.0f : f;
+}
+
+static float elem_to_float(uint32_t raw, GLenum type)
+{
+    switch (type) {
+    case GL_UNSIGNED_BYTE: return unorm_to_float(raw, 8);
+    case GL_BYTE: return snorm_to_float((int8_t)raw, 8);
+    case GL_UNSIGNED_SHORT: return unorm_to_float(raw, 16);
+    case GL_SHORT: return snorm_to_float((int16_t)raw, 16);
+    case GL_UNSIGNED_INT: return unorm_to_float(raw, 32);
+    case GL_INT: return snorm_to_float((int32_t)raw, 32);
+    default: {
+        float f;
+        memcpy(&f, &raw, 4);
+        return f;
     }
+    }
+}
+
+static void put_rgbaf(const fs_pixel_layout *l, const uint32_t raw[4], const int bits[4], const int idx[4], int nc,
+                      void *out, int64_t i)
+{
+    float *rgba = (float *)out + 4 * i;
+    rgba[0] = rgba[1] = rgba[2] = 0.0f;
+    rgba[3] = 1.0f;
+    for (int k = 0; k < nc; k++)
+        rgba[idx[k]] = bits[k] ? unorm_to_float(raw[k], bits[k]) : elem_to_float(raw[k], l->type);
+    if (l->format == GL_LUMINANCE || l->format == GL_LUMINANCE_ALPHA)
+        rgba[1] = rgba[2] = rgba[0];
+}
+
+void fs_pixel_unpack_rgbaf(const fs_pixel_layout *l, const void *pixels, int64_t z, int64_t y, int64_t x0, int64_t n,
+                           float *rgba)
+{
+    each_group(l, pixels, z, y, x0, n, put_rgbaf, rgba);
 }
 
 void fs_pixel_unpack_index(const fs_pixel_layout *l, const void *pixels, int64_t z, int64_t y, int64_t x0,
@@ -438,7 +519,10 @@ void fs_pixel_unpack_index(const fs_pixel_layout *l, const void *pixels, int64_t
         case GL_FLOAT: {
             float f;
             memcpy(&f, &raw, 4);
-            index[i] = f > 0.0f ? (f < 4294967040.0f ? (uint32_t)f : 0xffffffffu) : 0u;
+            /* Truncated toward zero and taken modulo 2^32, so that a
+             * negative index wraps (measured with COLOR_INDEX textures);
+             * beyond 2^63 (and NaN) 0. */
+            index[i] = f > -9.2e18f && f < 9.2e18f ? (uint32_t)(uint64_t)(int64_t)f : 0u;
             break;
         }
         default: index[i] = raw; break;

@@ -99,9 +99,16 @@ int64_t fs_pixel_image_bytes(const fs_pixel_store *ps, int dims, int64_t width, 
 void fs_pixel_unpack_rgba8(const fs_pixel_layout *l, const void *pixels, int64_t z, int64_t y, int64_t x0,
                            int64_t n, uint8_t *rgba);
 
+/* The same groups as floats, unclamped, for the pixel transfer operations
+ * (pipeline/pixel_map.h): unsigned normalized elements c / (2^b - 1),
+ * signed ones c / (2^(b-1) - 1) but at least -1, floats as they are. */
+void fs_pixel_unpack_rgbaf(const fs_pixel_layout *l, const void *pixels, int64_t z, int64_t y, int64_t x0,
+                           int64_t n, float *rgba);
+
 /* Groups of a STENCIL_INDEX or COLOR_INDEX image as indices (3.6.4): the
  * integer types as integers (signed ones sign-extended), FLOAT truncated
- * toward zero and clamped to [0, 2^32 - 1], BITMAP one bit each (bit 7 of
+ * toward zero modulo 2^32 (a negative index wraps, as in llvmpipe's
+ * COLOR_INDEX texture uploads), BITMAP one bit each (bit 7 of
  * a byte first unless LSB first).  Groups of a DEPTH_COMPONENT image as
  * floats in [0, 1] by table 2.9 (unsigned c / (2^b - 1), signed
  * (2c + 1) / (2^b - 1), floats clamped).  For glDrawPixels; not yet

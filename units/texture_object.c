@@ -380,7 +380,9 @@ static void unpack_image(fs_context *c, fs_tex_image *img, int dims, const int o
     for (int z = 0; z < d; z++)
         for (int y = 0; y < h; y++) {
             uint8_t *dst = texel_addr(img, off[0], off[1] + y, off[2] + z);
-            fs_pixel_unpack_rgba8(&l, pixels, z, y, 0, w, dst);
+            /* The pixel transfer operations of 3.6.5 (3.8.1: the image is
+             * taken as by glDrawPixels up to the final conversion). */
+            fs_pixel_unpack_transfer_rgba8(c, &l, pixels, z, y, 0, w, dst);
             if (img->base_format != GL_RGBA)
                 for (int x = 0; x < w; x++) {
                     uint8_t rgba[4];
@@ -566,8 +568,6 @@ static bool image_target(fs_context *c, GLenum target, int dims, bool proxy_ok, 
 void fs_tex_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLint internalformat, GLsizei w, GLsizei h,
                      GLsizei d, GLint border, GLenum format, GLenum type, const GLvoid *pixels)
 {
-    static const char *const color_index[3] = {"glTexImage1D(GL_COLOR_INDEX)", "glTexImage2D(GL_COLOR_INDEX)",
-                                               "glTexImage3D(GL_COLOR_INDEX)"};
     fs_tex_target_info ti;
     if (!image_target(c, target, dims, true, &ti))
         return;
@@ -579,10 +579,6 @@ void fs_tex_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLint 
         return;
     if (err != GL_NO_ERROR) {
         fs_error(c, err);
-        return;
-    }
-    if (format == GL_COLOR_INDEX) {
-        fs_unsupported(c, color_index[dims - 1]);
         return;
     }
     /* A border (3.8.1) is dropped, as Mesa does for gallium, which has no
@@ -633,9 +629,6 @@ static fs_tex_image *subimage_target(fs_context *c, const fs_tex_target_info *ti
 void fs_tex_subimage_nd(fs_context *c, int dims, GLenum target, GLint level, const GLint off[3], GLsizei w,
                         GLsizei h, GLsizei d, GLenum format, GLenum type, const GLvoid *pixels)
 {
-    static const char *const color_index[3] = {"glTexSubImage1D(GL_COLOR_INDEX)",
-                                               "glTexSubImage2D(GL_COLOR_INDEX)",
-                                               "glTexSubImage3D(GL_COLOR_INDEX)"};
     fs_tex_target_info ti;
     if (!image_target(c, target, dims, false, &ti))
         return;
@@ -650,10 +643,6 @@ void fs_tex_subimage_nd(fs_context *c, int dims, GLenum target, GLint level, con
         return;
     if (err != GL_NO_ERROR) {
         fs_error(c, err);
-        return;
-    }
-    if (format == GL_COLOR_INDEX) {
-        fs_unsupported(c, color_index[dims - 1]);
         return;
     }
     if (w > 0 && h > 0 && d > 0 && pixels)
