@@ -130,7 +130,8 @@ static uint64_t draw_vertex_count(const fs_call *call)
             return 0;
         return (uint64_t)end + 1;
     }
-    case FS_CMD_DrawElements: {
+    case FS_CMD_DrawElements:
+    case FS_CMD_MultiDrawArrays: {
         int64_t lo, hi; /* apitrace: the highest index + 1 */
         return fs_draw_vertex_range(call, &lo, &hi) ? (uint64_t)hi + 1 : 0;
     }

@@ -72,6 +72,22 @@ bool fs_draw_vertex_range(const fs_call *call, int64_t *lo, int64_t *hi)
         *lo = call->a[1].i;
         *hi = call->a[1].i + call->a[2].i - 1;
         return *lo >= 0 && *hi >= *lo;
+    case FS_CMD_MultiDrawArrays: {
+        /* The union of the draws' ranges (GL 1.4: one glDrawArrays each). */
+        const GLint *first = call->a[1].p, *count = call->a[2].p;
+        int64_t n = call->a[3].i;
+        if (!first || !count || n <= 0 || call->a[1].count < n || call->a[2].count < n)
+            return false;
+        *lo = INT64_MAX;
+        *hi = -1;
+        for (int64_t i = 0; i < n; i++) {
+            if (first[i] < 0 || count[i] <= 0)
+                continue;
+            *lo = first[i] < *lo ? first[i] : *lo;
+            *hi = (int64_t)first[i] + count[i] - 1 > *hi ? (int64_t)first[i] + count[i] - 1 : *hi;
+        }
+        return *hi >= *lo;
+    }
     case FS_CMD_DrawElements:
     case FS_CMD_DrawRangeElements: {
         int ci = call->cmd == FS_CMD_DrawElements ? 1 : 3;

@@ -9,7 +9,9 @@
  * float arithmetic of new vertices (x_w = x_c * (1/w_c) * scale + translate,
  * unfused, while unclipped vertices keep the transform's fused result)
  * follow Mesa's draw module so that clipped edges land on the same
- * sub-pixel positions.  Lines are clipped by z only; their x/y extent is
+ * sub-pixel positions.  The enabled user clip planes (2.11, clip_plane.c)
+ * come after the six, in clip space, in the order of their numbers.
+ * Lines are clipped by z and the user planes only; their x/y extent is
  * bounded by the window (guard band, as llvmpipe does), except in selection
  * and feedback (pipeline/render_mode.c), whose lines are clipped by all six.  Points are
  * dropped when their vertex is outside any plane (primitive.c).
@@ -187,7 +189,9 @@ void fs_emit_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
     emit3(c, s, &t, drawn_edges(edges));
 }
 
-#define MAX_CLIPPED 16
+/* A triangle clipped by the six view-volume planes and the eight user
+ * planes has at most 3 + 14 vertices. */
+#define MAX_CLIPPED 32
 
 /* Emits the clipped polygon in[0..n-1] as a fan with the first vertex
  * last, as Mesa's clipper does for the last-vertex convention.  Edge k
@@ -233,7 +237,8 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
     while (mask && n >= 3) {
         int plane = __builtin_ctz(mask);
         mask &= mask - 1;
-        const float *pl = planes[plane];
+        const bool user = plane >= FS_CLIP_USER_BIT;
+        const float *pl = user ? s->ucp[plane - FS_CLIP_USER_BIT] : planes[plane];
         cvert *prev = in[0];
         float dp_prev = dot4(prev->clip, pl);
         if (!isfinite(dp_prev)) {
@@ -266,7 +271,10 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
                  * edge (GL 1.5 spec 2.12 keeps edge flags on the original
                  * edges only): the vertex going out starts it with its
                  * flag clear; one coming back in continues the clipped
-                 * edge with the outside vertex's flag (Mesa's clipper). */
+                 * edge with the outside vertex's flag (Mesa's clipper).
+                 * Along a user plane llvmpipe draws the edge (its draw
+                 * module does as NVIDIA's drivers do): the vertex going
+                 * out starts a boundary edge with its flag set. */
                 eout[outn] = ein[i - 1];
                 out[outn++] = nv;
                 float denom = dp - dp_prev;
@@ -276,7 +284,9 @@ void fs_clip_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
                         interp(s, nv, dp / denom, cur, prev, two);
                     else
                         interp(s, nv, -dp_prev / denom, prev, cur, two);
-                    nv->edge = false;
+                    nv->edge = user;
+                    if (user)
+                        eout[outn - 1] = true;
                 } else {
                     if (-dp_prev < dp)
                         interp(s, nv, -dp_prev / denom, prev, cur, two);
@@ -363,12 +373,14 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
     }
     if (v0->mask & v1->mask)
         return;
-    unsigned zm = all_planes ? m : m & 0x30u;
+    /* z and the user planes (bits 4 up); x/y too in selection and feedback. */
+    unsigned zm = all_planes ? m : m & ~0xfu;
     float t0 = 0.0f, t1 = 0.0f;
     while (zm) {
         int plane = __builtin_ctz(zm);
         zm &= zm - 1;
-        float dp0 = dot4(v0->clip, planes[plane]), dp1 = dot4(v1->clip, planes[plane]);
+        const float *pl = plane >= FS_CLIP_USER_BIT ? s->ucp[plane - FS_CLIP_USER_BIT] : planes[plane];
+        float dp0 = dot4(v0->clip, pl), dp1 = dot4(v1->clip, pl);
         if (!isfinite(dp0) || !isfinite(dp1))
             return;
         if (dp1 < 0.0f) {

@@ -1,6 +1,7 @@
 /*
- * Client vertex arrays (GL 1.5 spec 2.8): the array pointers and
- * ArrayElement, DrawArrays, DrawElements, DrawRangeElements; and the
+ * Client vertex arrays (GL 1.5 spec 2.8): the array pointers (and
+ * glGetPointerv, 6.1.11) and ArrayElement, DrawArrays, MultiDrawArrays,
+ * DrawElements, DrawRangeElements; and the
  * per-vertex transformation shared with immediate mode (2.10-2.11):
  * clip = (P * M) * obj in float, the order Mesa's fixed-function vertex
  * program uses (measured against OSMesa feedback: a plain multiply-add
@@ -173,13 +174,52 @@ static void client_state(fs_context *c, GLenum array, bool on)
     a->enabled = on;
 }
 
+/* GL 1.5 spec 6.1.11: each array's pointer as it was given (an offset when
+ * a buffer object was bound), the texture coordinates of the client active
+ * unit; the selection and feedback buffers (5.2, 5.3). */
+void fs_exec_GetPointerv(fs_context *c, GLenum pname, GLvoid **params)
+{
+    GLenum array;
+    switch (pname) {
+    case GL_VERTEX_ARRAY_POINTER: array = GL_VERTEX_ARRAY; break;
+    case GL_NORMAL_ARRAY_POINTER: array = GL_NORMAL_ARRAY; break;
+    case GL_COLOR_ARRAY_POINTER: array = GL_COLOR_ARRAY; break;
+    case GL_TEXTURE_COORD_ARRAY_POINTER: array = GL_TEXTURE_COORD_ARRAY; break;
+    case GL_SECONDARY_COLOR_ARRAY_POINTER: array = GL_SECONDARY_COLOR_ARRAY; break;
+    case GL_FOG_COORDINATE_ARRAY_POINTER: array = GL_FOG_COORDINATE_ARRAY; break;
+    case GL_EDGE_FLAG_ARRAY_POINTER: array = GL_EDGE_FLAG_ARRAY; break;
+    case GL_INDEX_ARRAY_POINTER: array = GL_INDEX_ARRAY; break;
+    case GL_SELECTION_BUFFER_POINTER: *params = c->rmode.select_buf; return;
+    case GL_FEEDBACK_BUFFER_POINTER: *params = c->rmode.feedback_buf; return;
+    default: fs_error(c, GL_INVALID_ENUM); return;
+    }
+    *params = (GLvoid *)(uintptr_t)array_of(c, array)->pointer;
+}
+
 void fs_exec_EnableClientState(fs_context *c, GLenum array) { client_state(c, array, true); }
 void fs_exec_DisableClientState(fs_context *c, GLenum array) { client_state(c, array, false); }
 
 /* ---- fetch ---- */
-/* Reads up to `size` components of element i; `norm` applies the colour
- * conversions of table 2.9 to integer types. */
-static void fetch(const fs_client_array *a, size_t i, float out[4], bool norm)
+/* How integer components become floats: not at all (positions, texture
+ * coordinates), as the colour conversions of table 2.9 (glArrayElement,
+ * which OSMesa converts as the immediate commands do), or as llvmpipe's
+ * vertex fetch converts the normalized arrays of a draw.  The last differs
+ * for the signed types: measured on OSMesa through lit and unlit feedback
+ * colours, every GL_BYTE and GL_SHORT normal and colour of a draw is
+ * max(v * (1/127), -1) and max(v * (1/32767), -1) (the reciprocal rounded
+ * to float first; the GL 1.5 rule (2v + 1) / 255 matches 2 of 256 bytes),
+ * GL_INT max(v * (1/(2^31 - 1)), -1). */
+enum { FETCH_RAW, FETCH_GL, FETCH_DRAW };
+
+/* The signed normalization of a draw's arrays (FETCH_DRAW). */
+static inline float snorm(float v, float inv_max)
+{
+    float f = v * inv_max;
+    return f < -1.0f ? -1.0f : f;
+}
+
+/* Reads up to `size` components of element i, converted as `norm` says. */
+static void fetch(const fs_client_array *a, size_t i, float out[4], int norm)
 {
     int esz = fs_type_size(a->type);
     size_t stride = a->stride ? (size_t)a->stride : (size_t)esz * (size_t)a->size;
@@ -218,11 +258,27 @@ static void fetch(const fs_client_array *a, size_t i, float out[4], bool norm)
         case GL_FLOAT: { float f; memcpy(&f, p + 4 * k, 4); v = f; break; }
         case GL_DOUBLE: { double d; memcpy(&d, p + 8 * k, 8); v = (float)d; break; }
         case GL_UNSIGNED_BYTE: { uint8_t u = p[k]; v = norm ? (float)u / 255.0f : (float)u; break; }
-        case GL_BYTE: { int8_t s = (int8_t)p[k]; v = norm ? (2.0f * s + 1.0f) / 255.0f : (float)s; break; }
+        case GL_BYTE: {
+            int8_t s = (int8_t)p[k];
+            v = norm == FETCH_DRAW ? snorm(s, 1.0f / 127.0f) : norm ? (2.0f * s + 1.0f) / 255.0f : (float)s;
+            break;
+        }
         case GL_UNSIGNED_SHORT: { uint16_t u; memcpy(&u, p + 2 * k, 2); v = norm ? (float)u / 65535.0f : (float)u; break; }
-        case GL_SHORT: { int16_t s; memcpy(&s, p + 2 * k, 2); v = norm ? (2.0f * s + 1.0f) / 65535.0f : (float)s; break; }
+        case GL_SHORT: {
+            int16_t s;
+            memcpy(&s, p + 2 * k, 2);
+            v = norm == FETCH_DRAW ? snorm(s, 1.0f / 32767.0f) : norm ? (2.0f * s + 1.0f) / 65535.0f : (float)s;
+            break;
+        }
         case GL_UNSIGNED_INT: { uint32_t u; memcpy(&u, p + 4 * k, 4); v = norm ? (float)(u / 4294967295.0) : (float)u; break; }
-        case GL_INT: { int32_t s; memcpy(&s, p + 4 * k, 4); v = norm ? (float)((2.0 * s + 1.0) / 4294967295.0) : (float)s; break; }
+        case GL_INT: {
+            int32_t s;
+            memcpy(&s, p + 4 * k, 4);
+            v = norm == FETCH_DRAW ? snorm((float)s, 1.0f / 2147483647.0f)
+                : norm             ? (float)((2.0 * s + 1.0) / 4294967295.0)
+                                   : (float)s;
+            break;
+        }
         default: v = 0.0f; break;
         }
         out[k] = v;
@@ -234,7 +290,7 @@ static inline void fetch_position(const fs_context *c, size_t i, fs_ivert *o)
 {
     o->obj[0] = o->obj[1] = o->obj[2] = 0.0f;
     o->obj[3] = 1.0f;
-    fetch(&c->arrays.vertex, i, o->obj, false);
+    fetch(&c->arrays.vertex, i, o->obj, FETCH_RAW);
 }
 
 /* Positions of n consecutive elements from `first`: float arrays, the
@@ -264,19 +320,19 @@ static void fetch_positions(const fs_context *c, size_t first, size_t n, fs_iver
 
 /* The secondary colour (its alpha is 1 whatever a size-4 array holds) and
  * the fog coordinate from their arrays, else the current values (2.8). */
-static void fetch_gl14_attributes(const fs_context *c, size_t i, fs_ivert *o)
+static void fetch_gl14_attributes(const fs_context *c, size_t i, fs_ivert *o, int norm)
 {
     const fs_array_state *A = &c->arrays;
     memcpy(o->col2, c->current.secondary_color, sizeof o->col2);
     if (A->secondary_color.enabled) {
         float s[4];
-        fetch(&A->secondary_color, i, s, true);
+        fetch(&A->secondary_color, i, s, norm);
         memcpy(o->col2, s, 3 * sizeof(float));
     }
     o->fogc = c->current.fog_coord;
     if (A->fog_coord.enabled) {
         float f[4];
-        fetch(&A->fog_coord, i, f, false);
+        fetch(&A->fog_coord, i, f, FETCH_RAW);
         o->fogc = f[0];
     }
 }
@@ -285,24 +341,24 @@ static void fetch_gl14_attributes(const fs_context *c, size_t i, fs_ivert *o)
 static bool array_edge_flag(const fs_context *c, size_t i)
 {
     float e[4];
-    fetch(&c->arrays.edge_flag, i, e, false);
+    fetch(&c->arrays.edge_flag, i, e, FETCH_RAW);
     return e[0] != 0.0f;
 }
 
 /* Its other attributes from the enabled arrays, the current values
- * elsewhere. */
-static void fetch_attributes(const fs_context *c, size_t i, fs_ivert *o, int ntex)
+ * elsewhere; norm: FETCH_DRAW for a draw, FETCH_GL for glArrayElement. */
+static void fetch_attributes(const fs_context *c, size_t i, fs_ivert *o, int ntex, int norm)
 {
     const fs_array_state *A = &c->arrays;
     if (A->color.enabled) {
         o->col[3] = 1.0f;
-        fetch(&A->color, i, o->col, true);
+        fetch(&A->color, i, o->col, norm);
     } else {
         memcpy(o->col, c->current.color, sizeof o->col);
     }
     if (A->normal.enabled) {
         float n[4];
-        fetch(&A->normal, i, n, true);
+        fetch(&A->normal, i, n, norm);
         memcpy(o->nrm, n, sizeof o->nrm);
     } else {
         memcpy(o->nrm, c->current.normal, sizeof o->nrm);
@@ -311,18 +367,18 @@ static void fetch_attributes(const fs_context *c, size_t i, fs_ivert *o, int nte
         if (A->texcoord[u].enabled) {
             o->tc[u][0] = o->tc[u][1] = o->tc[u][2] = 0.0f;
             o->tc[u][3] = 1.0f;
-            fetch(&A->texcoord[u], i, o->tc[u], false);
+            fetch(&A->texcoord[u], i, o->tc[u], FETCH_RAW);
         } else {
             memcpy(o->tc[u], c->current.texcoord[u], sizeof o->tc[u]);
         }
     }
-    fetch_gl14_attributes(c, i, o);
+    fetch_gl14_attributes(c, i, o, norm);
 }
 
 static void fetch_vertex(const fs_context *c, size_t i, fs_ivert *o)
 {
     fetch_position(c, i, o);
-    fetch_attributes(c, i, o, c->raster.tex_units);
+    fetch_attributes(c, i, o, c->raster.tex_units, FETCH_DRAW);
 }
 
 /* ---- transformation ---- */
@@ -340,6 +396,7 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
         s->tex_identity[u] = memcmp(s->tex[u], id, sizeof id) == 0;
     }
     fs_viewport_xform(c, s->vp_scale, s->vp_trans);
+    fs_clip_plane_setup(c, s);
     s->has_fma = c->raster.has_fma;
     s->has_avx2 = c->raster.has_avx2;
     s->edge = NULL;
@@ -471,7 +528,8 @@ void fs_vs_attributes(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pver
 {
     const fs_vs_impl *v = fs_vs(c);
     if (v->deferred)
-        fetch_attributes(c, v->src_indices ? index_at(v->src_indices, v->src_type, k) : v->src_first + k, &iv[k], s->ntex);
+        fetch_attributes(c, v->src_indices ? index_at(v->src_indices, v->src_type, k) : v->src_first + k, &iv[k], s->ntex,
+                         FETCH_DRAW);
     vs_attributes(s, &iv[k], &pv[k]);
     pv[k].lazy = false;
 }
@@ -636,6 +694,21 @@ __attribute__((target("avx2,fma"))) static size_t vs_positions8(const fs_vs_setu
 }
 #endif
 
+/* Adds the user clip planes' bits to the batch's masks (only called when
+ * a plane is enabled); returns the bits every vertex has in its low half
+ * and those some vertex has in its high half. */
+static unsigned user_plane_masks(const fs_vs_setup *s, fs_pvert *out, size_t n)
+{
+    unsigned any = 0, all = s->ucp_mask;
+    for (size_t i = 0; i < n; i++) {
+        unsigned m = fs_clip_user_mask(s, out[i].clip);
+        out[i].mask |= m;
+        any |= m;
+        all &= m;
+    }
+    return all | any << 16;
+}
+
 static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n,
                                                              const fs_tile_mask *tiles)
 {
@@ -647,6 +720,8 @@ static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *
 #endif
         for (; i < n; i++)
             vs_position(s, &in[i], &out[i]);
+        if (s->ucp_mask)
+            user_plane_masks(s, out, n);
         for (i = 0; i < n; i++) {
             vs_attributes(s, &in[i], &out[i]);
             out[i].lazy = false;
@@ -667,6 +742,13 @@ static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *
     for (; i < n; i++) {
         vs_position(s, &in[i], &out[i]);
         bounds_add(&b, &out[i]);
+    }
+    if (s->ucp_mask) {
+        /* The user planes' bits are apart from the view volume's, so
+         * or-ing and and-ing them in apart gives the same any and all. */
+        unsigned all_user = user_plane_masks(s, out, n);
+        b.any |= all_user >> 16;
+        b.all = (b.all & ((1u << FS_CLIP_USER_BIT) - 1)) | (all_user & 0xffffu);
     }
     bool need = b.all == 0 && (b.any != 0 || fs_vs_box_masked(tiles, b.x0, b.y0, b.x1, b.y1));
     /* A batch that may reach a masked tile is lit per triangle by
@@ -729,7 +811,7 @@ void fs_exec_ArrayElement(fs_context *c, GLint i)
     fs_ivert v;
     if (c->arrays.vertex.enabled)
         fetch_position(c, (size_t)i, &v);
-    fetch_attributes(c, (size_t)i, &v, FS_MAX_TEXTURE_UNITS);
+    fetch_attributes(c, (size_t)i, &v, FS_MAX_TEXTURE_UNITS, FETCH_GL);
     if (c->arrays.color.enabled) fs_exec_Color4fv(c, v.col);
     if (c->arrays.normal.enabled) fs_exec_Normal3fv(c, v.nrm);
     for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
@@ -821,6 +903,19 @@ void fs_exec_DrawArrays(fs_context *c, GLenum mode, GLint first, GLsizei count)
         draw_batch(c, mode, n, NULL, n, c->prim.list_depth > 0);
         at += n;
     }
+}
+
+/* GL 1.5 spec 2.8: the draws of glDrawArrays in order, none when an
+ * argument is bad (the errors as OSMesa raises them: a negative drawcount
+ * or count, GL_INVALID_VALUE; a bad mode, GL_INVALID_ENUM). */
+void fs_exec_MultiDrawArrays(fs_context *c, GLenum mode, const GLint *first, const GLint *count, GLsizei drawcount)
+{
+    if (!fs_prim_mode_valid(mode)) { fs_error(c, GL_INVALID_ENUM); return; }
+    if (drawcount < 0) { fs_error(c, GL_INVALID_VALUE); return; }
+    for (GLsizei i = 0; i < drawcount; i++)
+        if (count[i] < 0) { fs_error(c, GL_INVALID_VALUE); return; }
+    for (GLsizei i = 0; i < drawcount; i++)
+        fs_exec_DrawArrays(c, mode, first[i], count[i]);
 }
 
 static uint32_t index_at(const void *indices, GLenum type, size_t i)

@@ -64,7 +64,8 @@ typedef struct fs_pvert {
     /* The secondary colour (3.9), front and back, clamped, set while
      * fs_vs_setup.color_sum is (pipeline/color_sum.c). */
     float col2[2][4];
-    unsigned mask;    /* bit i: outside clip plane i (clip.c's order) */
+    unsigned mask;    /* bit i: outside clip plane i (clip.c's order; bits
+                         FS_CLIP_USER_BIT + i: user plane i) */
     bool lazy;        /* col and tc not computed yet (fs_vs_process under a tile mask) */
 } fs_pvert;
 
@@ -117,6 +118,11 @@ typedef struct fs_vs_setup {
      * or NULL when every vertex has the current edge flag.  Reset by
      * fs_vs_prepare. */
     const uint8_t *edge;
+    /* User clip planes (GL 1.5 spec 2.11; clip_plane.c): the enabled
+     * planes as fs_pvert.mask bits (0 when none is, and then no vertex
+     * pays for them) and each one's clip-space coefficients. */
+    unsigned ucp_mask;
+    float ucp[FS_MAX_CLIP_PLANES][4];
 } fs_vs_setup;
 
 /* The material from batch vertex `start` on, after a glMaterial between
@@ -227,6 +233,11 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
 bool fs_prim_mode_valid(GLenum mode);
 /* clip.c */
 unsigned fs_clip_mask(const float clip[4]);
+/* clip_plane.c: the user planes of a draw into s (ucp_mask, ucp), and the
+ * mask bits of the planes a clip position is outside. */
+#define FS_CLIP_USER_BIT 6
+void fs_clip_plane_setup(const fs_context *c, fs_vs_setup *s);
+unsigned fs_clip_user_mask(const fs_vs_setup *s, const float clip[4]);
 /* edges: 0 for the triangle setup's route; on the draw module's
  * (FS_EDGES_ROUTE set, rasterizer.h) bits 0-2 the triangle's boundary
  * edges (edge i from vertex i to vertex i+1 mod 3, as the primitive's

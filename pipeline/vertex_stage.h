@@ -6,7 +6,7 @@
  *
  * Files: matrix.c (2.11), lighting.c (2.14), immediate.c (2.6-2.7),
  * vertex_array.c (2.8), primitive.c (assembly, flat shading 2.14.7),
- * clip.c (2.12), viewport.c (2.11.1).
+ * clip.c (2.12), clip_plane.c (user clip planes, 2.11), viewport.c (2.11.1).
  */
 #ifndef FS_VERTEX_STAGE_H
 #define FS_VERTEX_STAGE_H
@@ -20,6 +20,7 @@
 #define FS_PROJECTION_STACK_DEPTH 32  /* GL minimum is 2; Mesa (the reference) allows 32 */
 #define FS_TEXTURE_STACK_DEPTH 10
 #define FS_MAX_LIGHTS 8
+#define FS_MAX_CLIP_PLANES 8 /* GL_MAX_CLIP_PLANES as OSMesa (llvmpipe) reports it */
 
 typedef struct fs_matrix { float m[16]; } fs_matrix; /* column-major, as GL */
 
@@ -38,6 +39,11 @@ typedef struct fs_transform_state {
                               * MakeCurrent does */
     double depth_range[2];
     bool normalize, rescale_normal;
+    /* User clip planes (GL 1.5 spec 2.11; pipeline/clip_plane.c): each
+     * plane's eye-space coefficients, as glClipPlane transformed them,
+     * and GL_CLIP_PLANEi. */
+    float clip_plane[FS_MAX_CLIP_PLANES][4];
+    bool clip_enabled[FS_MAX_CLIP_PLANES];
 } fs_transform_state;
 
 typedef struct fs_light {

@@ -226,6 +226,29 @@ static inline long osm_compare_scene(osm_scene_fn scene, int w, int h, const cha
     osm_pair_close(&p);
     return d;
 }
+/* Values a sequence of calls answers (glGet and the like), on OSMesa and
+ * on the model, each in an 8x8 context: run(c, out, &n) appends to out.
+ * False when a context cannot be made. */
+typedef void (*osm_values_fn)(fs_context *c, double *out, int *n);
+
+static inline bool osm_pair_values(osm_values_fn run, double *ref, int *nref, double *mine, int *nmine)
+{
+    *nref = *nmine = 0;
+    osm o;
+    if (!osm_open(&o, 8, 8)) {
+        osm_close(&o);
+        return false;
+    }
+    run(NULL, ref, nref);
+    osm_close(&o);
+    fs_context *c = fs_context_create(NULL, 8, 8);
+    if (!c)
+        return false;
+    run(c, mine, nmine);
+    fs_context_destroy(c);
+    return true;
+}
+
 /* A test's check that a scene is drawn alike, without a GL error on the
  * model (check.h's CHECK_EQ_INT, expanded in the test). */
 #define OSM_CHECK_SCENE(fn, w, h, name, dump_env, prefix)                              \
