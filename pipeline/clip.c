@@ -11,9 +11,9 @@
  * follow Mesa's draw module so that clipped edges land on the same
  * sub-pixel positions.  The enabled user clip planes (2.11, clip_plane.c)
  * come after the six, in clip space, in the order of their numbers.
- * Lines are clipped by z and the user planes only; their x/y extent is
- * bounded by the window (guard band, as llvmpipe does), except in selection
- * and feedback (pipeline/render_mode.c), whose lines are clipped by all six.  Points are
+ * Lines are clipped by all six planes and the user planes (no guard band
+ * for them, fs_clip_line), in rendering as in selection and feedback
+ * (pipeline/render_mode.c).  Points are
  * dropped when their vertex is outside any plane (primitive.c).
  * Non-finite distances drop the primitive.
  */
@@ -344,41 +344,19 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
         fs_emit_line(c, s, v0, v1);
         return;
     }
-    /* Selection and feedback see lines clipped against every plane: Mesa
-     * runs them through a draw context of its own, which has no guard band
-     * (measured: a line leaving the window ends on its edge). */
-    const bool all_planes = fs_render_mode_diverts(&c->rmode);
-    if ((m & ~0xfu) == 0 && !all_planes) {
-        /* Only x/y planes: the guard band passes the line unclipped unless
-         * it cannot be projected. */
-        if ((v0->clip[3] <= 0.0f && v1->clip[3] <= 0.0f) || isnan(v0->clip[0]) || isnan(v0->clip[1]) ||
-            isnan(v1->clip[0]) || isnan(v1->clip[1]))
-            return;
-        if (!(v0->clip[3] > 0.0f) || !(v1->clip[3] > 0.0f))
-            return; /* fragsim cannot project a w <= 0 end point */
-        cvert a, b;
-        from_pvert(s, &a, v0);
-        from_pvert(s, &b, v1);
-        for (int k = 0; k < 2; k++) {
-            cvert *d = k ? &b : &a;
-            float oow = 1.0f / d->clip[3];
-            d->win[0] = fmaf(d->clip[0] * oow, s->vp_scale[0], s->vp_trans[0]);
-            d->win[1] = fmaf(d->clip[1] * oow, s->vp_scale[1], s->vp_trans[1]);
-            d->win[2] = fmaf(d->clip[2] * oow, s->vp_scale[2], s->vp_trans[2]);
-            d->win[3] = oow;
-            d->win[4] = fmaf(d->clip[1] * oow, s->yr_scale, s->yr_trans);
-        }
-        emit_line2(c, s, &a, &b, s->flat ? v1 : NULL);
-        return;
-    }
     if (v0->mask & v1->mask)
         return;
-    /* z and the user planes (bits 4 up); x/y too in selection and feedback. */
-    unsigned zm = all_planes ? m : m & ~0xfu;
+    /* Every plane of the view volume, x and y too: llvmpipe's draw module
+     * has no guard band for lines (measured against OSMesa on random
+     * lines with ends beyond the window, of widths 1 to 7: clipped at the
+     * viewport's edges they are exact, passed whole 40% of the wide ones
+     * differ), and selection and feedback see them clipped the same way
+     * (measured: a line leaving the window ends on its edge). */
+    unsigned pm = m; /* then the user planes (bits 4 up) */
     float t0 = 0.0f, t1 = 0.0f;
-    while (zm) {
-        int plane = __builtin_ctz(zm);
-        zm &= zm - 1;
+    while (pm) {
+        int plane = __builtin_ctz(pm);
+        pm &= pm - 1;
         const float *pl = plane >= FS_CLIP_USER_BIT ? s->ucp[plane - FS_CLIP_USER_BIT] : planes[plane];
         float dp0 = dot4(v0->clip, pl), dp1 = dot4(v1->clip, pl);
         if (!isfinite(dp0) || !isfinite(dp1))

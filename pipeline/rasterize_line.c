@@ -140,7 +140,11 @@ void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
                 x_off_end = -x1diff - 0.5f;
                 y_off_end = x_off_end * dydx;
             }
-            will_end = x2diff > 0.0f;
+            /* An end on its pixel centre's column counts as drawn
+             * already (measured: lines between pixel centres with
+             * dx < 0 then move that end by half a pixel, which decides
+             * the pixel centres the edges pass exactly through). */
+            will_end = x2diff >= 0.0f;
             if (will_end != draw_end) {
                 x_off = -x2diff - 0.5f;
                 y_off = x_off * dydx;
@@ -198,7 +202,7 @@ void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
         if (dy > 0.0f) {
             v1x = p2x; v1y = p2y; v2x = p1x; v2y = p1y;
             will_start = y1diff >= 0.0f;
-            will_end = y2diff < 0.0f;
+            will_end = y2diff <= 0.0f; /* as for x-major lines */
             if (will_start != draw_start) {
                 y_off_end = -y1diff + 0.5f;
                 x_off_end = y_off_end * dxdy;

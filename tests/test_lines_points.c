@@ -3,7 +3,8 @@
  * with the same calls and compared pixel for pixel, tolerance 0, on random
  * widths (fractional ones included), positions, primitive types, shading,
  * depth and near/far clipping, and as the edges of GL_LINE polygons
- * (3.5.4).
+ * (3.5.4); lines in window coordinates with ends on pixel centres and
+ * corners and beyond the window.
  */
 #include <GL/osmesa.h>
 #include <GL/gl.h>
@@ -31,11 +32,9 @@ static void draw_scene(fs_context *c, const void *user, int w, int h)
         G(PolygonMode, GL_FRONT_AND_BACK, GL_LINE);
     const GLenum prims[3] = {GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP};
     const GLenum polys[3] = {GL_TRIANGLES, GL_QUADS, GL_POLYGON};
-    /* End points inside the window: lines with an end point beyond it
-     * (fs_clip_line's guard-band path) and lines through pixel corners
-     * (the diamond-exit tie) differ from llvmpipe in a few pixels at any
-     * width, width 1 included; that is not this test's subject.  The
-     * clipped scenes clip by the near and far planes only. */
+    /* End points inside the window (lines beyond it and ends on pixel
+     * centres and corners are draw_ends_scene's); the clipped scenes clip
+     * by the near and far planes only. */
     float extent = 0.9f;
     for (int draw = 0; draw < 10; draw++) {
         /* Whole, half and arbitrary widths (rounding of halves). */
@@ -93,6 +92,35 @@ static void draw_smooth_lines(fs_context *c, const void *user, int w, int h)
         for (int i = 0; i < n; i++) {
             G(Color4f, rndf(&r), rndf(&r), rndf(&r), rnd_in(&r, 0.3f, 1.0f));
             G(Vertex3f, rnd_in(&r, -0.9f, 0.9f), rnd_in(&r, -0.9f, 0.9f), rnd_in(&r, -0.9f, 0.9f));
+/* Lines in window coordinates (an orthographic projection onto the
+ * window, or onto a viewport inset by 5 pixels) with ends on pixel centres,
+ * on pixel corners or anywhere, up to 15 pixels beyond the window, of
+ * widths 1 to 7: the end-point rule of lines between pixel centres and the
+ * clipping of lines at the view volume's x/y planes (clip.c). */
+static void draw_ends_scene(fs_context *c, const void *user, int w, int h)
+{
+    const scene *sc = user;
+    rng r = {sc->seed * 2654435761u + 11};
+    scene_view(c, w, h, false);
+    int inset = sc->seed % 4 == 3 ? 5 : 0;
+    G(Viewport, inset, inset, w - 2 * inset, h - 2 * inset);
+    G(MatrixMode, GL_PROJECTION);
+    G(Ortho, 0, w, 0, h, -1, 1);
+    G(MatrixMode, GL_MODELVIEW);
+    for (int draw = 0; draw < 12; draw++) {
+        G(LineWidth, draw % 3 ? 1.0f : (float)(1 + rnd(&r) % 7));
+        G(ShadeModel, rnd(&r) & 1 ? GL_FLAT : GL_SMOOTH);
+        int place = (int)(rnd(&r) % 3); /* centres, corners, anywhere */
+        float m = sc->clipped ? 15.0f : -1.0f;
+        G(Begin, GL_LINES);
+        for (int i = 0; i < 2; i++) {
+            G(Color4f, rndf(&r), rndf(&r), rndf(&r), 1);
+            float x = rnd_in(&r, -m, (float)w + m), y = rnd_in(&r, -m, (float)h + m);
+            if (place < 2) {
+                x = floorf(x) + (place ? 0.0f : 0.5f);
+                y = floorf(y) + (place ? 0.0f : 0.5f);
+            }
+            G(Vertex3f, x, y, rnd_in(&r, -0.9f, 0.9f));
         }
         G0(End);
     }
@@ -220,6 +248,20 @@ TEST(wide_lines_vs_osmesa) { check_scenes(check_st_, (scene){0, 9.0f, false, fal
 
 TEST(wide_lines_clipped_vs_osmesa) { check_scenes(check_st_, (scene){0, 12.0f, false, true}, 100, 30); }
 
+TEST(line_ends_on_pixel_centres_vs_osmesa)
+{
+    scene base = {0, 0, false, false};
+    seeded_run r = {draw_ends_scene, &base, &base.seed, 40, 32, 7, 5, "line_ends"};
+    check_seeded_runs(check_st_, &r, 1, 60);
+}
+
+TEST(lines_beyond_window_vs_osmesa)
+{
+    scene base = {0, 0, false, true};
+    seeded_run r = {draw_ends_scene, &base, &base.seed, 40, 32, 7, 5, "line_clip"};
+    check_seeded_runs(check_st_, &r, 100, 60);
+}
+
 TEST(wide_polygon_edges_vs_osmesa) { check_scenes(check_st_, (scene){0, 6.0f, true, true}, 200, 30); }
 
 TEST_LIST = {
@@ -233,6 +275,8 @@ TEST_LIST = {
     TEST_ENTRY(smooth_points_perspective_depth_vs_osmesa),
     TEST_ENTRY(smooth_polygons_vs_osmesa),
     TEST_ENTRY(smooth_caps_supported),
+    TEST_ENTRY(line_ends_on_pixel_centres_vs_osmesa),
+    TEST_ENTRY(lines_beyond_window_vs_osmesa),
     TEST_END,
 };
 
