@@ -228,6 +228,7 @@ int fs_occlusion_tile_count(fs_context *c);
 int64_t fs_teximage_bytes(fs_context *c, GLsizei w, GLsizei h, GLenum format, GLenum type);
 int fs_texparam_count(GLenum pname);
 int fs_texenv_count(GLenum pname);
+int fs_texgen_count(GLenum pname); /* values of glTexGen*v, glGetTexGen*v (pipeline/texgen.c) */
 /* Bytes glGetTexImage writes under the current pack state (0 when it
  * writes nothing: an error or an undefined level). */
 int64_t fs_gettexImage_bytes(fs_context *c, GLenum target, GLint level, GLenum format, GLenum type);
