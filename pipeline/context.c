@@ -27,6 +27,7 @@ fs_context *fs_context_create(const fs_config *cfg, int width, int height)
     fs_state_init(c); /* the initial values of GL 1.5 spec tables 6.5-6.32 */
     for (int k = 0; k < 4; k++) /* 16 bits a component, or no buffer (pipeline/accum.h) */
         c->accum.bits[k] = c->cfg.framebuffer_accum_bits > 0 ? 16 : 0;
+    fs_texgen_init(c); /* table 6.17's planes and modes (no glGet name: not in the table) */
     if (fs_texture_init(c) != 0) {
         fs_context_destroy(c);
         return NULL;

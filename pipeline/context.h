@@ -24,6 +24,7 @@
 #include "evaluator.h"
 #include "pixel_map.h"
 #include "accum.h"
+#include "texgen.h"
 
 struct fs_dlist_state;      /* driver/display_list.c */
 struct fs_capture;          /* driver/capture.c */
@@ -43,6 +44,9 @@ struct fs_context {
     fs_transform_state xf;
     fs_lighting_state lighting;
     fs_current_state current;
+    /* Texture coordinate generation of each texture unit (GL 1.5 spec
+     * 2.11.4; pipeline/texgen.c). */
+    fs_texgen_unit texgen[FS_MAX_TEXTURE_UNITS];
     /* The current raster position (GL 1.5 spec 2.13; pipeline/raster_pos.c). */
     fs_raster_pos rpos;
     fs_array_state arrays;

@@ -412,6 +412,7 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     c->raster.interpolate_fog = s->fog;
     fs_color_sum_setup(c, s);
     fs_lighting_setup(c, s);
+    fs_texgen_setup(c, s);
     /* Draws of one object share a modelview: invert it once (the
      * persistent setup of the context keeps the last one). */
     if (s->lighting && !(s->nmat_valid && memcmp(s->nmat_of, mv, sizeof s->nmat_of) == 0)) {
@@ -468,32 +469,24 @@ static inline float vs_fog_coord(const fs_vs_setup *s, const fs_ivert *v)
 /* Colours (lighting, GL 1.5 spec 2.14) and texture coordinates (2.10.2). */
 static inline void vs_attributes(const fs_vs_setup *s, const fs_ivert *v, fs_pvert *o)
 {
+    float eye[4] = {0, 0, 0, 1};
     if (s->lighting) {
-        float eye[4] = {0, 0, 0, 1}, nrm[3];
-        if (s->need_eye)
-            fs_mat_xform4(eye, s->mv, v->obj);
-        for (int r = 0; r < 3; r++)
-            nrm[r] = s->nmat[r * 3] * v->nrm[0] + s->nmat[r * 3 + 1] * v->nrm[1] + s->nmat[r * 3 + 2] * v->nrm[2];
-        if (s->rescale && !s->normalize) {
-            nrm[0] *= s->nscale; nrm[1] *= s->nscale; nrm[2] *= s->nscale;
-        }
-        if (s->normalize) {
-            float l2 = nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2];
-            if (l2 > 0.0f) {
-                float inv = 1.0f / sqrtf(l2);
-                nrm[0] *= inv; nrm[1] *= inv; nrm[2] *= inv;
-            }
-        }
+        float nrm[3];
+        fs_vs_eye_normal(s, v, eye, nrm);
         fs_light_vertex(s, eye, nrm, v->col, o->col, o->col2);
     } else {
         for (int k = 0; k < 4; k++)
             o->col[0][k] = clamp01(v->col[k]);
     }
-    for (int u = 0; u < s->ntex; u++) {
-        if (s->tex_identity[u])
-            memcpy(o->tc[u], v->tc[u], sizeof o->tc[u]);
-        else
-            fs_mat_xform4(o->tc[u], s->tex[u], v->tc[u]);
+    if (s->texgen) {
+        fs_texgen_vertex(s, v, eye, o); /* generation, then the texture matrices */
+    } else {
+        for (int u = 0; u < s->ntex; u++) {
+            if (s->tex_identity[u])
+                memcpy(o->tc[u], v->tc[u], sizeof o->tc[u]);
+            else
+                fs_mat_xform4(o->tc[u], s->tex[u], v->tc[u]);
+        }
     }
     if (s->fog)
         o->fog = s->fog_from_coord ? fabsf(v->fogc) : vs_fog_coord(s, v);

@@ -7,6 +7,7 @@
  */
 #ifndef FS_VERTEX_INTERNAL_H
 #define FS_VERTEX_INTERNAL_H
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 #include "context.h"
@@ -114,6 +115,13 @@ typedef struct fs_vs_setup {
      * GL_SEPARATE_SPECULAR_COLOR; each vertex gets fs_pvert.col2. */
     bool color_sum;
     bool separate_specular; /* lighting's specular term goes to col2 (2.14.1) */
+    /* Texture coordinate generation (GL 1.5 spec 2.11.4, pipeline/texgen.c):
+     * some unit below ntex generates a coordinate; one of them from the eye
+     * position or normal; each coordinate's FS_TG_* and plane. */
+    bool texgen, texgen_eye, texgen_normal;
+    float texgen_nmat[9], texgen_nscale; /* the generation's normal matrix (texgen.c) */
+    unsigned char texgen_mode[FS_MAX_TEXTURE_UNITS][4];
+    float texgen_plane[FS_MAX_TEXTURE_UNITS][4][4];
     /* Per-draw input: the batch vertices' edge flags (GL 1.5 spec 2.6.2),
      * or NULL when every vertex has the current edge flag.  Reset by
      * fs_vs_prepare. */
@@ -178,6 +186,10 @@ bool fs_vs_reserve_edge(fs_context *c, size_t n); /* iv_edge */
 void fs_mat_identity(float m[16]);
 void fs_mat_mul(float r[16], const float a[16], const float b[16]); /* r = a * b */
 bool fs_mat_invert(float r[16], const float m[16]);
+/* matrix_inverse.c: the inverse as llvmpipe's GL front end computes it
+ * (Mesa's matrix classes, in float); true when m preserves lengths (a
+ * rotation and a translation at most), whose normals need no rescaling. */
+bool fs_mat_invert_gl(float out[16], const float m[16]);
 /* Transforms with the accumulation order Mesa's vertex program uses. */
 static inline void fs_mat_xform4(float o[4], const float m[16], const float v[4])
 {
@@ -200,6 +212,36 @@ void fs_color_sum_setup(fs_context *c, fs_vs_setup *s);
 
 /* lighting.c */
 void fs_lighting_setup(fs_context *c, fs_vs_setup *s);
+/* The eye position (when s->need_eye; else left as it is) and the eye
+ * normal of a vertex, for lighting (2.14) and texture coordinate
+ * generation (2.11.4): the normal times the inverse transpose of the
+ * modelview, then normalised (GL_NORMALIZE) or rescaled
+ * (GL_RESCALE_NORMAL), as llvmpipe's vertex shader does. */
+static inline void fs_vs_eye_normal(const fs_vs_setup *s, const fs_ivert *v, float eye[4], float nrm[3])
+{
+    if (s->need_eye)
+        fs_mat_xform4(eye, s->mv, v->obj);
+    for (int r = 0; r < 3; r++)
+        nrm[r] = s->nmat[r * 3] * v->nrm[0] + s->nmat[r * 3 + 1] * v->nrm[1] + s->nmat[r * 3 + 2] * v->nrm[2];
+    if (s->rescale && !s->normalize) {
+        nrm[0] *= s->nscale; nrm[1] *= s->nscale; nrm[2] *= s->nscale;
+    }
+    if (s->normalize) {
+        float l2 = nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2];
+        if (l2 > 0.0f) {
+            float inv = 1.0f / sqrtf(l2);
+            nrm[0] *= inv; nrm[1] *= inv; nrm[2] *= inv;
+        }
+    }
+}
+/* texgen.c: the generation's per-draw state (after fs_lighting_setup:
+ * it asks for the eye position), and one vertex's texture coordinates
+ * of every unit below s->ntex, generated and then transformed by the
+ * texture matrices; eye is lighting's when s->lighting, else
+ * computed here; the normal is its own (texgen.c's texgen_normal). */
+enum { FS_TG_NONE, FS_TG_OBJECT, FS_TG_EYE, FS_TG_SPHERE, FS_TG_REFLECTION, FS_TG_NORMAL };
+void fs_texgen_setup(fs_context *c, fs_vs_setup *s);
+void fs_texgen_vertex(const fs_vs_setup *s, const fs_ivert *v, float eye[4], fs_pvert *o);
 /* immediate.c: glMaterial changed the material between Begin and End;
  * `before` is the material it replaced. */
 void fs_vs_material_changed(fs_context *c, const fs_material before[2]);

@@ -92,35 +92,6 @@ static void draw_smooth_lines(fs_context *c, const void *user, int w, int h)
         for (int i = 0; i < n; i++) {
             G(Color4f, rndf(&r), rndf(&r), rndf(&r), rnd_in(&r, 0.3f, 1.0f));
             G(Vertex3f, rnd_in(&r, -0.9f, 0.9f), rnd_in(&r, -0.9f, 0.9f), rnd_in(&r, -0.9f, 0.9f));
-/* Lines in window coordinates (an orthographic projection onto the
- * window, or onto a viewport inset by 5 pixels) with ends on pixel centres,
- * on pixel corners or anywhere, up to 15 pixels beyond the window, of
- * widths 1 to 7: the end-point rule of lines between pixel centres and the
- * clipping of lines at the view volume's x/y planes (clip.c). */
-static void draw_ends_scene(fs_context *c, const void *user, int w, int h)
-{
-    const scene *sc = user;
-    rng r = {sc->seed * 2654435761u + 11};
-    scene_view(c, w, h, false);
-    int inset = sc->seed % 4 == 3 ? 5 : 0;
-    G(Viewport, inset, inset, w - 2 * inset, h - 2 * inset);
-    G(MatrixMode, GL_PROJECTION);
-    G(Ortho, 0, w, 0, h, -1, 1);
-    G(MatrixMode, GL_MODELVIEW);
-    for (int draw = 0; draw < 12; draw++) {
-        G(LineWidth, draw % 3 ? 1.0f : (float)(1 + rnd(&r) % 7));
-        G(ShadeModel, rnd(&r) & 1 ? GL_FLAT : GL_SMOOTH);
-        int place = (int)(rnd(&r) % 3); /* centres, corners, anywhere */
-        float m = sc->clipped ? 15.0f : -1.0f;
-        G(Begin, GL_LINES);
-        for (int i = 0; i < 2; i++) {
-            G(Color4f, rndf(&r), rndf(&r), rndf(&r), 1);
-            float x = rnd_in(&r, -m, (float)w + m), y = rnd_in(&r, -m, (float)h + m);
-            if (place < 2) {
-                x = floorf(x) + (place ? 0.0f : 0.5f);
-                y = floorf(y) + (place ? 0.0f : 0.5f);
-            }
-            G(Vertex3f, x, y, rnd_in(&r, -0.9f, 0.9f));
         }
         G0(End);
     }
@@ -235,6 +206,41 @@ TEST(smooth_caps_supported)
     }
     CHECK_EQ_UINT(c->stats.unsupported_calls, 0);
     fs_context_destroy(c);
+}
+
+/* Lines in window coordinates (an orthographic projection onto the
+ * window, or onto a viewport inset by 5 pixels) with ends on pixel centres,
+ * on pixel corners or anywhere, up to 15 pixels beyond the window, of
+ * widths 1 to 7: the end-point rule of lines between pixel centres and the
+ * clipping of lines at the view volume's x/y planes (clip.c). */
+static void draw_ends_scene(fs_context *c, const void *user, int w, int h)
+{
+    const scene *sc = user;
+    rng r = {sc->seed * 2654435761u + 11};
+    scene_view(c, w, h, false);
+    int inset = sc->seed % 4 == 3 ? 5 : 0;
+    G(Viewport, inset, inset, w - 2 * inset, h - 2 * inset);
+    G(MatrixMode, GL_PROJECTION);
+    G(Ortho, 0, w, 0, h, -1, 1);
+    G(MatrixMode, GL_MODELVIEW);
+    for (int draw = 0; draw < 12; draw++) {
+        G(LineWidth, draw % 3 ? 1.0f : (float)(1 + rnd(&r) % 7));
+        G(ShadeModel, rnd(&r) & 1 ? GL_FLAT : GL_SMOOTH);
+        int place = (int)(rnd(&r) % 3); /* centres, corners, anywhere */
+        float m = sc->clipped ? 15.0f : -1.0f;
+        G(Begin, GL_LINES);
+        for (int i = 0; i < 2; i++) {
+            G(Color4f, rndf(&r), rndf(&r), rndf(&r), 1);
+            float x = rnd_in(&r, -m, (float)w + m), y = rnd_in(&r, -m, (float)h + m);
+            if (place < 2) {
+                x = floorf(x) + (place ? 0.0f : 0.5f);
+                y = floorf(y) + (place ? 0.0f : 0.5f);
+            }
+            G(Vertex3f, x, y, rnd_in(&r, -0.9f, 0.9f));
+        }
+        G0(End);
+    }
+    G0(Finish);
 }
 
 /* The run of scenes like `base` from seed `first` on. */
