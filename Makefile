@@ -50,7 +50,7 @@ LAYER_LIBS := $(BUILD)/libfragsim_driver.a $(BUILD)/libfragsim_rtl.a $(BUILD)/li
 WHOLE_LIB = -Wl,--whole-archive $(LAYER_LIBS) -Wl,--no-whole-archive
 
 .PHONY: all deps test run sanitize fuzz bench golden docs clean scenes tests shim study-filters exec-check gl-coverage
-.PHONY: studies study-occlusion study-query-cost study-texture-cache study-culling conformance conformance-run
+.PHONY: sampling-study studies study-occlusion study-query-cost study-texture-cache study-culling conformance conformance-run
 all: $(LIB) $(FRAGSIM) tests scenes shim exec-check cullstudy
 
 deps:
@@ -155,6 +155,12 @@ golden: all
 # FRAMES=N sets the path's frames, default 10).
 study-culling: deps all
 	@scripts/study_culling.sh $(BUILD)
+
+# Sampled mode against full cycle mode on the conformance corpus's programs
+# and the scenes, O2 and InfiniteReality (issue 24): regenerates
+# docs/sampling.md and docs/sampling_error.png (traces in $(BUILD)/sampling).
+sampling-study: deps all
+	@BUILD=$(BUILD) /usr/bin/python3 scripts/sampling_study.py
 
 # Studies: sweeps of configs/sweeps/NAME.ini into docs/studies/NAME.md and
 # its plots (big outputs in out/studies/).
