@@ -162,8 +162,9 @@ int fs_cli_cycle_json(fs_cli_cycle *h, json_t *into)
     /* error_estimate: the value "%.6f" printed (see cli_main.c, fs_json_fixed) */
     char e[32];
     snprintf(e, sizeof e, "%.6f", error_estimate);
-    json_t *cycle = json_pack("{s:s, s:f, s:o, s:o, s:O, s:O}", "mode",
-                              h->mode == FS_CYCLE_SAMPLED ? "sampled" : "cycle", "error_estimate", strtod(e, NULL),
+    json_t *cycle = json_pack("{s:s, s:b, s:f, s:o, s:o, s:O, s:O}", "mode",
+                              h->mode == FS_CYCLE_SAMPLED ? "sampled" : "cycle", "too_short_to_sample",
+                              fs_cycle_too_short(h->cy), "error_estimate", strtod(e, NULL),
                               "totals", with_stats(json_object(), &t), "frames", frames, "queries", h->queries_json,
                               "draws", h->draws_json);
     /* With a clock the totals in seconds and frames per second too (the
@@ -193,6 +194,9 @@ void fs_cli_cycle_summary(fs_cli_cycle *h, FILE *f, double seconds)
             h->mode == FS_CYCLE_SAMPLED ? "sampled" : "cycle", (unsigned long long)t.cycles,
             (unsigned long long)t.estimated_cycles, 100.0 * error_estimate,
             seconds > 0 ? (double)t.cycles / seconds / 1e6 : 0.0);
+    if (fs_cycle_too_short(h->cy))
+        fprintf(f, "fragsim: sampled mode: %zu frames are too few to sample (6 or more, or 1 or 2) with an error "
+                   "estimate: simulated in full\n", h->nframes);
     if (h->clock_khz > 0) {
         double sec = (double)t.cycles / ((double)h->clock_khz * 1000.0);
         fprintf(f, "fragsim: at %.3f MHz: %.6f s simulated, %zu frame%s, %.2f frames/s\n", h->clock_khz / 1000.0, sec,

@@ -166,7 +166,9 @@ struct fs_cycle {
 
     /* sampled mode, frame sampling */
     uint64_t nframes_trace;
+    uint64_t frame_step;        /* sampling.frames, or less on a short trace */
     bool frame_sampling, frame_skipped, finished;
+    bool too_short;             /* 3+ frames, too few to sample: simulated in full */
     uint64_t *frame_cycles;     /* per frame; skipped frames filled by fs_cycle_finish */
     bool *frame_was_skipped;
     uint64_t frame_cap, frames_done;

@@ -71,6 +71,9 @@ void fs_cycle_set_frames(fs_cycle *cy, uint64_t frames);
 /* Sampled mode: is the current frame interpolated, not simulated?  The
  * driver then skips its draws, clears and read-backs (fs_cmd_skippable). */
 bool fs_cycle_frame_skipped(const fs_cycle *cy);
+/* Sampled mode on a trace of 3 to 5 frames: too short to sample frames
+ * with an error estimate (docs/cycle_model.md), so simulated in full. */
+bool fs_cycle_too_short(const fs_cycle *cy);
 /* Sampled mode: after the last frame, fills in the skipped frames' cycles
  * (linear between the simulated frames around them).  Idempotent. */
 void fs_cycle_finish(fs_cycle *cy);

@@ -742,6 +742,128 @@ TEST(readback_closed_form)
     CHECK(strstr(err, "clock.khz") != NULL);
 }
 
+/* One frame of the warm-up test: `quads` screen-filling quads after a
+ * clear, with materials set between their vertices (the immediate-mode
+ * path that lights vertex runs apart). */
+static void warmup_frame(fs_context *c, int quads)
+{
+    fsglClear(c, GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    for (int r = 0; r < quads; r++) {
+        float z = 0.9f - 0.1f * (float)r;
+        const float red[4] = {1, 0, 0, 1}, blue[4] = {0, 0, 1, 1};
+        fsglBegin(c, GL_QUADS);
+        fsglVertex3f(c, ndc(0), ndc(0), z);
+        fsglVertex3f(c, ndc(WN), ndc(0), z);
+        fsglMaterialfv(c, GL_FRONT_AND_BACK, GL_DIFFUSE, red);
+        fsglVertex3f(c, ndc(WN), ndc(WN), z);
+        fsglMaterialfv(c, GL_FRONT_AND_BACK, GL_DIFFUSE, blue);
+        fsglVertex3f(c, ndc(0), ndc(WN), z);
+        fsglEnd(c);
+    }
+}
+
+TEST(frame_sampling_warmup_frame)
+{
+    /* Eight frames: frame 0 draws 6 quads (a warm-up, as frame 0 of most
+     * corpus programs is), frames 1-7 one each.  Sampled mode with
+     * sampling.frames = 3 simulates frames 0, 1, 4 and 7 and skips the
+     * others' draws (the driver's rule, fs_cycle_frame_skipped); frames
+     * 1-7 cost the same in full cycle mode, so interpolating them between
+     * simulated steady frames is exact: the total equals full cycle mode's.
+     * Interpolating from frame 0 (the earlier rule) put frames 2 and 3 on
+     * the line from the warm-up to frame 4.  With tile sampling inside the
+     * frames too, the quads with materials between their vertices must
+     * still reach the sampled tiles (they were all dropped). */
+    enum { NF = 8 };
+    static const int simulated[NF] = {1, 1, 0, 0, 1, 0, 0, 1};
+    uint64_t per_frame[NF] = {0}, total[3] = {0, 0, 0}, frags[3] = {0, 0, 0};
+    for (int m = 0; m < 3; m++) {
+        fs_run_config cfg;
+        fs_run_config_defaults(&cfg);
+        cfg.cycle.sampling_frames = 3;
+        cfg.cycle.sampling_frame_tiles = m == 2 ? 4 : 1;
+        cfg.cycle.sampling_tile_size = 8;
+        fs_cycle *cy;
+        fs_context *c = new_context(&cfg, &cy, m ? FS_CYCLE_SAMPLED : FS_CYCLE_FULL);
+        fs_cycle_set_frames(cy, NF);
+        fsglEnable(c, GL_DEPTH_TEST);
+        fsglEnable(c, GL_LIGHTING);
+        fsglEnable(c, GL_LIGHT0);
+        uint64_t before = 0;
+        for (int f = 0; f < NF; f++) {
+            if (m)
+                CHECK_EQ_INT(!fs_cycle_frame_skipped(cy), simulated[f]);
+            if (!fs_cycle_frame_skipped(cy))
+                warmup_frame(c, f == 0 ? 6 : 1);
+            fs_cycle_stats st;
+            fs_cycle_frame_end(cy, &st);
+            if (m == 0)
+                per_frame[f] = st.cycles;
+            if (m == 0 && !simulated[f])
+                frags[0] -= c->stats.fragments_generated - before; /* drawn here only */
+            before = c->stats.fragments_generated;
+        }
+        frags[m] += c->stats.fragments_generated; /* the rasterized ones */
+        CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+        fs_cycle_finish(cy);
+        fs_cycle_stats t;
+        fs_cycle_totals(cy, &t);
+        total[m] = t.cycles;
+        fs_cycle_destroy(cy);
+        fs_context_destroy(c);
+    }
+    CHECK(per_frame[0] > per_frame[1] * 2);
+    for (int f = 2; f < NF; f++)
+        CHECK_EQ_UINT(per_frame[f], per_frame[1]);
+    CHECK(total[0] > 0);
+    CHECK_EQ_UINT(total[1], total[0]);
+    CHECK_EQ_UINT(frags[1], frags[0]);
+    /* one tile in 4 rasterized: about a quarter of the fragments, not none */
+    CHECK(frags[2] > frags[0] / 8 && frags[2] < frags[0] / 2);
+}
+
+TEST(frame_sampling_short_traces)
+{
+    /* 3 to 5 frames: too few to sample with an estimate, simulated in full
+     * (no frame skipped, no tile or draw sampling: the cycles equal full
+     * cycle mode's); 6 frames: frames 0, 1, 3 and 5 simulated (step
+     * (6 - 2) / 2 = 2 under the default 7); 1 frame: tile sampling. */
+    for (int nf = 1; nf <= 6; nf++) {
+        uint64_t total[2] = {0, 0};
+        int skipped = 0;
+        for (int m = 0; m < 2; m++) {
+            fs_run_config cfg;
+            fs_run_config_defaults(&cfg);
+            fs_cycle *cy;
+            fs_context *c = new_context(&cfg, &cy, m ? FS_CYCLE_SAMPLED : FS_CYCLE_FULL);
+            fs_cycle_set_frames(cy, (uint64_t)nf);
+            if (m)
+                CHECK_EQ_INT(fs_cycle_too_short(cy), nf >= 3 && nf <= 5);
+            for (int f = 0; f < nf; f++) {
+                if (m && fs_cycle_frame_skipped(cy)) {
+                    CHECK_EQ_INT(nf == 6 && (f == 2 || f == 4), 1);
+                    skipped++;
+                } else {
+                    warmup_frame(c, f == 0 ? 3 : 1);
+                }
+                fs_cycle_stats st;
+                fs_cycle_frame_end(cy, &st);
+            }
+            fs_cycle_finish(cy);
+            fs_cycle_stats t;
+            fs_cycle_totals(cy, &t);
+            total[m] = t.cycles;
+            fs_cycle_destroy(cy);
+            fs_context_destroy(c);
+        }
+        CHECK_EQ_INT(skipped, nf == 6 ? 2 : 0);
+        if (nf >= 3 && nf <= 5)
+            CHECK_EQ_UINT(total[1], total[0]);
+        if (nf == 1)
+            CHECK(total[1] != total[0]); /* tile-sampled: an estimate */
+    }
+}
+
 TEST_LIST = {
     TEST_ENTRY(readback_reproduces_footnote_5),
     TEST_ENTRY(readback_closed_form),
@@ -758,6 +880,8 @@ TEST_LIST = {
     TEST_ENTRY(tile_sample_lighting_exact),
     TEST_ENTRY(tile_sample_charged_triangles_as_rasterized),
     TEST_ENTRY(draw_sample_fill_keeps_sampled_tiles_exact),
+    TEST_ENTRY(frame_sampling_warmup_frame),
+    TEST_ENTRY(frame_sampling_short_traces),
     TEST_END,
 };
 
