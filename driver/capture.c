@@ -355,7 +355,7 @@ static fs_tval scalar_val(const fs_cmd_info *info, int k, const char *argname, c
         t.type = FS_TV_OPAQUE;
         t.u = (uint64_t)(uintptr_t)a->p;
         return t;
-    case FS_K_OV: case FS_K_P:
+    case FS_K_OV: case FS_K_OUB: case FS_K_P:
         /* apitrace writes glReadPixels' pixels (Out(GLpointer)) as an opaque
          * pointer, and glMapBuffer's result. */
         if (!a->out)
@@ -421,7 +421,8 @@ void fs_capture_call(fs_context *c, const fs_call *call)
     for (unsigned i = 0; i < info->nargs; i++) {
         int k = info->kinds[i];
         const fs_arg *a = &call->a[i];
-        if (k == FS_K_OV || k == FS_K_OF || k == FS_K_OD || k == FS_K_OI || k == FS_K_OU || k == FS_K_OUS || k == FS_K_OB)
+        if (k == FS_K_OV || k == FS_K_OF || k == FS_K_OD || k == FS_K_OI || k == FS_K_OU || k == FS_K_OUS || k == FS_K_OB ||
+            k == FS_K_OUB)
             tc.out_args |= 1ull << i;
         if (is_array_kind(k)) {
             memset(&args[i], 0, sizeof args[i]);

@@ -152,6 +152,7 @@ static uint32_t count_u32(int64_t n)
 #define FS_PK_OU FS_PK_OUT
 #define FS_PK_OUS FS_PK_OUT
 #define FS_PK_OB FS_PK_OUT
+#define FS_PK_OUB FS_PK_OUT
 #define FS_PK_IP FS_PK_INT
 #define FS_PK_OP FS_PK_OUT
 #define FS_PACK(k, kind, name, cnt) FS_PK_##kind(call.a[k], name, cnt);
@@ -285,6 +286,7 @@ void fs_driver_state_free(fs_context *c)
 #define FS_CK_OU FS_CK_OUT
 #define FS_CK_OUS FS_CK_OUT
 #define FS_CK_OB FS_CK_OUT
+#define FS_CK_OUB FS_CK_OUT
 #define FS_CK_IP FS_CK_NONE
 #define FS_CK_OP FS_CK_OUT
 #define FS_CHECK(k, kind, name, cnt) FS_CK_##kind(k, name, cnt, FS_ESIZE_##kind)
@@ -566,6 +568,7 @@ static int dispatch_call(fs_context *c, fs_call *call)
 #define FS_VCK_OU FS_VCK_E
 #define FS_VCK_OUS FS_VCK_E
 #define FS_VCK_OB FS_VCK_E
+#define FS_VCK_OUB FS_VCK_E
 #define FS_VCK_IP FS_VCK_E
 #define FS_VCK_OP FS_VCK_E
 #define FS_VCK_AF FS_VCK_ARR

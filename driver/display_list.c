@@ -173,7 +173,8 @@ void fs_dlist_compile(fs_context *c, const fs_call *call)
     e->has_unpack = call->cmd == FS_CMD_TexImage2D || call->cmd == FS_CMD_TexSubImage2D ||
                     call->cmd == FS_CMD_TexImage1D || call->cmd == FS_CMD_TexSubImage1D ||
                     call->cmd == FS_CMD_TexImage3D || call->cmd == FS_CMD_TexSubImage3D ||
-                    call->cmd == FS_CMD_Bitmap || call->cmd == FS_CMD_DrawPixels;
+                    call->cmd == FS_CMD_Bitmap || call->cmd == FS_CMD_DrawPixels ||
+                    call->cmd == FS_CMD_PolygonStipple;
     e->unpack = fs_pixel_store_unpack(c);
     const fs_cmd_info *info = &fs_cmd_table[call->cmd];
     for (int i = 0; i < info->nargs; i++) {

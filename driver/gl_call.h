@@ -22,7 +22,7 @@ typedef struct fs_context fs_context;
     X(V)   X(E)   X(BM)  X(B)   X(I)   X(U)   X(SZ)  X(UB)  X(BY)  X(S)  X(US) \
     X(F)   X(D)   X(CF)  X(CD)  \
     X(AF)  X(AD)  X(AI)  X(AU)  X(AUB) X(ABY) X(AS)  X(AUS) \
-    X(BLOB) X(CPTR) X(OV) X(OF) X(OD) X(OI) X(OU) X(OUS) X(OB) X(STR) \
+    X(BLOB) X(CPTR) X(OV) X(OF) X(OD) X(OI) X(OU) X(OUS) X(OB) X(OUB) X(STR) \
     X(IP) X(OP) X(P)
 
 enum fs_kind {
@@ -65,6 +65,9 @@ enum fs_kind {
 #define FS_CT_OU GLuint *
 #define FS_CT_OUS GLushort * /* glGetPixelMapusv */
 #define FS_CT_OB GLboolean *
+/* glGetPolygonStipple's mask: bytes like OV (apitrace records an opaque
+ * pointer), typed as the GL prototype. */
+#define FS_CT_OUB GLubyte *
 #define FS_CT_STR const GLubyte *
 /* GL 1.5's GLintptr and GLsizeiptr (the same C type), glGetBufferPointerv's
  * output and glMapBuffer's result. */

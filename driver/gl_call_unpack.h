@@ -43,6 +43,7 @@
 #define FS_UP_OUS FS_UP_OUT
 #define FS_UP_OU FS_UP_OUT
 #define FS_UP_OB FS_UP_OUT
+#define FS_UP_OUB FS_UP_OUT
 #define FS_UP_IP FS_UP_INT
 #define FS_UP_OP FS_UP_OUT
 #define FS_LOCAL(k, kind, name, cnt) FS_CT_##kind name = FS_UP_##kind(FS_CT_##kind, call->a[k]);
@@ -53,6 +54,7 @@
 #define FS_ESIZE_OI sizeof(GLint)
 #define FS_ESIZE_OU sizeof(GLuint)
 #define FS_ESIZE_OB sizeof(GLboolean)
+#define FS_ESIZE_OUB 1
 #define FS_ESIZE_OUS sizeof(GLushort)
 #define FS_ESIZE_OP sizeof(GLvoid *)
 #define FS_ESIZE_IP 0

@@ -453,7 +453,7 @@ static int convert(fs_replayer *r, const fs_tcall *tc, int cmd, fs_call *call)
                 return -1;
             }
             break;
-        case FS_K_OV: case FS_K_OF: case FS_K_OD: case FS_K_OI: case FS_K_OU: case FS_K_OUS: case FS_K_OB: case FS_K_OP:
+        case FS_K_OV: case FS_K_OF: case FS_K_OD: case FS_K_OI: case FS_K_OU: case FS_K_OUS: case FS_K_OB: case FS_K_OUB: case FS_K_OP:
             a->out = NULL; /* the dispatcher provides scratch space */
             /* ... except to the selection and feedback buffers, written
              * after the call: the traced program's, never ours. */

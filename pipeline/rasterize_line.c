@@ -252,6 +252,7 @@ void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
     /* Attribute planes from the vertices in their original order. */
     fs_prim_setup s;
     s.front = true;
+    s.stipple = NULL; /* polygon stipple: filled polygons only (3.5.6) */
     s.height = H;
     s.use_tex = r->interpolate_tex;
     s.use_fog = r->interpolate_fog;

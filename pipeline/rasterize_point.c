@@ -117,6 +117,7 @@ void fs_raster_point(fs_context *c, const fs_rvertex *v)
 
     fs_prim_setup s;
     s.front = true;
+    s.stipple = NULL; /* polygon stipple: filled polygons only (3.5.6) */
     s.height = H;
     s.use_tex = r->interpolate_tex;
     s.use_fog = r->interpolate_fog;

@@ -51,6 +51,8 @@ void fs_raster_state_init(fs_raster_state *r, int subpixel_bits)
     r->offset_factor = 0.0f;
     r->offset_units = 0.0f;
     r->polygon_mode[0] = r->polygon_mode[1] = GL_FILL;
+    for (int i = 0; i < 32; i++)
+        r->stipple[i] = 0xffffffffu;
     r->point_size = 1.0f;
     r->line_width = 1.0f;
     r->subpixel_bits = subpixel_bits < 1 ? 8 : subpixel_bits > 12 ? 12 : subpixel_bits;
@@ -239,6 +241,18 @@ void fs_raster_emit_quad(fs_context *c, const fs_prim_setup *s, fs_quad *q)
     if (c->observer && fs_tile_mask_drops_quad(&c->observer->mask, q->x, q->y))
         return;
     unsigned m = q->mask;
+    if (s->stipple) {
+        /* Polygon stipple (3.5.6): window-aligned, so the quad's two rows
+         * and two columns (q->x and q->y are even) pick two adjacent bits
+         * of two pattern rows. */
+        unsigned k = (unsigned)q->x & 31u;
+        unsigned lo = (s->stipple[(unsigned)q->y & 31u] >> k) & 3u;
+        unsigned hi = (s->stipple[((unsigned)q->y + 1u) & 31u] >> k) & 3u;
+        m &= lo | hi << 2;
+        if (!m)
+            return;
+        q->mask = m;
+    }
     q->front_facing = s->front;
     c->stats.quads_generated++;
     c->stats.fragments_generated += (unsigned)((0x4332322132212110ull >> (4 * (m & 0xfu))) & 0xfu);
@@ -609,6 +623,9 @@ static void raster_triangle(fs_context *c, const fs_rvertex *const v[3], const f
     }
 
     s.aa_shade = aa_shade;
+    /* Stipple applies to filled polygons only; the triangles of smooth
+     * lines and points come with it off (draw_get_rasterizer_no_cull). */
+    s.stipple = r->polygon_stipple && !aa_shade ? r->stipple : NULL;
     if (aa_shade)
         for (int k = 0; k < 4; k++) {
             const float *aa0 = aa[idx[0]], *aa1 = aa[idx[1]], *aa2 = aa[idx[2]];

@@ -115,6 +115,12 @@ typedef struct fs_raster_state {
      * same with it (measured on OSMesa, blending on and off: identical
      * bytes), having no antialiased-triangle stage. */
     bool polygon_smooth;
+    /* GL_POLYGON_STIPPLE and glPolygonStipple's pattern (3.5.6): row r is
+     * window rows y with y mod 32 = r, bit k of it window columns x with x
+     * mod 32 = k; a fragment of a filled polygon is kept only where the
+     * bit is 1.  Initially all ones (table 6.14). */
+    bool polygon_stipple;
+    uint32_t stipple[32];
     int subpixel_bits;          /* from the config, default 8 */
     /* Set by texturing when a texture unit is enabled: interpolating the four
      * texture coordinates costs as much as the colour, so it is skipped

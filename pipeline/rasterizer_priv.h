@@ -44,6 +44,9 @@ typedef struct fs_prim_setup {
      * fragment's alpha or kills it.  aa_shade NULL: no such attribute. */
     fs_plane aa[4];
     void (*aa_shade)(fs_quad *q);
+    /* Filled polygons with GL_POLYGON_STIPPLE on: fs_raster_state.stipple,
+     * which masks each quad; NULL otherwise (lines, points). */
+    const uint32_t *stipple;
 } fs_prim_setup;
 
 /* Quantises a window depth like llvmpipe's unorm depth conversion. */

@@ -178,7 +178,7 @@ static bool make_call(input *in, arena *ar, fs_call *call)
             a->is_data = 1;
             break;
         }
-        case FS_K_OV: case FS_K_OF: case FS_K_OD: case FS_K_OI: case FS_K_OU: case FS_K_OUS: case FS_K_OB: case FS_K_OP:
+        case FS_K_OV: case FS_K_OF: case FS_K_OD: case FS_K_OI: case FS_K_OU: case FS_K_OUS: case FS_K_OB: case FS_K_OUB: case FS_K_OP:
             a->out = NULL; /* as from a trace: the dispatcher gives scratch space */
             break;
         case FS_K_STR: {
