@@ -6,16 +6,56 @@
 # mode on the scene corpus; and regenerates docs/performance.md from the
 # numbers it measured.
 # Not a test: nothing here passes or fails on speed.
+# BENCH_QUICK=1: one run each, the first 3 corpus programs, no softpipe, cycle
+# or unused-unit sections, and the page goes to $OUT/performance.md (not docs/)
+# unless BENCH_DOC says otherwise: a check that the script works, not numbers.
 set -euo pipefail
 BUILD=${1:-build}
+QUICK=${BENCH_QUICK:-0}
+if [ "$QUICK" = 1 ]; then REPEAT=1; fi
 REPEAT=${REPEAT:-5}
 OUT=${BENCH_OUT:-$BUILD/bench}
-DOC=${BENCH_DOC:-docs/performance.md}
+if [ "$QUICK" = 1 ]; then DOC=${BENCH_DOC:-$OUT/performance.md}; else DOC=${BENCH_DOC:-docs/performance.md}; fi
 mkdir -p "$OUT"
 json() { sed -nE -e "s/.*\"$2\": \"([^\"]*)\".*/\1/p" -e t -e "s/.*\"$2\": ([^,}]*).*/\1/p" <<<"$1"; }
+# run_rss FILE CMD...: CMD's stdout, its peak resident set (KB, the whole
+# process: the untimed first replay and the timed ones) into FILE.
+run_rss() { local f=$1; shift; /usr/bin/time -f '%M' -o "$f" "$@"; }
 
-rows=()
-for scene in bench8 bench32; do
+# ---- the conformance corpus's real programs (tests/conformance/programs) ----
+# fragsim bench --engine osmesa is the llvmpipe side: fragsim's trace decoder
+# (outside the timed part: load_seconds) feeding libOSMesa from C, so no
+# python replay overhead is timed.  LP_NUM_THREADS=1 and llvmpipe's default.
+progs=(tests/conformance/programs/*.trace)
+if [ "$QUICK" = 1 ]; then progs=("${progs[@]:0:3}"); fi
+prows=()
+logsum1=0 logsumN=0 nprog=0
+for trace in "${progs[@]}" bench8 bench32; do
+    case $trace in bench*) name=$trace; trace="$OUT/$name.trace"
+        "$BUILD/scenegen" "$name" --scale paper -o "$trace" >/dev/null ;;
+        *) name=$(basename "$trace" .trace) ;; esac
+    m=$(run_rss "$OUT/rss_m" "$BUILD/fragsim" bench --engine model --repeat "$REPEAT" "$trace")
+    l1=$(LP_NUM_THREADS=1 run_rss "$OUT/rss_1" "$BUILD/fragsim" bench --engine osmesa --repeat "$REPEAT" "$trace")
+    lN=$(run_rss "$OUT/rss_n" "$BUILD/fragsim" bench --engine osmesa --repeat "$REPEAT" "$trace")
+    row=$(awk -v s="$name" -v fr="$(json "$m" frames)" -v r="$REPEAT" -v tm="$(json "$m" seconds)" \
+        -v t1="$(json "$l1" seconds)" -v tn="$(json "$lN" seconds)" -v mm="$(tail -n 1 "$OUT/rss_m")" \
+        -v m1="$(tail -n 1 "$OUT/rss_1")" -v mn="$(tail -n 1 "$OUT/rss_n")" 'BEGIN {
+        printf "| %s | %d | %.4f | %.4f | %.4f | %.2f | %.2f | %.1f | %.1f | %.1f |", s, fr / r, tm / r, t1 / r, tn / r,
+            tm / t1, tm / tn, mm / 1024, m1 / 1024, mn / 1024 }')
+    prows+=("$row")
+    echo "$row"
+    read -r a b < <(awk -v tm="$(json "$m" seconds)" -v t1="$(json "$l1" seconds)" -v tn="$(json "$lN" seconds)" \
+        'BEGIN { print log(tm / t1), log(tm / tn) }')
+    logsum1=$(awk -v x="$logsum1" -v y="$a" 'BEGIN { print x + y }')
+    logsumN=$(awk -v x="$logsumN" -v y="$b" 'BEGIN { print x + y }')
+    nprog=$((nprog + 1))
+done
+geo=$(awk -v a="$logsum1" -v b="$logsumN" -v n="$nprog" 'BEGIN { printf "%.2f x llvmpipe 1 thread, %.2f x llvmpipe default threads", exp(a / n), exp(b / n) }')
+echo "geometric mean of fragsim / llvmpipe time over $nprog traces: $geo"
+
+rows=() crows=() unused="not measured (BENCH_QUICK=1)"
+llvm='{"renderer": "not run"}' soft=$llvm
+[ "$QUICK" = 1 ] || for scene in bench8 bench32; do
     trace="$OUT/$scene.trace"
     "$BUILD/scenegen" "$scene" --scale paper -o "$trace" >/dev/null
     model=$("$BUILD/fragsim" bench --engine model --repeat "$REPEAT" "$trace")
@@ -39,8 +79,7 @@ CYCLE_REPEAT=${CYCLE_REPEAT:-3}
 CYCLE_SCALE=${CYCLE_SCALE:-100000}
 CYCLE_FRAMES=${CYCLE_FRAMES:-20}
 CFG=configs/o2.ini
-crows=()
-for scene in city norwich cathedrals forest garbage terrain demo textured bench8 bench32; do
+[ "$QUICK" = 1 ] || for scene in city norwich cathedrals forest garbage terrain demo textured bench8 bench32; do
     trace="$OUT/cycle_$scene.trace"
     case $scene in city) scale=paper ;; demo|textured) scale=small ;; *) scale=$CYCLE_SCALE ;; esac
     frames=(); case $scene in bench*) ;; *) frames=(--frames "$CYCLE_FRAMES") ;; esac
@@ -60,6 +99,7 @@ done
 # What an unused unit costs: city (no texturing, Occlusion Unit idle) in cycle
 # mode with and without texture units and Occlusion Units; best of 5 each,
 # interleaved so that load on the machine hits both alike.
+if [ "$QUICK" != 1 ]; then
 trace="$OUT/cycle_city.trace"
 { cat "$CFG"; printf '[texture]\npresent = false\n[occlusion]\npresent = false\n'; } >"$OUT/o2_without.ini"
 best_with=999999 best_without=999999
@@ -71,6 +111,7 @@ for i in 1 2 3 4 5; do
 done
 unused=$(awk -v a="$best_with" -v b="$best_without" 'BEGIN { printf "%.3f s with, %.3f s without: %+.1f%%", a, b, 100 * (a - b) / b }')
 echo "unused units: $unused"
+fi
 
 llvm_name=$(json "$llvm" renderer)
 soft_name=$(json "$soft" renderer)
@@ -82,6 +123,24 @@ cpu=$(sed -nE 's/^model name\s*: (.*)/\1/p' /proc/cpuinfo | head -n 1)
     echo "Each trace is replayed $REPEAT times per engine, in separate processes, on one core"
     echo "of: ${cpu:-unknown CPU}.  Fragments are those the model's rasterizer generates (the"
     echo "same work for every engine); rates are fragments per second of replay time."
+    echo
+    echo "## Real programs: the conformance corpus against llvmpipe"
+    echo
+    echo "\`fragsim bench --engine model|osmesa --repeat $REPEAT\` on each program trace of"
+    echo "tests/conformance/programs and on bench8/bench32; seconds per run, of the replay from the"
+    echo "decoded calls (decoding is outside, the same C decoder for both engines, so no Python"
+    echo "replayer overhead).  llvmpipe through libOSMesa with LP_NUM_THREADS=1 and with its"
+    echo "default thread count ($(nproc) CPUs here).  Ratio: fragsim time / llvmpipe time (above 1:"
+    echo "fragsim slower).  Peak memory: maximum resident set of the whole process"
+    echo "(/usr/bin/time), the untimed first replay included."
+    echo
+    echo "| trace | frames | fragsim s | llvmpipe 1T s | llvmpipe s | fragsim / llvmpipe 1T | fragsim / llvmpipe | fragsim MB | llvmpipe 1T MB | llvmpipe MB |"
+    echo "|---|---|---|---|---|---|---|---|---|---|"
+    printf '%s\n' "${prows[@]}"
+    echo
+    echo "Geometric mean over the $nprog traces: $geo."
+    echo
+    echo "## Synthetic throughput: fragsim, llvmpipe and softpipe"
     echo
     echo "| trace | fragments per frame | fragsim M frag/s | llvmpipe M frag/s | softpipe M frag/s | fragsim / llvmpipe | fragsim / softpipe |"
     echo "|---|---|---|---|---|---|---|"
