@@ -21,6 +21,8 @@ static void secondary3(fs_context *c, float r, float g, float b)
     s[1] = g;
     s[2] = b;
     s[3] = 1.0f;
+    if (c->prim.inside_begin)
+        c->prim.color_varies = true; /* per-vertex (fs_prim_state) */
 }
 
 /* Each type as glColor converts it (table 2.9), scalar and vector forms. */

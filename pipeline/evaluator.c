@@ -556,6 +556,7 @@ static void eval_coord(fs_context *c, int dim, float u, float v)
     if (on[MAP_COLOR4]) {
         map_eval(&m[MAP_COLOR4], dim, 4, u, v, x);
         memcpy(c->current.color, x, sizeof c->current.color);
+        c->prim.color_varies = true; /* per-vertex colours (fs_prim_state) */
     }
     if (on[MAP_NORMAL]) {
         map_eval(&m[MAP_NORMAL], dim, 3, u, v, x);

@@ -148,6 +148,7 @@ void fs_exec_Begin(fs_context *c, GLenum mode)
     c->prim.inside_begin = true;
     c->prim.mode = mode;
     c->prim.count = 0;
+    c->prim.color_varies = false;
     if (fs_vs(c)) {
         fs_vs(c)->iv_n = 0;
         fs_vs(c)->mat_seg_n = 0;
@@ -319,6 +320,8 @@ static void color4(fs_context *c, float r, float g, float b, float a)
     c->current.color[1] = g;
     c->current.color[2] = b;
     c->current.color[3] = a;
+    if (c->prim.inside_begin)
+        c->prim.color_varies = true;
     /* Outside Begin/End the tracked material follows at once (2.14.3);
      * inside, each vertex carries its colour to the lighting step. */
     if (c->lighting.color_material && !c->prim.inside_begin)

@@ -412,6 +412,12 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     c->raster.interpolate_fog = s->fog;
     fs_color_sum_setup(c, s);
     fs_lighting_setup(c, s);
+    /* Unlit and not per-vertex (fs_prim_state.color_varies): llvmpipe's
+     * fragments get the current colour exactly, as a uniform, where
+     * interpolating c/w and 1/w (GL 1.5 spec 3.5.1 eq. 3.7) can land an ulp
+     * off and round to the other 8-bit value at a half (0.1 -> 25.5). */
+    if (!s->lighting && !c->prim.color_varies)
+        c->raster.flat_color = true;
     fs_texgen_setup(c, s);
     /* Draws of one object share a modelview: invert it once (the
      * persistent setup of the context keeps the last one). */
@@ -825,6 +831,7 @@ static void draw_batch(fs_context *c, GLenum mode, size_t n, const uint32_t *idx
         fs_error(c, GL_OUT_OF_MEMORY);
         return;
     }
+    c->prim.color_varies = c->arrays.color.enabled || c->arrays.secondary_color.enabled;
     fs_vs_prepare(c, &v->setup);
     if (c->arrays.edge_flag.enabled) {
         /* The batch vertices' edge flags from the array (GL 1.5 spec 2.6.2,

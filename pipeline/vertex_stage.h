@@ -141,6 +141,12 @@ typedef struct fs_prim_state {
     bool inside_begin;
     GLenum mode;
     int count;               /* vertices since glBegin */
+    /* A colour command (primary or secondary) between glBegin and glEnd, or
+     * a colour array in a draw: the colours are per-vertex.  Otherwise, with
+     * lighting off, every vertex has the current colour and Mesa hands it to
+     * llvmpipe's fragment shader as a uniform (measured: tests/
+     * test_line_colour.c), so it is not interpolated (fs_vs_prepare). */
+    bool color_varies;
     /* Nonzero while a display list executes.  Mesa compiles list contents
      * into indexed draws, which split GL_QUADS along the other diagonal
      * than immediate mode does; driver/display_list.c increments it around
