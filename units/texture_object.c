@@ -24,6 +24,7 @@ static void object_defaults(fs_tex_object *t, GLuint name)
     t->mag_filter = GL_LINEAR;
     t->wrap_s = t->wrap_t = t->wrap_r = GL_REPEAT;
     t->priority = 1.0f;
+    t->swizzle[0] = GL_RED, t->swizzle[1] = GL_GREEN, t->swizzle[2] = GL_BLUE, t->swizzle[3] = GL_ALPHA;
     t->footprint_budget = 16;
     t->footprint_snap = GL_FOOTPRINT_SNAP_INTEGER_FRAGSIM;
     fs_tex_lod_defaults(t);
@@ -751,7 +752,13 @@ static bool is_min_filter(GLenum f)
 static bool is_wrap(GLenum w)
 {
     return w == GL_REPEAT || w == GL_CLAMP || w == GL_CLAMP_TO_EDGE || w == GL_CLAMP_TO_BORDER ||
-           w == GL_MIRRORED_REPEAT;
+           w == GL_MIRRORED_REPEAT || w == GL_MIRROR_CLAMP_EXT || w == GL_MIRROR_CLAMP_TO_EDGE_EXT ||
+           w == GL_MIRROR_CLAMP_TO_BORDER_EXT; /* EXT_texture_mirror_clamp, which llvmpipe offers */
+}
+
+static bool is_swizzle(GLenum e)
+{
+    return e == GL_RED || e == GL_GREEN || e == GL_BLUE || e == GL_ALPHA || e == GL_ZERO || e == GL_ONE;
 }
 
 /* An enum passed through glTexParameterf or glTexEnvf is truncated to an
@@ -802,6 +809,26 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
             break;
         *(pname == GL_TEXTURE_WRAP_S ? &t->wrap_s : pname == GL_TEXTURE_WRAP_T ? &t->wrap_t : &t->wrap_r) = e;
         return;
+    case GL_TEXTURE_SWIZZLE_R:
+    case GL_TEXTURE_SWIZZLE_G:
+    case GL_TEXTURE_SWIZZLE_B:
+    case GL_TEXTURE_SWIZZLE_A:
+        /* EXT_texture_swizzle: one of six sources, else INVALID_ENUM. */
+        if (!is_swizzle(e))
+            break;
+        t->swizzle[pname - GL_TEXTURE_SWIZZLE_R] = e;
+        return;
+    case GL_TEXTURE_SWIZZLE_RGBA: {
+        /* Vector forms only; all four are checked before any is set. */
+        if (!vector)
+            break;
+        GLenum sw[4];
+        for (int k = 0; k < 4; k++)
+            if (!is_swizzle(sw[k] = float_to_enum(vals[k])))
+                goto bad_enum;
+        memcpy(t->swizzle, sw, sizeof sw);
+        return;
+    }
     case GL_TEXTURE_BORDER_COLOR:
         if (!vector)
             break;
@@ -833,6 +860,7 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
         return;
     }
     }
+bad_enum:
     fs_error(c, GL_INVALID_ENUM);
 }
 
@@ -876,6 +904,9 @@ void fs_exec_TexParameteriv(fs_context *c, GLenum target, GLenum pname, const GL
 {
     float v[4];
     vector_from_iv(v, params, pname == GL_TEXTURE_BORDER_COLOR);
+    if (pname == GL_TEXTURE_SWIZZLE_RGBA) /* four enums, not a colour */
+        for (int k = 0; k < 4; k++)
+            v[k] = (float)params[k];
     tex_parameter(c, target, pname, v, true);
     fs_texture_enables_changed(c);
 }
@@ -883,7 +914,7 @@ void fs_exec_TexParameteriv(fs_context *c, GLenum target, GLenum pname, const GL
 void fs_exec_TexParameterfv(fs_context *c, GLenum target, GLenum pname, const GLfloat *params)
 {
     float v[4];
-    vector_from_fv(v, params, pname == GL_TEXTURE_BORDER_COLOR);
+    vector_from_fv(v, params, pname == GL_TEXTURE_BORDER_COLOR || pname == GL_TEXTURE_SWIZZLE_RGBA);
     fs_tex_lod_vector_form(pname, v);
     tex_parameter(c, target, pname, v, true);
     fs_texture_enables_changed(c);
@@ -1104,6 +1135,13 @@ static int tex_parameter_value(const fs_tex_object *t, GLenum pname, tex_param_v
     case GL_TEXTURE_WRAP_R: v[0] = (float)t->wrap_r; return 1;
     case GL_TEXTURE_BORDER_COLOR: memcpy(v, t->border, 4 * sizeof *v); p->norm = true; return 4;
     case GL_TEXTURE_PRIORITY: v[0] = t->priority; p->norm = true; return 1;
+    case GL_TEXTURE_SWIZZLE_R: case GL_TEXTURE_SWIZZLE_G: case GL_TEXTURE_SWIZZLE_B: case GL_TEXTURE_SWIZZLE_A:
+        v[0] = (float)t->swizzle[pname - GL_TEXTURE_SWIZZLE_R];
+        return 1;
+    case GL_TEXTURE_SWIZZLE_RGBA:
+        for (int k = 0; k < 4; k++)
+            v[k] = (float)t->swizzle[k];
+        return 4;
     /* 3.8.12: a texture of the model is always resident. */
     case GL_TEXTURE_RESIDENT: v[0] = 1.0f; return 1;
     /* GL_FRAGSIM_footprint_filter */

@@ -39,6 +39,9 @@ typedef struct fs_tex_object {
     GLenum wrap_r;              /* GL 1.2 (3.8.4), sampled for 3D textures only */
     float border[4];
     float priority;
+    /* EXT_texture_swizzle: the source of each of R, G, B, A (GL_RED..
+     * GL_ALPHA, GL_ZERO, GL_ONE), applied to the filtered texel. */
+    GLenum swizzle[4];
     /* GL_FRAGSIM_footprint_filter: the budget M and the corner snapping. */
     int footprint_budget;
     GLenum footprint_snap;

@@ -373,6 +373,21 @@ static int nearest_coord_f(float s, int len, GLenum wrap)
         int x = to_int_floor(s * lf);
         return x < -1 ? -1 : x > len ? len : x;
     }
+    case GL_MIRROR_CLAMP_EXT:
+    case GL_MIRROR_CLAMP_TO_EDGE_EXT: {
+        /* EXT_texture_mirror_clamp: mirror once about 0, then clamp; for
+         * NEAREST both clamp to the edge texel (gallivm: |s * len|
+         * truncated, min len - 1). The clamp in float first keeps the
+         * conversion defined for huge s. */
+        float u = fabsf(s * lf);
+        int x = u < lf ? to_int_floor(u) : len - 1;
+        return x < len - 1 ? x : len - 1;
+    }
+    case GL_MIRROR_CLAMP_TO_BORDER_EXT: {
+        /* |s * len| truncated; len and beyond read the border. */
+        float u = fabsf(s * lf);
+        return u < lf ? to_int_floor(u) : len;
+    }
     default: { /* CLAMP, CLAMP_TO_EDGE */
         int x = to_int_floor(s * lf);
         return x < 0 ? 0 : x >= len ? len - 1 : x;
@@ -394,6 +409,28 @@ static void linear_coord_f(float s, int len, GLenum wrap, int *i0, int *i1, floa
         int x0 = to_int_floor(fl);
         *i0 = x0 > 0 ? x0 : 0;
         *i1 = x0 + 1 < len - 1 ? x0 + 1 : len - 1;
+        return;
+    }
+    if (wrap == GL_MIRROR_CLAMP_EXT || wrap == GL_MIRROR_CLAMP_TO_EDGE_EXT ||
+        wrap == GL_MIRROR_CLAMP_TO_BORDER_EXT) {
+        /* EXT_texture_mirror_clamp in gallivm's order: |s * len|, clamped
+         * to len (MIRROR_CLAMP: a pair may reach the border past it, as
+         * GL_CLAMP's), less half a texel; TO_EDGE then clamps at 0 and
+         * keeps the pair in the image; TO_BORDER reads the border beyond
+         * len (its clamp at len + 1 changes no texel, it keeps the
+         * conversion defined). */
+        u = fabsf(u);
+        float hi = wrap == GL_MIRROR_CLAMP_TO_BORDER_EXT ? lf + 1.0f : lf;
+        u = u < hi ? u : hi;
+        u = u - 0.5f;
+        if (wrap == GL_MIRROR_CLAMP_TO_EDGE_EXT && !(u > 0.0f))
+            u = 0.0f;
+        float fl = floorf(u);
+        *frac = u - fl;
+        *i0 = to_int_floor(fl);
+        *i1 = *i0 + 1;
+        if (wrap == GL_MIRROR_CLAMP_TO_EDGE_EXT && *i1 > len - 1)
+            *i1 = len - 1;
         return;
     }
     if (wrap == GL_CLAMP_TO_BORDER) {
@@ -791,6 +828,22 @@ static bool sample_unit(fs_context *c, fs_quad *q, int u, const fs_quad_tex *qt,
     return true;
 }
 
+/* EXT_texture_swizzle: each component of the filtered texel (border
+ * included, as llvmpipe's sampler view swizzles the sampler's result)
+ * from the source its swizzle names, before the environment. */
+static void apply_swizzle(const fs_tex_object *t, float (*texel)[FS_MAX_TEXTURE_UNITS][4], int u)
+{
+    const GLenum *sw = t->swizzle;
+    if (sw[0] == GL_RED && sw[1] == GL_GREEN && sw[2] == GL_BLUE && sw[3] == GL_ALPHA)
+        return;
+    for (int i = 0; i < 4; i++) {
+        float in[4], *out = texel[i][u];
+        memcpy(in, out, sizeof in);
+        for (int k = 0; k < 4; k++)
+            out[k] = sw[k] == GL_ZERO ? 0.0f : sw[k] == GL_ONE ? 1.0f : in[sw[k] - GL_RED];
+    }
+}
+
 /* 3.8.13: every enabled unit's texel first (a GL_COMBINE source may name
  * another unit's, the crossbar), then the environments unit after unit,
  * each on the previous one's result; tc[u] holds unit u's coordinates. */
@@ -799,8 +852,10 @@ static void texture_units(fs_context *c, fs_quad *q, const fs_quad_tex *tc)
     float texel[4][FS_MAX_TEXTURE_UNITS][4];
     unsigned valid = 0;
     FS_FOR_EACH_UNIT(u, c->raster.tex_mask)
-        if (sample_unit(c, q, (int)u, &tc[u], texel))
+        if (sample_unit(c, q, (int)u, &tc[u], texel)) {
             valid |= 1u << u;
+            apply_swizzle(c->texture->unit[u].bound[fs_tex_unit_target(&c->texture->unit[u])], texel, (int)u);
+        }
     if (!valid)
         return;
     const struct fs_texture_state *st = c->texture;
