@@ -16,6 +16,7 @@
  * GL_CURRENT_SECONDARY_COLOR so); values are not clamped when set. */
 static void secondary3(fs_context *c, float r, float g, float b)
 {
+    fs_vs_attrib_given(c, FS_ATTR_COLOR2);
     float *s = c->current.secondary_color;
     s[0] = r;
     s[1] = g;
