@@ -411,6 +411,16 @@ static bool draw_reads_in_bounds(fs_context *c, const fs_call *call)
 
 /* in_bounds: the caller already checked the draw's reads
  * (draw_reads_in_bounds), which scans its indices. */
+/* glBegin, glGet*, glIs* and glGetError: measured on OSMesa, they leave
+ * Mesa's immediate-mode vertex format as it was (tests/test_constant_attribs.c). */
+static bool is_query(int cmd)
+{
+    if (cmd == FS_CMD_Begin)
+        return true;
+    const char *n = fs_cmd_table[cmd].name;
+    return strncmp(n, "glGet", 5) == 0 || strncmp(n, "glIs", 4) == 0;
+}
+
 static int dispatch(fs_context *c, fs_call *call, bool in_bounds)
 {
     if (call->cmd >= FS_CMD_COUNT)
@@ -422,6 +432,8 @@ static int dispatch(fs_context *c, fs_call *call, bool in_bounds)
         fs_error(c, GL_INVALID_OPERATION);
         return 0;
     }
+    if (c->prim.vtx_attribs && !(fs_cmd_table[call->cmd].flags & FS_F_PRIM) && !is_query(call->cmd))
+        fs_vs_format_reset(c); /* Mesa flushes its immediate vertices (vertex_stage.h) */
     if (!in_bounds && (fs_cmd_table[call->cmd].flags & FS_F_DRAW) && !draw_reads_in_bounds(c, call))
         return 0;
     int pk, slot = fs_pointer_slot(call->cmd, &pk);

@@ -212,6 +212,9 @@ static void execute_list(fs_context *c, GLuint name)
     if (s->depth >= FS_MAX_LIST_NESTING)
         return; /* the spec bounds nesting; deeper calls are ignored */
     s->depth++;
+    /* Calling a list flushes immediate mode's vertices, and a list's
+     * vertices are apart from them (vertex_stage.h, fs_prim_state.vtx_attribs). */
+    fs_vs_format_reset(c);
     /* Mesa splits quads from display lists along another diagonal than
      * immediate mode; the vertex stage needs to know (vertex_stage.h). */
     c->prim.list_depth++;
@@ -233,6 +236,7 @@ static void execute_list(fs_context *c, GLuint name)
     }
     c->prim.list_depth--;
     s->depth--;
+    fs_vs_format_reset(c);
 }
 
 GLuint fs_exec_GenLists(fs_context *c, GLsizei range)

@@ -16,13 +16,12 @@
  * GL_CURRENT_SECONDARY_COLOR so); values are not clamped when set. */
 static void secondary3(fs_context *c, float r, float g, float b)
 {
+    fs_vs_attrib_given(c, FS_ATTR_COLOR2);
     float *s = c->current.secondary_color;
     s[0] = r;
     s[1] = g;
     s[2] = b;
     s[3] = 1.0f;
-    if (c->prim.inside_begin)
-        c->prim.color_varies = true; /* per-vertex (fs_prim_state) */
 }
 
 /* Each type as glColor converts it (table 2.9), scalar and vector forms. */

@@ -556,7 +556,7 @@ static void eval_coord(fs_context *c, int dim, float u, float v)
     if (on[MAP_COLOR4]) {
         map_eval(&m[MAP_COLOR4], dim, 4, u, v, x);
         memcpy(c->current.color, x, sizeof c->current.color);
-        c->prim.color_varies = true; /* per-vertex colours (fs_prim_state) */
+        fs_vs_attrib_given(c, FS_ATTR_COLOR); /* a per-vertex colour, as Mesa's evaluator gives it */
     }
     if (on[MAP_NORMAL]) {
         map_eval(&m[MAP_NORMAL], dim, 3, u, v, x);
@@ -566,6 +566,7 @@ static void eval_coord(fs_context *c, int dim, float u, float v)
     if (t >= 0) {
         map_eval(&m[t], dim, map_components[t], u, v, x);
         memcpy(c->current.texcoord[0], x, sizeof c->current.texcoord[0]);
+        fs_vs_attrib_given(c, FS_ATTR_TEX(0));
     }
     int k = map_components[vtx];
     if (dim == 2 && c->eval.auto_normal) {

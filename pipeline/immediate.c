@@ -148,7 +148,6 @@ void fs_exec_Begin(fs_context *c, GLenum mode)
     c->prim.inside_begin = true;
     c->prim.mode = mode;
     c->prim.count = 0;
-    c->prim.color_varies = false;
     if (fs_vs(c)) {
         fs_vs(c)->iv_n = 0;
         fs_vs(c)->mat_seg_n = 0;
@@ -187,6 +186,18 @@ void fs_vs_material_changed(fs_context *c, const fs_material before[2])
         push_mat_seg(c, v->iv_n, c->lighting.material);
 }
 
+void fs_vs_attrib_given(fs_context *c, unsigned attribs)
+{
+    if (c->prim.inside_begin)
+        c->prim.vtx_attribs |= attribs;
+}
+
+void fs_vs_format_reset(fs_context *c)
+{
+    if (!c->prim.inside_begin) /* glCallList between Begin and End continues the primitive */
+        c->prim.vtx_attribs = 0;
+}
+
 void fs_exec_End(fs_context *c)
 {
     if (!c->prim.inside_begin) {
@@ -207,6 +218,7 @@ void fs_exec_End(fs_context *c)
         return;
     }
     fs_vs_prepare(c, &v->setup);
+    fs_vs_constant_attribs(c, &v->setup, c->prim.vtx_attribs);
     if (v->iv_edge_used)
         v->setup.edge = v->iv_edge;
     v->iv_edge_used = false;
@@ -316,12 +328,11 @@ void fs_exec_Vertex4sv(fs_context *c, const GLshort *v) { vertex4(c, v[0], v[1],
 
 static void color4(fs_context *c, float r, float g, float b, float a)
 {
+    fs_vs_attrib_given(c, FS_ATTR_COLOR);
     c->current.color[0] = r;
     c->current.color[1] = g;
     c->current.color[2] = b;
     c->current.color[3] = a;
-    if (c->prim.inside_begin)
-        c->prim.color_varies = true;
     /* Outside Begin/End the tracked material follows at once (2.14.3);
      * inside, each vertex carries its colour to the lighting step. */
     if (c->lighting.color_material && !c->prim.inside_begin)
@@ -385,6 +396,7 @@ void fs_exec_EdgeFlagv(fs_context *c, const GLubyte *flag) { edge_flag(c, flag[0
  * (texture_coords.c) those of any unit ---- */
 void fs_current_texcoord(fs_context *c, int unit, float s, float t, float r, float q)
 {
+    fs_vs_attrib_given(c, FS_ATTR_TEX(unit));
     float *v = c->current.texcoord[unit];
     v[0] = s;
     v[1] = t;

@@ -51,10 +51,10 @@ static void line_coef(fs_plane *p, const line_info *li, float a1, float a2)
  * provoking (last) vertex's as constants when flat, else divided by w when
  * the line has perspective. */
 static void line_color_planes(fs_plane *p, int n, const line_info *li, const float *ca, const float *cb,
-                              const fs_rvertex *va, const fs_rvertex *vb, const fs_prim_setup *s)
+                              const fs_rvertex *va, const fs_rvertex *vb, const fs_prim_setup *s, bool constant)
 {
     for (int k = 0; k < n; k++) {
-        if (s->color_constant)
+        if (constant)
             fs_plane_constant(&p[k], cb[k]);
         else if (s->perspective)
             line_coef(&p[k], li, ca[k] * va->inv_w, cb[k] * vb->inv_w);
@@ -268,15 +268,20 @@ void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
     else if (s.use_fog)
         line_coef(&s.fog, &li, va->fog, vb->fog);
     /* Flat shading: the provoking colour as a constant (fs_raster_state.flat_color). */
-    s.color_constant = r->flat_color;
+    /* Constant attributes likewise (fs_raster_state.const_attribs). */
+    s.color_constant = r->flat_color || (r->const_attribs & FS_ATTR_COLOR);
+    s.color2_constant = r->flat_color || (r->const_attribs & FS_ATTR_COLOR2);
+    s.tex_constant = r->const_attribs / FS_ATTR_TEX(0);
     s.use_color2 = r->interpolate_color2;
-    line_color_planes(s.color, 4, &li, va->color, vb->color, va, vb, &s);
+    line_color_planes(s.color, 4, &li, va->color, vb->color, va, vb, &s, s.color_constant);
     if (s.use_color2)
-        line_color_planes(s.color2, 3, &li, va->color2, vb->color2, va, vb, &s);
+        line_color_planes(s.color2, 3, &li, va->color2, vb->color2, va, vb, &s, s.color2_constant);
     for (int k = 0; k < 4; k++) {
         if (s.use_tex)
             FS_FOR_EACH_UNIT(u, s.tex_mask) {
-                if (s.perspective)
+                if (s.tex_constant & (1u << u))
+                    fs_plane_constant(&s.tex[u][k], va->tex[u][k]);
+                else if (s.perspective)
                     line_coef(&s.tex[u][k], &li, va->tex[u][k] * va->inv_w, vb->tex[u][k] * vb->inv_w);
                 else
                     line_coef(&s.tex[u][k], &li, va->tex[u][k], vb->tex[u][k]);

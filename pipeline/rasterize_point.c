@@ -131,15 +131,19 @@ void fs_raster_point(fs_context *c, const fs_rvertex *v)
     fs_plane_constant(&s.w, v->inv_w);
     fs_plane_constant(&s.fog, s.perspective ? v->fog * v->inv_w : v->fog);
     /* Flat shading: the colour itself (fs_raster_state.flat_color). */
-    s.color_constant = r->flat_color;
+    /* Constant attributes likewise (fs_raster_state.const_attribs). */
+    s.color_constant = r->flat_color || (r->const_attribs & FS_ATTR_COLOR);
+    s.color2_constant = r->flat_color || (r->const_attribs & FS_ATTR_COLOR2);
+    s.tex_constant = r->const_attribs / FS_ATTR_TEX(0);
     s.use_color2 = r->interpolate_color2;
     for (int k = 0; k < 4; k++) {
         fs_plane_constant(&s.color[k], s.perspective && !s.color_constant ? v->color[k] * v->inv_w : v->color[k]);
         if (k < 3)
-            fs_plane_constant(&s.color2[k], s.perspective && !s.color_constant ? v->color2[k] * v->inv_w : v->color2[k]);
+            fs_plane_constant(&s.color2[k], s.perspective && !s.color2_constant ? v->color2[k] * v->inv_w : v->color2[k]);
         if (s.use_tex)
             FS_FOR_EACH_UNIT(u, s.tex_mask)
-                fs_plane_constant(&s.tex[u][k], s.perspective ? v->tex[u][k] * v->inv_w : v->tex[u][k]);
+                fs_plane_constant(&s.tex[u][k], s.perspective && !(s.tex_constant & (1u << u)) ? v->tex[u][k] * v->inv_w
+                                                                                                 : v->tex[u][k]);
     }
     fs_raster_planes(c, &s, &e);
 }

@@ -145,7 +145,17 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
                 out_[k_] = PLANE_AT(&(planes)[k_], px, py);                       \
         }                                                                         \
     } while (0)
-#define FS_TEX_AT(PLANE_AT, px, py, out) FS_PLANES4_AT(PLANE_AT, s->tex[u], px, py, out)
+/* A unit's coordinates that are constants for the primitive (tex_constant)
+ * are used as they are, without the division. */
+#define FS_TEX_AT(PLANE_AT, px, py, out)                                          \
+    do {                                                                          \
+        if (s->tex_constant & (1u << u)) {                                        \
+            for (int kc_ = 0; kc_ < 4; kc_++)                                     \
+                (out)[kc_] = s->tex[u][kc_].a0;                                   \
+        } else {                                                                  \
+            FS_PLANES4_AT(PLANE_AT, s->tex[u], px, py, out);                      \
+        }                                                                         \
+    } while (0)
 
 #define FS_EMIT_PIXELS(PLANE_AT)                                                  \
     for (int i = 0; i < 4; i++) {                                                 \
@@ -157,14 +167,17 @@ uint32_t fs_raster_quantize_depth(float z, int depth_bits)
          * a0.x of the position), even when it is zero. */                       \
         float z = PLANE_AT(&s->z, px, py) + s->zoffset;                           \
         q->z[i] = quantize_depth(z, depth_bits);                                  \
-        if (s->perspective && !s->color_constant) {                               \
+        if (s->perspective && !(s->color_constant && (s->color2_constant || !s->use_color2))) { \
             /* Perspective-correct (GL 1.5 spec 3.5.1 eq. 3.7): a/w and 1/w are \
-             * linear in window space; llvmpipe divides per pixel. */             \
+             * linear in window space; llvmpipe divides per pixel (not a    \
+             * constant colour: fs_raster_state.const_attribs). */           \
             float oow = 1.0f / PLANE_AT(&s->w, px, py);                           \
             for (int k = 0; k < 4; k++)                                           \
-                q->color[i][k] = PLANE_AT(&s->color[k], px, py) * oow;            \
+                q->color[i][k] = s->color_constant ? PLANE_AT(&s->color[k], px, py) \
+                                                   : PLANE_AT(&s->color[k], px, py) * oow; \
             for (int k = 0; k < 3 && s->use_color2; k++)                          \
-                q->color2[i][k] = PLANE_AT(&s->color2[k], px, py) * oow;          \
+                q->color2[i][k] = s->color2_constant ? PLANE_AT(&s->color2[k], px, py) \
+                                                     : PLANE_AT(&s->color2[k], px, py) * oow; \
         } else {                                                                  \
             for (int k = 0; k < 4; k++)                                           \
                 q->color[i][k] = PLANE_AT(&s->color[k], px, py);                  \
@@ -368,13 +381,13 @@ static void calc_coef(fs_plane *p, const coef_args *g, float a0, float a1, float
  * multiply by 1/w and divide by the interpolated 1/w (exactly 1) change
  * nothing. */
 static void color_planes(fs_plane *p, int n, const coef_args *g, const fs_rvertex *const v[3], size_t field,
-                         const fs_prim_setup *s)
+                         const fs_prim_setup *s, bool constant)
 {
     const float *col[3];
     for (int i = 0; i < 3; i++)
         col[i] = (const float *)(const void *)((const char *)v[i] + field);
     for (int k = 0; k < n; k++) {
-        if (s->color_constant)
+        if (constant)
             fs_plane_constant(&p[k], col[0][k]);
         else if (s->perspective)
             calc_coef(&p[k], g, col[0][k] * v[0]->inv_w, col[1][k] * v[1]->inv_w, col[2][k] * v[2]->inv_w);
@@ -595,17 +608,24 @@ static void raster_triangle(fs_context *c, const fs_rvertex *const v[3], const f
     s.perspective = !(a->inv_w == 1.0f && b->inv_w == 1.0f && d->inv_w == 1.0f);
     /* Flat shading: the provoking colour (every vertex carries it) as a
      * constant (fs_raster_state.flat_color). */
-    s.color_constant = r->flat_color;
+    s.color_constant = r->flat_color || (r->const_attribs & FS_ATTR_COLOR);
+    s.color2_constant = r->flat_color || (r->const_attribs & FS_ATTR_COLOR2);
+    s.tex_constant = r->const_attribs / FS_ATTR_TEX(0);
     if (s.perspective)
         calc_coef(&s.w, &g, a->inv_w, b->inv_w, d->inv_w);
     const fs_rvertex *const abd[3] = {a, b, d};
-    color_planes(s.color, 4, &g, abd, offsetof(fs_rvertex, color), &s);
+    color_planes(s.color, 4, &g, abd, offsetof(fs_rvertex, color), &s, s.color_constant);
     s.use_color2 = r->interpolate_color2;
     if (s.use_color2)
-        color_planes(s.color2, 3, &g, abd, offsetof(fs_rvertex, color2), &s);
+        color_planes(s.color2, 3, &g, abd, offsetof(fs_rvertex, color2), &s, s.color2_constant);
+    if (s.use_tex)
+        FS_FOR_EACH_UNIT(u, s.tex_mask)
+            if (s.tex_constant & (1u << u))
+                for (int k = 0; k < 4; k++)
+                    fs_plane_constant(&s.tex[u][k], a->tex[u][k]);
     if (s.perspective) {
         if (s.use_tex)
-            FS_FOR_EACH_UNIT(u, s.tex_mask)
+            FS_FOR_EACH_UNIT(u, s.tex_mask & ~s.tex_constant)
                 for (int k = 0; k < 4; k++) {
                     float ta = a->tex[u][k] * a->inv_w, tb = b->tex[u][k] * b->inv_w;
                     float td = d->tex[u][k] * d->inv_w;
@@ -615,7 +635,7 @@ static void raster_triangle(fs_context *c, const fs_rvertex *const v[3], const f
             calc_coef(&s.fog, &g, a->fog * a->inv_w, b->fog * b->inv_w, d->fog * d->inv_w);
     } else {
         if (s.use_tex)
-            FS_FOR_EACH_UNIT(u, s.tex_mask)
+            FS_FOR_EACH_UNIT(u, s.tex_mask & ~s.tex_constant)
                 for (int k = 0; k < 4; k++)
                     calc_coef(&s.tex[u][k], &g, a->tex[u][k], b->tex[u][k], d->tex[u][k]);
         if (s.use_fog)

@@ -149,6 +149,13 @@ typedef struct fs_raster_state {
      * uses as a constant (LP_INTERP_CONSTANT) instead of interpolating it
      * with perspective, where (c/w)/(1/w) need not give c back. */
     bool flat_color;
+    /* The attributes (FS_ATTR_*) llvmpipe takes as constants for the draw,
+     * set by the vertex stage per draw (fs_vs_constant_attribs): Mesa's
+     * fixed-function fragment program reads an input the vertex stage does
+     * not vary (no array, not given between Begin and End, not computed by
+     * lighting, texgen or a texture matrix) from the current value instead
+     * of interpolating it, so no (a/w)/(1/w) rounding. */
+    unsigned const_attribs;
     /* The CPU has FMA instructions: attribute evaluation uses them (llvmpipe
      * does), otherwise an exact-in-practice double emulation.  Set by
      * fs_raster_state_init; tests clear it to compare the two. */
@@ -171,6 +178,13 @@ static inline bool fs_raster_culled(const fs_raster_state *r, bool front)
     default: return false;
     }
 }
+
+/* fs_raster_state.const_attribs, and the attributes a draw varies
+ * (fs_prim_state.vtx_attribs): primary colour, secondary colour, the
+ * texture coordinates of unit u. */
+#define FS_ATTR_COLOR 1u
+#define FS_ATTR_COLOR2 2u
+#define FS_ATTR_TEX(u) (4u << (u))
 
 void fs_raster_state_init(fs_raster_state *r, int subpixel_bits);
 

@@ -32,7 +32,9 @@ typedef struct fs_prim_setup {
     bool use_color2;
     float zoffset;       /* polygon offset, added after interpolation */
     bool perspective;    /* false when every 1/w is 1: the division is exact then */
-    bool color_constant; /* flat shading: colour planes constant, not divided by 1/w */
+    bool color_constant; /* flat shading or a constant colour: colour planes constant, not divided by 1/w */
+    bool color2_constant; /* the same for the secondary colour */
+    unsigned tex_constant; /* units whose coordinates are constants (fs_raster_state.const_attribs) */
     bool use_tex;        /* interpolate texture coordinates */
     unsigned tex_mask;   /* of these units (fs_raster_state.tex_mask) */
     bool front;

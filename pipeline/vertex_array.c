@@ -382,6 +382,33 @@ static void fetch_vertex(const fs_context *c, size_t i, fs_ivert *o)
 }
 
 /* ---- transformation ---- */
+/* Which attributes llvmpipe shades as constants (fs_raster_state.const_attribs).
+ * Mesa's fixed-function fragment program takes a colour or texture
+ * coordinate input from the vertex stage only when that stage can vary it
+ * (its filter of possible inputs, ff_fragment_shader.cpp): the primary
+ * colour when it comes per vertex or from lighting (GL 1.5 spec 2.14.1),
+ * the secondary when per vertex or from separate specular lighting
+ * (2.14.2), unit u's coordinates when per vertex, generated (2.11.4) or
+ * through a texture matrix other than the identity (2.11.2).  Otherwise it
+ * reads the current value as a constant, without the perspective division
+ * (measured: tests/test_constant_attribs.c). */
+void fs_vs_constant_attribs(fs_context *c, const fs_vs_setup *s, unsigned varying)
+{
+    unsigned k = 0;
+    if (!(varying & FS_ATTR_COLOR) && !s->lighting)
+        k |= FS_ATTR_COLOR;
+    if (!(varying & FS_ATTR_COLOR2) && !s->separate_specular)
+        k |= FS_ATTR_COLOR2;
+    for (int u = 0; u < s->ntex; u++) {
+        bool gen = false;
+        for (int j = 0; j < 4; j++)
+            gen |= s->texgen_mode[u][j] != FS_TG_NONE;
+        if (!(varying & FS_ATTR_TEX(u)) && !gen && s->tex_identity[u])
+            k |= FS_ATTR_TEX(u);
+    }
+    c->raster.const_attribs = k;
+}
+
 void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
 {
     const fs_transform_state *x = &c->xf;
@@ -407,17 +434,12 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     c->raster.use_y_raster = true; /* every fs_rvertex from here carries it */
     s->flat = c->lighting.shade_model == GL_FLAT;
     c->raster.flat_color = s->flat;
+    c->raster.const_attribs = 0; /* interpolate all unless the draw says (fs_vs_constant_attribs) */
     s->fog = c->st.fog.enabled;
     s->fog_from_coord = c->st.fog.coord_src == GL_FOG_COORD;
     c->raster.interpolate_fog = s->fog;
     fs_color_sum_setup(c, s);
     fs_lighting_setup(c, s);
-    /* Unlit and not per-vertex (fs_prim_state.color_varies): llvmpipe's
-     * fragments get the current colour exactly, as a uniform, where
-     * interpolating c/w and 1/w (GL 1.5 spec 3.5.1 eq. 3.7) can land an ulp
-     * off and round to the other 8-bit value at a half (0.1 -> 25.5). */
-    if (!s->lighting && !c->prim.color_varies)
-        c->raster.flat_color = true;
     fs_texgen_setup(c, s);
     /* Draws of one object share a modelview: invert it once (the
      * persistent setup of the context keeps the last one). */
@@ -814,9 +836,14 @@ void fs_exec_ArrayElement(fs_context *c, GLint i)
     if (c->arrays.color.enabled) fs_exec_Color4fv(c, v.col);
     if (c->arrays.normal.enabled) fs_exec_Normal3fv(c, v.nrm);
     for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
-        if (c->arrays.texcoord[u].enabled)
+        if (c->arrays.texcoord[u].enabled) {
             memcpy(c->current.texcoord[u], v.tc[u], sizeof v.tc[u]);
-    if (c->arrays.secondary_color.enabled) memcpy(c->current.secondary_color, v.col2, sizeof v.col2);
+            fs_vs_attrib_given(c, FS_ATTR_TEX(u));
+        }
+    if (c->arrays.secondary_color.enabled) {
+        memcpy(c->current.secondary_color, v.col2, sizeof v.col2);
+        fs_vs_attrib_given(c, FS_ATTR_COLOR2);
+    }
     if (c->arrays.fog_coord.enabled) c->current.fog_coord = v.fogc;
     /* Through glEdgeFlag, so the batch's vertices keep their flags (immediate.c). */
     if (c->arrays.edge_flag.enabled) fs_exec_EdgeFlag(c, array_edge_flag(c, (size_t)i));
@@ -831,8 +858,12 @@ static void draw_batch(fs_context *c, GLenum mode, size_t n, const uint32_t *idx
         fs_error(c, GL_OUT_OF_MEMORY);
         return;
     }
-    c->prim.color_varies = c->arrays.color.enabled || c->arrays.secondary_color.enabled;
     fs_vs_prepare(c, &v->setup);
+    unsigned varying = (c->arrays.color.enabled ? FS_ATTR_COLOR : 0u) |
+                       (c->arrays.secondary_color.enabled ? FS_ATTR_COLOR2 : 0u);
+    for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
+        varying |= c->arrays.texcoord[u].enabled ? FS_ATTR_TEX(u) : 0u;
+    fs_vs_constant_attribs(c, &v->setup, varying);
     if (c->arrays.edge_flag.enabled) {
         /* The batch vertices' edge flags from the array (GL 1.5 spec 2.6.2,
          * 2.8): batch vertex k is element src_indices[k] or src_first + k

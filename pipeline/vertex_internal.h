@@ -254,6 +254,10 @@ void fs_light_vertex(const fs_vs_setup *s, const float eye[4], const float n[3],
 /* vertex_array.c: transformation of a batch of vertices.  s persists from
  * draw to draw (it caches the normal matrix): zero it before its first use. */
 void fs_vs_prepare(fs_context *c, fs_vs_setup *s);
+/* After fs_vs_prepare (which clears it): fs_raster_state.const_attribs of
+ * a draw whose vertices vary the attributes `varying` (FS_ATTR_*: the
+ * enabled arrays, or immediate mode's vertex format). */
+void fs_vs_constant_attribs(fs_context *c, const fs_vs_setup *s, unsigned varying);
 /* tiles: NULL, or the observer's tile mask (fs_vs_tile_mask, observer.h),
  * with which a batch that cannot reach a masked tile skips its lighting,
  * and one that may leaves it to fs_prim_draw per triangle (the vertices

@@ -141,17 +141,20 @@ typedef struct fs_prim_state {
     bool inside_begin;
     GLenum mode;
     int count;               /* vertices since glBegin */
-    /* A colour command (primary or secondary) between glBegin and glEnd, or
-     * a colour array in a draw: the colours are per-vertex.  Otherwise, with
-     * lighting off, every vertex has the current colour and Mesa hands it to
-     * llvmpipe's fragment shader as a uniform (measured: tests/
-     * test_line_colour.c), so it is not interpolated (fs_vs_prepare). */
-    bool color_varies;
     /* Nonzero while a display list executes.  Mesa compiles list contents
      * into indexed draws, which split GL_QUADS along the other diagonal
      * than immediate mode does; driver/display_list.c increments it around
      * glCallList so that fragsim splits the same way. */
     int list_depth;
+    /* The attributes (FS_ATTR_*) of the vertex format of Mesa's immediate
+     * mode (vbo_exec): each one given between Begin and End joins it and
+     * stays for the primitives that follow, until a state change or
+     * glCallList flushes the vertices and resets the format
+     * (fs_vs_format_reset).  Measured on OSMesa (tests/test_constant_attribs.c):
+     * glColor before glBegin gives a constant colour, glColor inside
+     * (or in an earlier glBegin/glEnd with only vertex commands and queries
+     * between) an interpolated one. */
+    unsigned vtx_attribs;
     void *impl;              /* private buffers (vertex_internal.h) */
 } fs_prim_state;
 
@@ -171,4 +174,10 @@ int fs_client_active_unit(const fs_context *c);
 /* Copies the current colour into the material properties that track it
  * (GL 1.5 spec 2.14.3); called on glColor and on enabling GL_COLOR_MATERIAL. */
 void fs_color_material_update(fs_context *c);
+/* The immediate-mode vertex format (fs_prim_state.vtx_attribs): an
+ * attribute given between Begin and End joins it; the driver resets it on
+ * every command that flushes Mesa's vertices (a state change, glCallList),
+ * queries excepted. */
+void fs_vs_attrib_given(fs_context *c, unsigned attribs);
+void fs_vs_format_reset(fs_context *c);
 #endif
