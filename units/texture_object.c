@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "texture_priv.h"
+#include "texel_format.h"
 #include "mpgrid_gl.h"
 #include "footprint.h"
 #include "../pipeline/context.h"
@@ -330,22 +331,15 @@ static GLenum base_format(GLint f)
     case 4: case GL_RGBA: case GL_RGBA2: case GL_RGBA4: case GL_RGB5_A1: case GL_RGBA8: case GL_RGB10_A2:
     case GL_RGBA12: case GL_RGBA16:
         return GL_RGBA;
+    /* ARB_texture_rg, which llvmpipe exposes in a compatibility context
+     * (measured through OSMesa: accepted by glTexImage and
+     * glCopyTexImage, sizes R8 / R8 G8, R16 / R16 G16). */
+    case GL_RED: case GL_R8: case GL_R16:
+        return GL_RED;
+    case GL_RG: case GL_RG8: case GL_RG16:
+        return GL_RG;
     default:
         return 0;
-    }
-}
-
-/* Sized formats with fewer than 8 bits per component: OSMesa may store
- * them at that precision; fragsim keeps 8 bits and says so. */
-static bool low_precision_format(GLint f)
-{
-    switch (f) {
-    case GL_LUMINANCE4: case GL_LUMINANCE4_ALPHA4: case GL_LUMINANCE6_ALPHA2: case GL_ALPHA4:
-    case GL_INTENSITY4: case GL_R3_G3_B2: case GL_RGB4: case GL_RGB5: case GL_RGBA2: case GL_RGBA4:
-    case GL_RGB5_A1:
-        return true;
-    default:
-        return false;
     }
 }
 
@@ -359,6 +353,9 @@ static void store_texel(uint8_t *dst, const uint8_t rgba[4], GLenum base)
     case GL_ALPHA: dst[0] = dst[1] = dst[2] = 0; dst[3] = rgba[3]; break;
     case GL_INTENSITY: dst[0] = dst[1] = dst[2] = dst[3] = rgba[0]; break;
     case GL_RGB: dst[0] = rgba[0]; dst[1] = rgba[1]; dst[2] = rgba[2]; dst[3] = 255; break;
+    /* ARB_texture_rg: the missing components read as G = B = 0, A = 1. */
+    case GL_RED: dst[0] = rgba[0]; dst[1] = dst[2] = 0; dst[3] = 255; break;
+    case GL_RG: dst[0] = rgba[0]; dst[1] = rgba[1]; dst[2] = 0; dst[3] = 255; break;
     default: memcpy(dst, rgba, 4); break;
     }
 }
@@ -390,6 +387,8 @@ static void unpack_image(fs_context *c, fs_tex_image *img, int dims, const int o
                     memcpy(rgba, dst + 4 * x, 4);
                     store_texel(dst + 4 * x, rgba, img->base_format);
                 }
+            /* llvmpipe's precision for the format (units/texel_format.c). */
+            fs_texel_quantize(img->internal_format, dst, (size_t)w, false);
         }
 }
 
@@ -405,7 +404,8 @@ static void unpack_inner(fs_context *c, fs_tex_image *img, int dims, int border,
         unpack_image(c, img, dims, no_offset, w, h, d, format, type, pixels);
         return;
     }
-    fs_tex_image whole = {.width = w, .height = h, .depth = d, .base_format = img->base_format};
+    fs_tex_image whole = {.width = w, .height = h, .depth = d, .base_format = img->base_format,
+                          .internal_format = img->internal_format};
     whole.texels = malloc((size_t)w * (size_t)h * (size_t)d * 4);
     if (!whole.texels) {
         fs_error(c, GL_OUT_OF_MEMORY);
@@ -523,8 +523,6 @@ static fs_tex_image *define_level(fs_context *c, fs_tex_object *t, GLint level, 
     img->internal_format = internalformat;
     img->base_format = base_format(internalformat);
     t->complete = -1;
-    if (low_precision_format(internalformat))
-        fs_unsupported(c, "texture internal format below 8 bits per component (stored at 8)");
     return img;
 }
 
@@ -674,7 +672,9 @@ static void copy_from_framebuffer(fs_context *c, fs_tex_image *img, const int ds
             if (sx < 0 || sx >= fb->width)
                 continue;
             const uint8_t *src = fb->color + ((size_t)sy * (size_t)fb->width + (size_t)sx) * 4;
-            store_texel(texel_addr(img, dst[0] + i, dst[1] + j, dst[2]), src, img->base_format);
+            uint8_t *t = texel_addr(img, dst[0] + i, dst[1] + j, dst[2]);
+            store_texel(t, src, img->base_format);
+            fs_texel_quantize(img->internal_format, t, 1, true);
         }
     }
 }
@@ -704,6 +704,8 @@ void fs_tex_copy_image_nd(fs_context *c, int dims, GLenum target, GLint level, G
     GLint bx = x < INT_MAX ? x + border : x, by = dims > 1 && y < INT_MAX ? y + border : y;
     if (img && img->texels)
         copy_from_framebuffer(c, img, no_offset, bx, by, img->width, img->height);
+    if (img && internalformat == GL_R3_G3_B2)
+        fs_unsupported(c, "glCopyTexImage into GL_R3_G3_B2 (llvmpipe's rounding not modelled)");
     if (img)
         fs_tex_image_changed(c, t, level);
 }
@@ -1179,24 +1181,23 @@ void fs_exec_GetTexParameteriv(fs_context *c, GLenum target, GLenum pname, GLint
         params[k] = p.has_int ? p.i : p.norm ? fs_norm_to_int(p.v[k]) : (GLint)p.v[k];
 }
 
-/* Bits the model stores of a component pname for an image (8 for every
- * component of its base format, table 6.18), -1 for a name that is not a
- * component size. */
+/* Bits of a component pname of an image: those of the format llvmpipe
+ * stores its internal format in (table 6.18, units/texel_format.c), -1
+ * for a name that is not a component size. */
 static int component_bits(const fs_tex_image *img, GLenum pname)
 {
-    GLenum b = img->base_format;
-    bool rgb = b == GL_RGB || b == GL_RGBA;
-    bool alpha = b == GL_ALPHA || b == GL_LUMINANCE_ALPHA || b == GL_RGBA;
-    bool has;
+    enum fs_texel_comp k;
     switch (pname) {
-    case GL_TEXTURE_RED_SIZE: case GL_TEXTURE_GREEN_SIZE: case GL_TEXTURE_BLUE_SIZE: has = rgb; break;
-    case GL_TEXTURE_ALPHA_SIZE: has = alpha; break;
-    case GL_TEXTURE_LUMINANCE_SIZE: has = b == GL_LUMINANCE || b == GL_LUMINANCE_ALPHA; break;
-    case GL_TEXTURE_INTENSITY_SIZE: has = b == GL_INTENSITY; break;
-    case GL_TEXTURE_DEPTH_SIZE: has = false; break;
+    case GL_TEXTURE_RED_SIZE: k = FS_TC_RED; break;
+    case GL_TEXTURE_GREEN_SIZE: k = FS_TC_GREEN; break;
+    case GL_TEXTURE_BLUE_SIZE: k = FS_TC_BLUE; break;
+    case GL_TEXTURE_ALPHA_SIZE: k = FS_TC_ALPHA; break;
+    case GL_TEXTURE_LUMINANCE_SIZE: k = FS_TC_LUMINANCE; break;
+    case GL_TEXTURE_INTENSITY_SIZE: k = FS_TC_INTENSITY; break;
+    case GL_TEXTURE_DEPTH_SIZE: return 0;
     default: return -1;
     }
-    return has && (img->texels || img->described) ? 8 : 0;
+    return img->texels || img->described ? fs_texel_bits(img->internal_format, img->base_format, k) : 0;
 }
 
 /* One level parameter (table 6.18); false for an unknown name.  An

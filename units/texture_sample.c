@@ -865,6 +865,10 @@ static void texture_units(fs_context *c, fs_quad *q, const fs_quad_tex *tc)
         const fs_tex_env *env = &st->unit[u].env;
         const fs_tex_object *t = st->unit[u].bound[fs_tex_unit_target(&st->unit[u])];
         GLenum base = t->level[t->first_level].base_format;
+        /* ARB_texture_rg's RED and RG take the environment of RGB, their
+         * missing components being 0 (Mesa's texenv, as measured). */
+        if (base == GL_RED || base == GL_RG)
+            base = GL_RGB;
         for (int i = 0; i < 4; i++) {
             if (!(q->mask & (1u << i)))
                 continue;

@@ -1,0 +1,114 @@
+/*
+ * The precision llvmpipe stores each internal format at.  GL 1.5 spec
+ * 3.8.1: the GL may choose any internal resolution for a sized internal
+ * format; the reference is Mesa llvmpipe, whose choices were measured
+ * through OSMesa (glGetTexLevelParameter sizes, glGetTexImage of an
+ * uploaded ramp; tests/test_texel_format.c checks them):
+ *
+ *   RGB4 4/4/4, RGB5 5/5/5, R3_G3_B2 3/3/2, RGBA2 and RGBA4 4/4/4/4,
+ *   RGB5_A1 5/5/5/1, LUMINANCE4_ALPHA4 4/4; ALPHA4, LUMINANCE4,
+ *   INTENSITY4, LUMINANCE6_ALPHA2 at 8 bits; RGB10 and RGB10_A2 at
+ *   10 (and 2); the 12- and 16-bit formats at 16.
+ *
+ * Upload rounds an 8-bit value to the nearest n-bit one (q = round(v (2^n
+ * - 1) / 255), no ties occur for n < 8); sampling and readback expand q by
+ * repeating its bits (5 bits: 3 -> 24, 4 -> 33, as measured; not
+ * round(q 255 / 31), which gives 25 and 33).
+ */
+#include "texel_format.h"
+#include <stdbool.h>
+#include <GL/glext.h>
+
+/* Bits of R, G, B, A (the colour formats) or of L and A (the luminance
+ * formats) for the formats llvmpipe stores below 8 bits; false for the
+ * others. */
+static bool low_bits(GLint f, int rgba[4])
+{
+    int r = 0, g = 0, b = 0, a = 0;
+    switch (f) {
+    case GL_RGB4: r = g = b = 4; break;
+    case GL_RGB5: r = g = b = 5; break;
+    case GL_R3_G3_B2: r = g = 3; b = 2; break;
+    case GL_RGBA2: case GL_RGBA4: r = g = b = a = 4; break;
+    case GL_RGB5_A1: r = g = b = 5; a = 1; break;
+    case GL_LUMINANCE4_ALPHA4: r = g = b = a = 4; break; /* L is stored in R, G, B */
+    case GL_RGB10_A2: r = g = b = 8; a = 2; break;     /* 10 bits keep an 8-bit value exactly */
+    default: return false;
+    }
+    rgba[0] = r;
+    rgba[1] = g;
+    rgba[2] = b;
+    rgba[3] = a;
+    return true;
+}
+
+/* Bits of every component of the formats stored above 8 bits, 8 for the
+ * others. */
+static int wide_bits(GLint f)
+{
+    switch (f) {
+    case GL_RGB10: case GL_RGB10_A2: return 10;
+    case GL_RGB12: case GL_RGB16: case GL_RGBA12: case GL_RGBA16: case GL_ALPHA12: case GL_ALPHA16:
+    case GL_LUMINANCE12: case GL_LUMINANCE16: case GL_INTENSITY12: case GL_INTENSITY16:
+    case GL_LUMINANCE12_ALPHA4: case GL_LUMINANCE12_ALPHA12: case GL_LUMINANCE16_ALPHA16: case GL_R16:
+    case GL_RG16:
+        return 16;
+    default: return 8;
+    }
+}
+
+int fs_texel_bits(GLint f, GLenum base, enum fs_texel_comp k)
+{
+    bool rgb = base == GL_RGB || base == GL_RGBA;
+    bool has;
+    switch (k) {
+    case FS_TC_RED: has = rgb || base == GL_RED || base == GL_RG; break;
+    case FS_TC_GREEN: has = rgb || base == GL_RG; break;
+    case FS_TC_BLUE: has = rgb; break;
+    case FS_TC_ALPHA: has = base == GL_ALPHA || base == GL_LUMINANCE_ALPHA || base == GL_RGBA; break;
+    case FS_TC_LUMINANCE: has = base == GL_LUMINANCE || base == GL_LUMINANCE_ALPHA; break;
+    case FS_TC_INTENSITY: has = base == GL_INTENSITY; break;
+    default: has = false; break;
+    }
+    if (!has)
+        return 0;
+    int lb[4];
+    if (f != GL_RGB10_A2 && low_bits(f, lb)) {
+        if (k == FS_TC_ALPHA)
+            return lb[3];
+        return lb[k == FS_TC_LUMINANCE ? 0 : (int)k];
+    }
+    /* RGB10_A2 keeps 2 bits of alpha (GL_UNSIGNED_INT_2_10_10_10_REV). */
+    if (f == GL_RGB10_A2 && k == FS_TC_ALPHA)
+        return 2;
+    return wide_bits(f);
+}
+
+/* v (8 bits) to the nearest n-bit value (or its top n bits: truncate)
+ * and back by repeating its bits. */
+static uint8_t requantize(uint8_t v, int n, bool truncate)
+{
+    unsigned max = (1u << n) - 1;
+    unsigned q = truncate ? (unsigned)v >> (8 - n) : ((unsigned)v * max + 127) / 255;
+    unsigned out = 0;
+    for (int shift = 8 - n; shift > -n; shift -= n)
+        out |= shift >= 0 ? q << shift : q >> -shift;
+    return (uint8_t)out;
+}
+
+void fs_texel_quantize(GLint f, uint8_t *rgba, size_t n, bool copy)
+{
+    int bits[4];
+    if (!low_bits(f, bits))
+        return;
+    /* glCopyTexImage into the 5-, 3- and 2-bit formats keeps the top bits
+     * of the framebuffer's 8 (measured: 13 -> 8 in RGB5, 23 -> 0 in
+     * R3_G3_B2); into the 4-bit ones it rounds as an upload does.
+     * R3_G3_B2 follows neither rule everywhere (28 -> 1 in 3 bits):
+     * texture_object.c counts its copies as not modelled. */
+    bool truncate = copy && (f == GL_RGB5 || f == GL_RGB5_A1 || f == GL_R3_G3_B2);
+    for (size_t i = 0; i < n; i++)
+        for (int k = 0; k < 4; k++)
+            if (bits[k] > 0 && bits[k] < 8)
+                rgba[4 * i + k] = requantize(rgba[4 * i + k], bits[k], truncate);
+}

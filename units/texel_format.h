@@ -1,0 +1,26 @@
+/*
+ * Texel formats: the precision llvmpipe gives each internal format
+ * (units/texel_format.c).  The model keeps every texel as RGBA8
+ * (texture_priv.h); a format stored at fewer bits is requantized to them.
+ */
+#ifndef FS_TEXEL_FORMAT_H
+#define FS_TEXEL_FORMAT_H
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <GL/gl.h>
+
+/* Components of the stored format, as glGetTexLevelParameter reports
+ * them (table 6.18). */
+enum fs_texel_comp { FS_TC_RED, FS_TC_GREEN, FS_TC_BLUE, FS_TC_ALPHA, FS_TC_LUMINANCE, FS_TC_INTENSITY, FS_TC_COUNT };
+
+/* Bits of component k in the format llvmpipe stores internalformat in
+ * (base is its base internal format); 0 for a component it has not. */
+int fs_texel_bits(GLint internalformat, GLenum base, enum fs_texel_comp k);
+
+/* Rounds n RGBA8 texels (expanded as texture_priv.h says) to the
+ * precision of internalformat and back to 8 bits; nothing for a format
+ * stored at 8 bits or more.  copy: the texels come from glCopyTexImage,
+ * which llvmpipe converts differently for some formats. */
+void fs_texel_quantize(GLint internalformat, uint8_t *rgba, size_t n, bool copy);
+#endif
