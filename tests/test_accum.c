@@ -1,11 +1,11 @@
 /*
  * The accumulation buffer (pipeline/accum.c; GL 1.5 spec 4.2.4) against
  * OSMesa (llvmpipe) with 16 accumulation bits at tolerance 0: random
- * sequences of glAccum (every op: ACCUM, LOAD, ADD, MULT, RETURN, values beyond
- * [-1, 1] included, so that sums wrap), glClearAccum with glClear under
- * the scissor box and the colour mask; the errors; a context without the
- * the scissor box and the colour mask; each colour byte through GL_ACCUM
- * and GL_LOAD seen directly; the errors; a context without the
+ * sequences of glAccum (every op: ACCUM, LOAD, ADD, MULT, RETURN, values
+ * beyond [-1, 1] included, so that sums wrap), glClearAccum with glClear
+ * under the scissor box and the colour mask; each colour byte through
+ * GL_ACCUM and GL_LOAD seen directly; the errors; a context without the
+ * buffer.
  */
 #include "check.h"
 #include "osmesa_util.h"
