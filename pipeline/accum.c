@@ -6,10 +6,15 @@
  * - values are stored as c * 32767 converted to a 16-bit integer toward
  *   zero, and sums wrap around (1.0 + 0.3 reads back as a negative value,
  *   which GL_RETURN clamps to 0) rather than saturating;
- * - GL_LOAD takes the colour buffer's c times value * 32767 / 255,
- *   truncated; GL_ADD adds value * 32767 truncated; GL_MULT truncates the
- *   product; GL_ACCUM adds what GL_LOAD would load, which differs from
- *   llvmpipe by 1 in a few values (not established yet);
+ * - GL_LOAD takes the colour buffer's byte c as the float c * (1/255),
+ *   times value * 32767, truncated; GL_ADD adds value * 32767 truncated;
+ *   GL_MULT truncates the product; GL_ACCUM adds what GL_LOAD would load
+ *   (exact for every byte and values up to +-2.5, wrapping included:
+ *   accum_conversion_vs_osmesa);
+ * - glClear of the buffer stores the clamped clear value v as
+ *   (trunc(65535 v) - 1) / 2, Mesa's float-to-short rule, not as
+ *   trunc(32767 v): that 1 was GL_ACCUM's difference in 7 of 60 random
+ *   sequences (now 0 of 200);
  * - GL_RETURN writes clamp(a * value / 32767) rounded to 8 bits through the
  *   colour mask, bypassing the other fragment operations (4.2.4);
  * - every operation, and glClear of the buffer, covers the scissor box.
@@ -59,9 +64,13 @@ void fs_accum_clear(fs_context *c, int x0, int y0, int x1, int y1)
     int16_t *buf = accum_buffer(c);
     if (!buf)
         return; /* no buffer: nothing to clear, no error (4.2.3) */
+    /* The clear value (clamped to [-1, 1] by glClearAccum) is converted
+     * as Mesa's signed-short rule does, (trunc(65535 v) - 1) / 2 with the
+     * division toward zero, not as the accumulating operations do
+     * (trunc(32767 v)): the two differ by 1 for some values. */
     int16_t v[4];
     for (int k = 0; k < 4; k++)
-        v[k] = to_accum(c->st.accum_clear[k] * 32767.0f);
+        v[k] = (int16_t)(((int32_t)(c->st.accum_clear[k] * 65535.0f) - 1) / 2);
     for (int y = y0; y < y1; y++)
         for (int x = x0; x < x1; x++)
             memcpy(buf + ((size_t)y * (size_t)c->fb.width + (size_t)x) * 4, v, sizeof v);
@@ -73,9 +82,9 @@ static void accum_pixel(fs_context *c, GLenum op, float value, int16_t *a, uint8
     switch (op) {
     case GL_ACCUM:
     case GL_LOAD: {
-        float scale = value * 32767.0f / 255.0f;
+        float scale = value * 32767.0f;
         for (int k = 0; k < 4; k++) {
-            int16_t add = to_accum((float)p[k] * scale);
+            int16_t add = to_accum((float)p[k] * (1.0f / 255.0f) * scale);
             a[k] = op == GL_LOAD ? add : (int16_t)(uint16_t)((uint32_t)(uint16_t)a[k] + (uint16_t)add);
         }
         break;

@@ -63,11 +63,10 @@ static void rect_fragments(fs_context *c, int64_t x0, int64_t y0, int64_t x1, in
             for (int i = 0; i < 4; i++) {
                 int x = (int)qx + (i & 1), y = (int)qy + (i >> 1);
                 memcpy(q.color[i], r->color, sizeof q.color[i]);
-                /* The raster position keeps one set of texture
-                 * coordinates (raster_pos.c): every unit samples it.
-                 * GL 1.3 keeps one per unit; not modelled yet. */
+                /* Each unit samples its own raster texture
+                 * coordinates (3.6.4, 2.13; raster_pos.c). */
                 for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++)
-                    memcpy(q.unit[u].tex[i], r->tex, sizeof q.unit[u].tex[i]);
+                    memcpy(q.unit[u].tex[i], r->tex[u], sizeof q.unit[u].tex[i]);
                 q.z[i] = z;
                 if (x >= x0 && x < x1 && y >= y0 && y < y1 && frag(c, user, x, y, q.color[i], &q.z[i]))
                     q.mask |= 1u << i;

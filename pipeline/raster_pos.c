@@ -22,6 +22,19 @@ static void raster_pos(fs_context *c, float x, float y, float z, float w)
     fs_vs_setup s;
     memset(&s, 0, sizeof s);
     fs_vs_prepare(c, &s);
+    /* Every unit's raster texture coordinates are kept (2.13), not only
+     * those of the units a draw reads (fs_vs_prepare's ntex): on OSMesa each
+     * unit's come from its own current coordinates, texture generation
+     * and texture matrix, enabled or not (tests/test_pixel_rect.c). */
+    float id[16];
+    fs_mat_identity(id);
+    for (int u = s.ntex; u < FS_MAX_TEXTURE_UNITS; u++) {
+        const fs_transform_state *xf = &c->xf;
+        memcpy(s.tex[u], xf->texture[u][xf->texture_top[u]].m, sizeof s.tex[u]);
+        s.tex_identity[u] = memcmp(s.tex[u], id, sizeof id) == 0;
+    }
+    s.ntex = FS_MAX_TEXTURE_UNITS;
+    fs_texgen_setup(c, &s);
     fs_ivert iv;
     memset(&iv, 0, sizeof iv);
     iv.obj[0] = x;
@@ -86,7 +99,7 @@ static void window_pos(fs_context *c, float x, float y, float z)
     r->valid = true;
     for (int k = 0; k < 4; k++)
         r->color[k] = clamp01(c->current.color[k]); /* clamped, unlike glRasterPos's */
-    memcpy(r->tex, c->current.texcoord, sizeof r->tex);
+    memcpy(r->tex, c->current.texcoord, sizeof r->tex); /* every unit's, untransformed */
     r->distance = 0.0f;
 }
 

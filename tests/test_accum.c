@@ -1,9 +1,10 @@
 /*
  * The accumulation buffer (pipeline/accum.c; GL 1.5 spec 4.2.4) against
  * OSMesa (llvmpipe) with 16 accumulation bits at tolerance 0: random
- * sequences of glAccum (LOAD, ADD, MULT, RETURN, values beyond
- * [-1, 1] included, so that sums wrap), glClearAccum with glClear under
- * the scissor box and the colour mask; the errors; a context without the
+ * sequences of glAccum (every op: ACCUM, LOAD, ADD, MULT, RETURN, values
+ * beyond [-1, 1] included, so that sums wrap), glClearAccum with glClear
+ * under the scissor box and the colour mask; each colour byte through
+ * GL_ACCUM and GL_LOAD seen directly; the errors; a context without the
  * buffer.
  */
 #include "check.h"
@@ -72,13 +73,10 @@ TEST(accum_sequences_vs_osmesa)
     glGetIntegerv(GL_ACCUM_RED_BITS, &bits[0]);
     fsglGetIntegerv(b.c, GL_ACCUM_RED_BITS, &bits[1]);
     CHECK_EQ_INT(bits[1], bits[0]);
-    /* GL_ACCUM is not among them: its sums differ from llvmpipe's by 1 in
-     * a few values (7 of 60 such sequences; the rounding of c * value *
-     * 32767 added to the buffer is not established yet). */
-    static const GLenum ops[] = {GL_LOAD, GL_ADD, GL_MULT, GL_RETURN, GL_LOAD};
+    static const GLenum ops[] = {GL_LOAD, GL_ADD, GL_MULT, GL_RETURN, GL_ACCUM, GL_ACCUM};
     uint32_t s = 99;
     int bad = 0;
-    for (int seq = 0; seq < 60; seq++) {
+    for (int seq = 0; seq < 200; seq++) {
         uint32_t r = rng(&s);
         float clear[4] = {rndf(&s, -1.2f, 1.2f), rndf(&s, -1.2f, 1.2f), rndf(&s, -1.2f, 1.2f), rndf(&s, -1.2f, 1.2f)};
         int sx = (int)(rng(&s) % 8), sy = (int)(rng(&s) % 8);
@@ -86,7 +84,7 @@ TEST(accum_sequences_vs_osmesa)
         GLenum op[6];
         float val[6];
         for (int k = 0; k < 6; k++) {
-            op[k] = ops[rng(&s) % 5];
+            op[k] = ops[rng(&s) % 6];
             val[k] = (rng(&s) & 3) == 0 ? rndf(&s, -2.5f, 2.5f) : rndf(&s, -1.0f, 1.0f);
         }
         op[5] = GL_RETURN;
@@ -128,6 +126,55 @@ TEST(accum_sequences_vs_osmesa)
     both_close(&b);
 }
 
+/* Each byte value p once per channel (W * H = 1024 pixels, 4 channels):
+ * the colour buffer to GL_ACCUM or GL_LOAD. */
+static void draw_ramp(fs_context *c)
+{
+    static uint8_t img[W * H * 4];
+    for (int i = 0; i < W * H * 4; i++)
+        img[i] = (uint8_t)(i / 4 % 256);
+    G(RasterPos2f, -1.0f, -1.0f);
+    G(DrawPixels, W, H, GL_RGBA, GL_UNSIGNED_BYTE, img);
+}
+
+/* The value GL_ACCUM and GL_LOAD add for each colour byte, seen
+ * directly: with |value| small the sum a stays within 255, and GL_RETURN
+ * of +-32767/255 writes a itself. */
+TEST(accum_conversion_vs_osmesa)
+{
+    both b;
+    if (!both_open(&b)) {
+        both_close(&b);
+        SKIP("no OSMesa context with an accumulation buffer");
+    }
+    uint32_t s = 7;
+    int bad = 0;
+    for (int t = 0; t < 400; t++) {
+        bool big = t >= 200;
+        float v = big ? rndf(&s, 0.9f, 2.5f) : rndf(&s, 0.0f, 0.0078f);
+        GLenum op = t & 1 ? GL_ACCUM : GL_LOAD;
+        bool neg = t & 2;
+        for (int side = 0; side < 2; side++) {
+            fs_context *c = side ? b.c : NULL;
+            draw_ramp(c);
+            G(ClearAccum, 0.0f, 0.0f, 0.0f, 0.0f);
+            G(Clear, GL_ACCUM_BUFFER_BIT);
+            G(Accum, op, neg ? -v : v);
+            if (op == GL_ACCUM)
+                G(Accum, op, neg ? -v * 0.5f : v * 0.5f);
+            G(Accum, GL_RETURN, big ? (neg ? -1.0f : 1.0f) : (neg ? -32767.0f : 32767.0f) / 255.0f);
+            if (!c)
+                glFinish();
+        }
+        for (int i = 0; i < W * H * 4; i++)
+            if (b.c->fb.color[i] != b.color[i] && bad++ < 8)
+                fprintf(stderr, "  %s %.9g: colour %d: osmesa %u fragsim %u\n", op == GL_ACCUM ? "ACCUM" : "LOAD",
+                        neg ? -v : v, i / 4 % 256, b.color[i], b.c->fb.color[i]);
+    }
+    CHECK_EQ_INT(bad, 0);
+    both_close(&b);
+}
+
 /* A bad op is INVALID_ENUM; without an accumulation buffer (the default
  * configuration, as the conformance contexts) glAccum is
  * INVALID_OPERATION and glClear of the buffer does nothing, as on an
@@ -162,6 +209,7 @@ TEST(errors_and_no_buffer_vs_osmesa)
 
 TEST_LIST = {
     TEST_ENTRY(accum_sequences_vs_osmesa),
+    TEST_ENTRY(accum_conversion_vs_osmesa),
     TEST_ENTRY(errors_and_no_buffer_vs_osmesa),
     TEST_END,
 };

@@ -155,6 +155,83 @@ TEST(raster_position_vs_osmesa)
     CHECK_EQ_INT(differ, 0);
 }
 
+/* GL 1.3 keeps raster texture coordinates per texture unit (2.13, table
+ * 6.5 "n x"); GL_CURRENT_RASTER_TEXTURE_COORDS answers for the active
+ * unit.  Random current coordinates, texture matrices and enables per
+ * unit (with and without a complete texture bound), texture generation
+ * on some, then every unit's
+ * value after glRasterPos or glWindowPos, bit for bit. */
+TEST(raster_texcoords_per_unit_vs_osmesa)
+{
+    enum { W = 32, H = 32, SEEDS = 40, UNITS = 8 };
+    long compared = 0, differ = 0;
+    static const uint8_t texel[4] = {10, 20, 30, 255};
+    for (unsigned seed = 1; seed <= SEEDS; seed++) {
+        float out[2][UNITS][4];
+        for (int pass = 0; pass < 2; pass++) {
+            osm o;
+            fs_context *c = NULL;
+            if (!osm_open(&o, W, H)) {
+                osm_close(&o);
+                SKIP("no OSMesa context");
+            }
+            if (pass) {
+                c = fs_context_create(NULL, W, H);
+                REQUIRE(c);
+            }
+            unsigned s = seed;
+            G(MatrixMode, GL_MODELVIEW);
+            G0(LoadIdentity);
+            G(Translatef, rndf(&s, -0.5f, 0.5f), rndf(&s, -0.5f, 0.5f), 0);
+            for (int u = 0; u < UNITS; u++) {
+                G(ActiveTexture, GL_TEXTURE0 + u);
+                G(MultiTexCoord4f, GL_TEXTURE0 + u, rndf(&s, -2, 2), rndf(&s, -2, 2), rndf(&s, -2, 2),
+                  rndf(&s, 0.5f, 2));
+                G(MatrixMode, GL_TEXTURE);
+                G0(LoadIdentity);
+                if (pick(&s, 2)) {
+                    G(Translatef, rndf(&s, -1, 1), rndf(&s, -1, 1), rndf(&s, -1, 1));
+                    G(Scalef, rndf(&s, -2, 2), rndf(&s, -2, 2), rndf(&s, -2, 2));
+                }
+                int en = pick(&s, 3); /* 0 off, 1 on without a texture, 2 on with a complete one */
+                if (en == 2) {
+                    G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+                    G(TexImage2D, GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+                }
+                if (en)
+                    G(Enable, GL_TEXTURE_2D);
+                if (pick(&s, 4) == 0) { /* generated s or t, object or eye linear */
+                    GLenum coord = pick(&s, 2) ? GL_S : GL_T;
+                    G(TexGeni, coord, GL_TEXTURE_GEN_MODE, pick(&s, 2) ? GL_OBJECT_LINEAR : GL_EYE_LINEAR);
+                    G(Enable, coord == GL_S ? GL_TEXTURE_GEN_S : GL_TEXTURE_GEN_T);
+                }
+            }
+            G(MatrixMode, GL_MODELVIEW);
+            G(ActiveTexture, GL_TEXTURE0 + pick(&s, UNITS));
+            if (pick(&s, 4) == 0)
+                G(WindowPos2f, rndf(&s, 0, W), rndf(&s, 0, H));
+            else
+                G(RasterPos3f, rndf(&s, -0.9f, 0.9f), rndf(&s, -0.9f, 0.9f), rndf(&s, -0.9f, 0.9f));
+            for (int u = 0; u < UNITS; u++) {
+                G(ActiveTexture, GL_TEXTURE0 + u);
+                G(GetFloatv, GL_CURRENT_RASTER_TEXTURE_COORDS, out[pass][u]);
+            }
+            if (c)
+                fs_context_destroy(c);
+            osm_close(&o);
+        }
+        for (int u = 0; u < UNITS; u++)
+            for (int k = 0; k < 4; k++) {
+                compared++;
+                if (memcmp(&out[0][u][k], &out[1][u][k], sizeof(float)) != 0 && differ++ < 10)
+                    fprintf(stderr, "  seed %u unit %d value %d: osmesa %.9g fragsim %.9g\n", seed, u, k,
+                            out[0][u][k], out[1][u][k]);
+            }
+    }
+    printf("  %ld raster texture coordinates compared, %ld differ\n", compared, differ);
+    CHECK_EQ_INT(differ, 0);
+}
+
 /* ---- images: glBitmap and glDrawPixels ---- */
 
 /* Colour and depth of both, compared; depth read back as 32-bit unsigned
@@ -389,6 +466,7 @@ TEST(drawpixels_every_format_type_vs_osmesa)
 
 TEST_LIST = {
     TEST_ENTRY(raster_position_vs_osmesa),
+    TEST_ENTRY(raster_texcoords_per_unit_vs_osmesa),
     TEST_ENTRY(bitmap_vs_osmesa),
     TEST_ENTRY(drawpixels_every_format_type_vs_osmesa),
     TEST_ENTRY(drawpixels_color_vs_osmesa),
