@@ -445,6 +445,9 @@ TEST(begin_end_and_array_errors)
     CHECK_EQ_INT(fsglGetError(c), GL_INVALID_VALUE);
     fsglDrawRangeElements(c, GL_TRIANGLES, 2, 1, 3, GL_UNSIGNED_BYTE, idx);
     CHECK_EQ_INT(fsglGetError(c), GL_INVALID_VALUE);
+    /* GL 1.5 2.8: a negative count is INVALID_VALUE for DrawRangeElements too. */
+    fsglDrawRangeElements(c, GL_TRIANGLES, 0, 2, -3, GL_UNSIGNED_BYTE, idx);
+    CHECK_EQ_INT(fsglGetError(c), GL_INVALID_VALUE);
     fsglVertexPointer(c, 5, GL_FLOAT, 0, v);
     CHECK_EQ_INT(fsglGetError(c), GL_INVALID_VALUE);
     fsglVertexPointer(c, 3, GL_UNSIGNED_BYTE, 0, v);
