@@ -160,6 +160,8 @@ def write_doc(rows):
          'Every program trace of the conformance corpus (tests/conformance/programs, captured',
          'programs the sampler was not tuned on: 4 frames each) and the scene generators\' traces',
          '(%s triangles per frame; 20 frames, two of %d), on O2 and InfiniteReality.' % (SCALE, LONG_FRAMES),
+         'Sampled mode simulates traces of 3 to 5 frames in full (too short to sample with an',
+         'error estimate, docs/cycle_model.md): the 4-frame programs have error 0 and speed-up about 1.',
          'Error: sampled mode\'s total cycles against full cycle mode\'s; estimate: the error',
          'sampled mode reports for itself (`error_estimate` of `fragsim bench`); speed-up: full',
          'cycle mode\'s replay time over sampled mode\'s (load excluded).  Settings: the',
