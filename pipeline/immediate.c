@@ -235,8 +235,8 @@ void fs_exec_End(fs_context *c)
         v->mat_seg_n = 0;
         /* Lit in full, none lazy; under a tile mask the inputs still go
          * along, since fs_prim_draw reads a draw without them as one that
-         * reaches no masked tile (sampled mode dropped every triangle of
-         * rubik, a corpus program that sets materials between vertices). */
+         * reaches no masked tile (every triangle of rubik, a corpus
+         * program that sets materials between vertices, was dropped). */
         lazy = fs_vs_tile_mask(c, c->prim.mode) != NULL;
     } else {
         lazy = fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_mask(c, c->prim.mode));
