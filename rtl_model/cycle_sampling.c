@@ -571,8 +571,8 @@ void fs_cyc_sample_frame_end(fs_cycle *cy, uint64_t frame_cycles)
 
 /* ---- sampled mode: frames ---- */
 
-/* Frames 0 and 1, every sampling.frames-th frame after frame 1, and the
- * last.  Frame 0 of a captured program is a warm-up more often than not (it
+/* Frames 0 and 1, every frame_step-th frame after frame 1 (sampling.frames,
+ * or less on a short trace: fs_cycle_set_frames), and the last.  Frame 0 of a captured program is a warm-up more often than not (it
  * carries the uploads, list compilations and first clears: in full cycle
  * mode on O2, frame 0 of 26 of the 31 programs of the conformance corpus
  * costs 1.27-2.99x the mean of the three frames after it, polyhedra's 0.08x),
@@ -648,10 +648,12 @@ void fs_cycle_finish(fs_cycle *cy)
      * across a segment and, where the curvature keeps its sign, across
      * segments: the misses are summed, not added in quadrature.  c'' of a
      * segment is the larger second difference at its two ends (from the
-     * simulated frames around it); with fewer than three simulated frames
-     * there is none, and the estimate falls back to a quarter of the step
-     * per interpolated frame (which cannot see a trace that turns between
-     * two samples: docs/cycle_model.md). */
+     * simulated frames around it).  The step rule (fs_cycle_set_frames)
+     * gives every skipped frame three steady simulated frames; fewer are
+     * left only when the trace ends before the frame count it announced,
+     * and then the estimate falls back to a quarter of the step per
+     * interpolated frame (which cannot see a trace that turns between two
+     * samples: docs/cycle_model.md). */
     int nsim = 0;
     double err = 0;
     /* The steady part only: frame 0's warm-up (above) is no point of the

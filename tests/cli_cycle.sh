@@ -192,6 +192,29 @@ test_bench_repetitions_start_fresh() {
     echo "$three" | grep -q "\"fragments\": $((3 * fr))," || fail "bench --repeat 3: not 3 x $fr fragments: $three"
 }
 
+test_short_trace_simulated_in_full() {
+    # A 4-frame capture is too short to sample (docs/cycle_model.md): sampled
+    # mode says so on stderr and in the statistics, and its cycles are full
+    # cycle mode's; a 21-frame scene is sampled (the key false).
+    local t="$ROOT/tests/conformance/programs/rubik.trace" a b
+    [ -f "$t" ] || skip "no rubik trace"
+    for m in cycle sampled; do
+        "$FRAGSIM" replay --mode $m --config "$ROOT/configs/o2.ini" --out "$WORK/st_$m" --csv "$WORK/st_$m.csv" "$t" \
+            >/dev/null 2>"$WORK/st_$m.err" || fail "replay --mode $m failed"
+    done
+    grep -q "too few to sample" "$WORK/st_sampled.err" || fail "sampled mode did not say: $(cat "$WORK/st_sampled.err")"
+    a=$(awk -F, '$1 == "total" { print $7 }' "$WORK/st_cycle.csv")
+    b=$(awk -F, '$1 == "total" { print $7 }' "$WORK/st_sampled.csv")
+    [ -n "$a" ] && [ "$a" = "$b" ] || fail "sampled $b cycles, full $a"
+    /usr/bin/python3 -c "import json, sys; sys.exit(json.load(open('$WORK/st_sampled/stats.json'))['cycle']['too_short_to_sample'] is not True)" ||
+        fail "stats.json: too_short_to_sample is not true"
+    local long; long=$(scene_trace cathedrals 21) || fail "scenegen failed"
+    "$FRAGSIM" replay --mode sampled --config "$ROOT/configs/o2.ini" --out "$WORK/st_long" "$long" >/dev/null 2>&1 ||
+        fail "replay of the scene failed"
+    /usr/bin/python3 -c "import json, sys; sys.exit(json.load(open('$WORK/st_long/stats.json'))['cycle']['too_short_to_sample'] is not False)" ||
+        fail "stats.json of a 21-frame scene: too_short_to_sample is not false"
+}
+
 run_test test_cycle_identical_o2
 run_test test_cycle_identical_ir
 run_test test_config_errors
@@ -200,4 +223,5 @@ run_test test_config_sources
 run_test test_stats_list
 run_test test_sampled_error
 run_test test_bench_repetitions_start_fresh
+run_test test_short_trace_simulated_in_full
 finish

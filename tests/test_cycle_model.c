@@ -762,6 +762,47 @@ static void warmup_frame(fs_context *c, int quads)
     }
 }
 
+/* A run of the frame-sampling tests: nf frames of warmup_frame (frame 0
+ * with first_quads quads, the others with one), the draws of the frames
+ * sampled mode skips left out as the driver leaves them out
+ * (fs_cycle_frame_skipped); lit: depth test and one light on. */
+typedef struct frames_run {
+    uint64_t total, cycles[8], frags[8]; /* per frame: cycles, fragments rasterized */
+    bool skipped[8];
+    GLenum error;                        /* glGetError after the last frame */
+} frames_run;
+
+static frames_run run_frames(const fs_run_config *cfg, fs_cycle_mode mode, int nf, int first_quads, bool lit)
+{
+    frames_run r = {0};
+    fs_cycle *cy;
+    fs_context *c = new_context(cfg, &cy, mode);
+    fs_cycle_set_frames(cy, (uint64_t)nf);
+    if (lit) {
+        fsglEnable(c, GL_DEPTH_TEST);
+        fsglEnable(c, GL_LIGHTING);
+        fsglEnable(c, GL_LIGHT0);
+    }
+    for (int f = 0; f < nf && f < 8; f++) {
+        uint64_t before = c->stats.fragments_generated;
+        r.skipped[f] = fs_cycle_frame_skipped(cy);
+        if (!r.skipped[f])
+            warmup_frame(c, f == 0 ? first_quads : 1);
+        fs_cycle_stats st;
+        fs_cycle_frame_end(cy, &st);
+        r.cycles[f] = st.cycles;
+        r.frags[f] = c->stats.fragments_generated - before;
+    }
+    r.error = fsglGetError(c);
+    fs_cycle_finish(cy);
+    fs_cycle_stats t;
+    fs_cycle_totals(cy, &t);
+    r.total = t.cycles;
+    fs_cycle_destroy(cy);
+    fs_context_destroy(c);
+    return r;
+}
+
 TEST(frame_sampling_warmup_frame)
 {
     /* Eight frames: frame 0 draws 6 quads (a warm-up, as frame 0 of most
@@ -775,48 +816,29 @@ TEST(frame_sampling_warmup_frame)
      * frames too, the quads with materials between their vertices must
      * still reach the sampled tiles (they were all dropped). */
     enum { NF = 8 };
-    static const int simulated[NF] = {1, 1, 0, 0, 1, 0, 0, 1};
-    uint64_t per_frame[NF] = {0}, total[3] = {0, 0, 0}, frags[3] = {0, 0, 0};
+    static const bool simulated[NF] = {1, 1, 0, 0, 1, 0, 0, 1};
+    frames_run run[3];
+    uint64_t frags[3] = {0, 0, 0}; /* in the frames sampled mode simulates */
     for (int m = 0; m < 3; m++) {
         fs_run_config cfg;
         fs_run_config_defaults(&cfg);
         cfg.cycle.sampling_frames = 3;
         cfg.cycle.sampling_frame_tiles = m == 2 ? 4 : 1;
         cfg.cycle.sampling_tile_size = 8;
-        fs_cycle *cy;
-        fs_context *c = new_context(&cfg, &cy, m ? FS_CYCLE_SAMPLED : FS_CYCLE_FULL);
-        fs_cycle_set_frames(cy, NF);
-        fsglEnable(c, GL_DEPTH_TEST);
-        fsglEnable(c, GL_LIGHTING);
-        fsglEnable(c, GL_LIGHT0);
-        uint64_t before = 0;
+        run[m] = run_frames(&cfg, m ? FS_CYCLE_SAMPLED : FS_CYCLE_FULL, NF, 6, true);
+        CHECK_EQ_INT(run[m].error, GL_NO_ERROR);
         for (int f = 0; f < NF; f++) {
             if (m)
-                CHECK_EQ_INT(!fs_cycle_frame_skipped(cy), simulated[f]);
-            if (!fs_cycle_frame_skipped(cy))
-                warmup_frame(c, f == 0 ? 6 : 1);
-            fs_cycle_stats st;
-            fs_cycle_frame_end(cy, &st);
-            if (m == 0)
-                per_frame[f] = st.cycles;
-            if (m == 0 && !simulated[f])
-                frags[0] -= c->stats.fragments_generated - before; /* drawn here only */
-            before = c->stats.fragments_generated;
+                CHECK_EQ_INT(!run[m].skipped[f], simulated[f]);
+            if (simulated[f])
+                frags[m] += run[m].frags[f];
         }
-        frags[m] += c->stats.fragments_generated; /* the rasterized ones */
-        CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
-        fs_cycle_finish(cy);
-        fs_cycle_stats t;
-        fs_cycle_totals(cy, &t);
-        total[m] = t.cycles;
-        fs_cycle_destroy(cy);
-        fs_context_destroy(c);
     }
-    CHECK(per_frame[0] > per_frame[1] * 2);
+    CHECK(run[0].cycles[0] > run[0].cycles[1] * 2);
     for (int f = 2; f < NF; f++)
-        CHECK_EQ_UINT(per_frame[f], per_frame[1]);
-    CHECK(total[0] > 0);
-    CHECK_EQ_UINT(total[1], total[0]);
+        CHECK_EQ_UINT(run[0].cycles[f], run[0].cycles[1]);
+    CHECK(run[0].total > 0);
+    CHECK_EQ_UINT(run[1].total, run[0].total);
     CHECK_EQ_UINT(frags[1], frags[0]);
     /* one tile in 4 rasterized: about a quarter of the fragments, not none */
     CHECK(frags[2] > frags[0] / 8 && frags[2] < frags[0] / 2);
@@ -829,38 +851,32 @@ TEST(frame_sampling_short_traces)
      * cycle mode's); 6 frames: frames 0, 1, 3 and 5 simulated (step
      * (6 - 2) / 2 = 2 under the default 7); 1 frame: tile sampling. */
     for (int nf = 1; nf <= 6; nf++) {
-        uint64_t total[2] = {0, 0};
+        fs_run_config cfg;
+        fs_run_config_defaults(&cfg);
+        char err[256];
+        fs_cycle *cy = fs_cycle_create(&cfg.cycle, FS_CYCLE_SAMPLED, err, sizeof err);
+        CHECK(cy != NULL);
+        if (!cy)
+            continue;
+        fs_cycle_set_frames(cy, (uint64_t)nf);
+        CHECK_EQ_INT(fs_cycle_too_short(cy), nf >= 3 && nf <= 5);
+        fs_cycle_destroy(cy);
+        frames_run full = run_frames(&cfg, FS_CYCLE_FULL, nf, 3, false);
+        frames_run smp = run_frames(&cfg, FS_CYCLE_SAMPLED, nf, 3, false);
+        CHECK_EQ_INT(full.error, GL_NO_ERROR);
+        CHECK_EQ_INT(smp.error, GL_NO_ERROR);
         int skipped = 0;
-        for (int m = 0; m < 2; m++) {
-            fs_run_config cfg;
-            fs_run_config_defaults(&cfg);
-            fs_cycle *cy;
-            fs_context *c = new_context(&cfg, &cy, m ? FS_CYCLE_SAMPLED : FS_CYCLE_FULL);
-            fs_cycle_set_frames(cy, (uint64_t)nf);
-            if (m)
-                CHECK_EQ_INT(fs_cycle_too_short(cy), nf >= 3 && nf <= 5);
-            for (int f = 0; f < nf; f++) {
-                if (m && fs_cycle_frame_skipped(cy)) {
-                    CHECK_EQ_INT(nf == 6 && (f == 2 || f == 4), 1);
-                    skipped++;
-                } else {
-                    warmup_frame(c, f == 0 ? 3 : 1);
-                }
-                fs_cycle_stats st;
-                fs_cycle_frame_end(cy, &st);
-            }
-            fs_cycle_finish(cy);
-            fs_cycle_stats t;
-            fs_cycle_totals(cy, &t);
-            total[m] = t.cycles;
-            fs_cycle_destroy(cy);
-            fs_context_destroy(c);
+        for (int f = 0; f < nf; f++) {
+            if (smp.skipped[f])
+                CHECK_EQ_INT(nf == 6 && (f == 2 || f == 4), 1);
+            skipped += smp.skipped[f];
         }
         CHECK_EQ_INT(skipped, nf == 6 ? 2 : 0);
+        CHECK(full.total > 0);
         if (nf >= 3 && nf <= 5)
-            CHECK_EQ_UINT(total[1], total[0]);
+            CHECK_EQ_UINT(smp.total, full.total);
         if (nf == 1)
-            CHECK(total[1] != total[0]); /* tile-sampled: an estimate */
+            CHECK(smp.total != full.total); /* tile-sampled: an estimate */
     }
 }
 

@@ -103,36 +103,58 @@ static void random_vertex_setup(fs_context *c, unsigned *s, int w, int h)
     G(DepthRange, rndf(s, 0, 0.5f), rndf(s, 0.5f, 1));
 }
 
+/* Runs fn on a new OSMesa context (c NULL: the gl* calls go there), then on
+ * a new model context, with the same seed: the values into want and got.
+ * 0, or 1 without an OSMesa context, 2 without a model one. */
+typedef void (*both_fn)(fs_context *c, unsigned seed, float *out);
+static int on_both(both_fn fn, unsigned seed, int w, int h, float *want, float *got)
+{
+    for (int pass = 0; pass < 2; pass++) {
+        osm o;
+        fs_context *c = NULL;
+        if (!osm_open(&o, w, h)) {
+            osm_close(&o);
+            return 1;
+        }
+        if (pass && !(c = fs_context_create(NULL, w, h))) {
+            osm_close(&o);
+            return 2;
+        }
+        fn(c, seed, pass ? got : want);
+        if (c)
+            fs_context_destroy(c);
+        osm_close(&o);
+    }
+    return 0;
+}
+
+enum { RP_W = 64, RP_H = 48, RP_STEPS = 30 };
+
+/* The initial raster state, then RP_STEPS random raster positions (with a
+ * random vertex set-up now and then), each read back. */
+static void raster_position_steps(fs_context *c, unsigned seed, float *outp)
+{
+    float (*out)[RASTER_VALUES] = (float (*)[RASTER_VALUES])outp;
+    unsigned s = seed;
+    get_raster_state(c, out[0]); /* the initial values */
+    for (int i = 1; i <= RP_STEPS; i++) {
+        if (pick(&s, 4) == 0)
+            random_vertex_setup(c, &s, RP_W, RP_H);
+        random_raster_pos(c, &s, pick(&s, 2) ? -80.0f : -1.5f, pick(&s, 2) ? 80.0f : 1.5f);
+        get_raster_state(c, out[i]);
+    }
+}
+
 TEST(raster_position_vs_osmesa)
 {
-    enum { W = 64, H = 48, SEEDS = 20, STEPS = 30 };
+    enum { SEEDS = 20, STEPS = RP_STEPS };
     long compared = 0, differ = 0, colour_ulps = 0;
     for (unsigned seed = 1; seed <= SEEDS; seed++) {
         float want[STEPS + 1][RASTER_VALUES], got[STEPS + 1][RASTER_VALUES];
-        for (int pass = 0; pass < 2; pass++) {
-            osm o;
-            fs_context *c = NULL;
-            if (!osm_open(&o, W, H)) {
-                osm_close(&o);
-                SKIP("no OSMesa context");
-            }
-            if (pass) {
-                c = fs_context_create(NULL, W, H);
-                REQUIRE(c);
-            }
-            float (*out)[RASTER_VALUES] = pass ? got : want;
-            unsigned s = seed;
-            get_raster_state(c, out[0]); /* the initial values */
-            for (int i = 1; i <= STEPS; i++) {
-                if (pick(&s, 4) == 0)
-                    random_vertex_setup(c, &s, W, H);
-                random_raster_pos(c, &s, pick(&s, 2) ? -80.0f : -1.5f, pick(&s, 2) ? 80.0f : 1.5f);
-                get_raster_state(c, out[i]);
-            }
-            if (c)
-                fs_context_destroy(c);
-            osm_close(&o);
-        }
+        int rc = on_both(raster_position_steps, seed, RP_W, RP_H, &want[0][0], &got[0][0]);
+        if (rc == 1)
+            SKIP("no OSMesa context");
+        REQUIRE(rc == 0);
         for (int i = 0; i <= STEPS; i++)
             for (int k = 0; k < RASTER_VALUES; k++) {
                 compared++;
@@ -161,65 +183,63 @@ TEST(raster_position_vs_osmesa)
  * unit (with and without a complete texture bound), texture generation
  * on some, then every unit's
  * value after glRasterPos or glWindowPos, bit for bit. */
+enum { RT_W = 32, RT_H = 32, RT_UNITS = 8 };
+
+/* Random coordinates, texture matrices, enables and generation per unit,
+ * a glRasterPos or glWindowPos, then every unit's raster coordinates. */
+static void raster_texcoords_case(fs_context *c, unsigned seed, float *out)
+{
+    enum { W = RT_W, H = RT_H, UNITS = RT_UNITS };
+    static const uint8_t texel[4] = {10, 20, 30, 255};
+    unsigned s = seed;
+    G(MatrixMode, GL_MODELVIEW);
+    G0(LoadIdentity);
+    G(Translatef, rndf(&s, -0.5f, 0.5f), rndf(&s, -0.5f, 0.5f), 0);
+    for (int u = 0; u < UNITS; u++) {
+        G(ActiveTexture, GL_TEXTURE0 + u);
+        G(MultiTexCoord4f, GL_TEXTURE0 + u, rndf(&s, -2, 2), rndf(&s, -2, 2), rndf(&s, -2, 2),
+          rndf(&s, 0.5f, 2));
+        G(MatrixMode, GL_TEXTURE);
+        G0(LoadIdentity);
+        if (pick(&s, 2)) {
+            G(Translatef, rndf(&s, -1, 1), rndf(&s, -1, 1), rndf(&s, -1, 1));
+            G(Scalef, rndf(&s, -2, 2), rndf(&s, -2, 2), rndf(&s, -2, 2));
+        }
+        int en = pick(&s, 3); /* 0 off, 1 on without a texture, 2 on with a complete one */
+        if (en == 2) {
+            G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            G(TexImage2D, GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+        }
+        if (en)
+            G(Enable, GL_TEXTURE_2D);
+        if (pick(&s, 4) == 0) { /* generated s or t, object or eye linear */
+            GLenum coord = pick(&s, 2) ? GL_S : GL_T;
+            G(TexGeni, coord, GL_TEXTURE_GEN_MODE, pick(&s, 2) ? GL_OBJECT_LINEAR : GL_EYE_LINEAR);
+            G(Enable, coord == GL_S ? GL_TEXTURE_GEN_S : GL_TEXTURE_GEN_T);
+        }
+    }
+    G(MatrixMode, GL_MODELVIEW);
+    G(ActiveTexture, GL_TEXTURE0 + pick(&s, UNITS));
+    if (pick(&s, 4) == 0)
+        G(WindowPos2f, rndf(&s, 0, W), rndf(&s, 0, H));
+    else
+        G(RasterPos3f, rndf(&s, -0.9f, 0.9f), rndf(&s, -0.9f, 0.9f), rndf(&s, -0.9f, 0.9f));
+    for (int u = 0; u < UNITS; u++) {
+        G(ActiveTexture, GL_TEXTURE0 + u);
+        G(GetFloatv, GL_CURRENT_RASTER_TEXTURE_COORDS, out + 4 * u);
+    }
+}
+
 TEST(raster_texcoords_per_unit_vs_osmesa)
 {
-    enum { W = 32, H = 32, SEEDS = 40, UNITS = 8 };
+    enum { SEEDS = 40, UNITS = RT_UNITS };
     long compared = 0, differ = 0;
-    static const uint8_t texel[4] = {10, 20, 30, 255};
     for (unsigned seed = 1; seed <= SEEDS; seed++) {
         float out[2][UNITS][4];
-        for (int pass = 0; pass < 2; pass++) {
-            osm o;
-            fs_context *c = NULL;
-            if (!osm_open(&o, W, H)) {
-                osm_close(&o);
-                SKIP("no OSMesa context");
-            }
-            if (pass) {
-                c = fs_context_create(NULL, W, H);
-                REQUIRE(c);
-            }
-            unsigned s = seed;
-            G(MatrixMode, GL_MODELVIEW);
-            G0(LoadIdentity);
-            G(Translatef, rndf(&s, -0.5f, 0.5f), rndf(&s, -0.5f, 0.5f), 0);
-            for (int u = 0; u < UNITS; u++) {
-                G(ActiveTexture, GL_TEXTURE0 + u);
-                G(MultiTexCoord4f, GL_TEXTURE0 + u, rndf(&s, -2, 2), rndf(&s, -2, 2), rndf(&s, -2, 2),
-                  rndf(&s, 0.5f, 2));
-                G(MatrixMode, GL_TEXTURE);
-                G0(LoadIdentity);
-                if (pick(&s, 2)) {
-                    G(Translatef, rndf(&s, -1, 1), rndf(&s, -1, 1), rndf(&s, -1, 1));
-                    G(Scalef, rndf(&s, -2, 2), rndf(&s, -2, 2), rndf(&s, -2, 2));
-                }
-                int en = pick(&s, 3); /* 0 off, 1 on without a texture, 2 on with a complete one */
-                if (en == 2) {
-                    G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-                    G(TexImage2D, GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
-                }
-                if (en)
-                    G(Enable, GL_TEXTURE_2D);
-                if (pick(&s, 4) == 0) { /* generated s or t, object or eye linear */
-                    GLenum coord = pick(&s, 2) ? GL_S : GL_T;
-                    G(TexGeni, coord, GL_TEXTURE_GEN_MODE, pick(&s, 2) ? GL_OBJECT_LINEAR : GL_EYE_LINEAR);
-                    G(Enable, coord == GL_S ? GL_TEXTURE_GEN_S : GL_TEXTURE_GEN_T);
-                }
-            }
-            G(MatrixMode, GL_MODELVIEW);
-            G(ActiveTexture, GL_TEXTURE0 + pick(&s, UNITS));
-            if (pick(&s, 4) == 0)
-                G(WindowPos2f, rndf(&s, 0, W), rndf(&s, 0, H));
-            else
-                G(RasterPos3f, rndf(&s, -0.9f, 0.9f), rndf(&s, -0.9f, 0.9f), rndf(&s, -0.9f, 0.9f));
-            for (int u = 0; u < UNITS; u++) {
-                G(ActiveTexture, GL_TEXTURE0 + u);
-                G(GetFloatv, GL_CURRENT_RASTER_TEXTURE_COORDS, out[pass][u]);
-            }
-            if (c)
-                fs_context_destroy(c);
-            osm_close(&o);
-        }
+        int rc = on_both(raster_texcoords_case, seed, RT_W, RT_H, &out[0][0][0], &out[1][0][0]);
+        if (rc == 1)
+            SKIP("no OSMesa context");
+        REQUIRE(rc == 0);
         for (int u = 0; u < UNITS; u++)
             for (int k = 0; k < 4; k++) {
                 compared++;
