@@ -412,8 +412,29 @@ void fs_vs_constant_attribs(fs_context *c, const fs_vs_setup *s, unsigned varyin
 void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
 {
     const fs_transform_state *x = &c->xf;
-    const float *mv = x->modelview[x->modelview_top].m;
+    fs_modelview_analyse(c);
+    fs_matrix *mvm = &c->xf.modelview[x->modelview_top];
+    const float *mv = mvm->m;
     memcpy(s->mv, mv, sizeof s->mv);
+    /* Mesa analyses the modelview at each draw; its inverse (the normal
+     * matrix, lighting's object space, texgen) follows the analysis.
+     * Draws of one object share a modelview: invert it once (the
+     * persistent setup of the context keeps the last one). */
+    if (!(s->nmat_valid && s->nmat_flags == mvm->flags && memcmp(s->nmat_of, mv, sizeof s->nmat_of) == 0)) {
+        s->mv_rigid = fs_matrix_invert(s->mv_inv, mvm);
+        memcpy(s->nmat_of, mv, sizeof s->nmat_of);
+        s->nmat_flags = mvm->flags;
+        s->nmat_valid = true;
+        /* The inverse's rows are the normal matrix; GL_RESCALE_NORMAL's
+         * factor is 1 / |third row|, 1 for a length-preserving modelview
+         * (Mesa's normal scale). */
+        for (int r = 0; r < 3; r++)
+            for (int k = 0; k < 3; k++)
+                s->nmat[r * 3 + k] = s->mv_inv[r * 4 + k];
+        const float *inv = s->mv_inv;
+        float d = inv[2] * inv[2] + inv[6] * inv[6] + inv[10] * inv[10];
+        s->nscale = s->mv_rigid || d < 1e-12f ? 1.0f : 1.0f / sqrtf(d);
+    }
     fs_mat_mul(s->mvp, x->projection[x->projection_top].m, mv);
     float id[16];
     fs_mat_identity(id);
@@ -443,17 +464,8 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     fs_texgen_setup(c, s);
     /* Draws of one object share a modelview: invert it once (the
      * persistent setup of the context keeps the last one). */
-    if (s->lighting && !(s->nmat_valid && memcmp(s->nmat_of, mv, sizeof s->nmat_of) == 0)) {
-        memcpy(s->nmat_of, mv, sizeof s->nmat_of);
-        s->nmat_valid = true;
-        float inv[16];
-        fs_mat_invert(inv, mv);
-        for (int r = 0; r < 3; r++)
-            for (int k = 0; k < 3; k++)
-                s->nmat[r * 3 + k] = inv[r * 4 + k];
-        float d = inv[2] * inv[2] + inv[6] * inv[6] + inv[10] * inv[10];
-        s->nscale = d > 0.0f ? 1.0f / sqrtf(d) : 1.0f;
-    }
+    if (s->lighting)
+        fs_lighting_spaces(s);
 }
 
 static float clamp01(float v)
