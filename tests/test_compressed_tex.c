@@ -22,6 +22,10 @@
 #include "osmesa_util.h"
 #include "../pipeline/context.h"
 #include "../driver/gl_call.h"
+#include "../driver/osmesa_ref.h"
+#include "../driver/replay.h"
+#include "trace_build.h"
+#include <unistd.h>
 #include <GL/glext.h>
 
 static const GLenum formats[4] = {GL_COMPRESSED_RGB_S3TC_DXT1_EXT, GL_COMPRESSED_RGBA_S3TC_DXT1_EXT,
@@ -437,6 +441,99 @@ TEST(errors_vs_osmesa)
     OSM_CHECK_VALUES(error_calls, 8, 8, 160);
 }
 
+/* ---- a trace carries the calls ---- */
+
+/* A trace written with fragsim's writer (the blobs as apitrace records
+ * them) replayed on the model and on OSMesa through the reference
+ * dispatcher, as `fragsim check` does: the same image, no GL error. */
+TEST(trace_replay_vs_osmesa)
+{
+    char path[256], err[256];
+    snprintf(path, sizeof path, "/tmp/fragsim_test_ctex_%d.trace", (int)getpid());
+    fs_trace_writer *w = fs_trace_create(path, err, sizeof err);
+    REQUIRE(w);
+    static uint8_t data[16 * 16], sub[16];
+    const GLenum fmt = GL_COMPRESSED_RGBA_S3TC_DXT5_EXT;
+    random_blocks(fmt, 16, 31u, data);
+    random_blocks(fmt, 1, 32u, sub);
+    fs_tval v4[4] = {tb_ival(0), tb_ival(0), tb_ival(32), tb_ival(32)};
+    tb_write_call(w, "glViewport", 4, v4, 0);
+    fs_tval bind[2] = {tb_eval(GL_TEXTURE_2D, "GL_TEXTURE_2D"), tb_ival(4)};
+    tb_write_call(w, "glBindTexture", 2, bind, 0);
+    fs_tval img[8] = {tb_eval(GL_TEXTURE_2D, "GL_TEXTURE_2D"), tb_ival(0), tb_eval(fmt, "GL_COMPRESSED_RGBA_S3TC_DXT5_EXT"),
+                      tb_ival(16), tb_ival(16), tb_ival(0), tb_ival(256), tb_blob(data, 256)};
+    tb_write_call(w, "glCompressedTexImage2D", 8, img, 0);
+    fs_tval simg[9] = {tb_eval(GL_TEXTURE_2D, "GL_TEXTURE_2D"), tb_ival(0), tb_ival(8), tb_ival(4), tb_ival(4),
+                       tb_ival(4), tb_eval(fmt, "GL_COMPRESSED_RGBA_S3TC_DXT5_EXT"), tb_ival(16), tb_blob(sub, 16)};
+    tb_write_call(w, "glCompressedTexSubImage2D", 9, simg, 0);
+    fs_tval get[3] = {tb_eval(GL_TEXTURE_2D, "GL_TEXTURE_2D"), tb_ival(0), tb_opaque(0x1000)};
+    tb_write_call(w, "glGetCompressedTexImage", 3, get, 0);
+    static const struct { GLenum p; int v; } params[] = {{GL_TEXTURE_MIN_FILTER, GL_NEAREST}, {GL_TEXTURE_MAG_FILTER, GL_NEAREST}};
+    for (int i = 0; i < 2; i++) {
+        fs_tval tp[3] = {tb_eval(GL_TEXTURE_2D, "GL_TEXTURE_2D"), tb_eval(params[i].p, "p"), tb_ival(params[i].v)};
+        tb_write_call(w, "glTexParameteri", 3, tp, 0);
+    }
+    fs_tval env[3] = {tb_eval(GL_TEXTURE_ENV, "GL_TEXTURE_ENV"), tb_eval(GL_TEXTURE_ENV_MODE, "GL_TEXTURE_ENV_MODE"),
+                      tb_eval(GL_REPLACE, "GL_REPLACE")};
+    tb_write_call(w, "glTexEnvi", 3, env, 0);
+    fs_tval en[1] = {tb_eval(GL_TEXTURE_2D, "GL_TEXTURE_2D")};
+    tb_write_call(w, "glEnable", 1, en, 0);
+    fs_tval mode[1] = {tb_eval(GL_QUADS, "GL_QUADS")};
+    tb_write_call(w, "glBegin", 1, mode, 0);
+    static const float q[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+    for (int i = 0; i < 4; i++) {
+        fs_tval tc[2] = {tb_fval(q[i][0]), tb_fval(q[i][1])};
+        tb_write_call(w, "glTexCoord2f", 2, tc, 0);
+        fs_tval vx[2] = {tb_fval(q[i][0] * 2 - 1), tb_fval(q[i][1] * 2 - 1)};
+        tb_write_call(w, "glVertex2f", 2, vx, 0);
+    }
+    tb_write_call(w, "glEnd", 0, NULL, 0);
+    tb_write_call(w, "glFinish", 0, NULL, 0);
+    REQUIRE(fs_trace_finish(w) == 0);
+
+    fs_replay_opts o = {NULL, 0, 0, 0};
+    fs_replayer *r = fs_replay_open(path, &o, err, sizeof err);
+    if (!r)
+        printf("  %s\n", err);
+    REQUIRE(r);
+    int w_ = fs_replay_info_get(r)->width, h_ = fs_replay_info_get(r)->height;
+    CHECK_EQ_INT(w_, 32);
+    fs_osmesa *ref = fs_osmesa_create(w_, h_, 24, 8, err, sizeof err);
+    fs_context *c = fs_context_create(NULL, w_, h_);
+    REQUIRE(ref && c);
+    fs_call call;
+    fs_replay_event ev;
+    int calls = 0, malformed = 0;
+    while ((ev = fs_replay_next(r, &call)) != FS_REPLAY_EOF && ev != FS_REPLAY_ERROR) {
+        if (ev != FS_REPLAY_CALL)
+            continue;
+        calls++;
+        malformed += fs_submit(c, &call) != 0;
+        fs_osmesa_dispatch(ref, &call);
+    }
+    CHECK(ev == FS_REPLAY_EOF);
+    CHECK_EQ_INT(calls, 20);
+    CHECK_EQ_INT(malformed, 0);
+    CHECK_EQ_UINT(fs_replay_skipped_total(r), 0);
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    CHECK_EQ_INT(glGetError(), GL_NO_ERROR);
+    glFinish();
+    img_diff d = {0};
+    img_compare(c->fb.color, fs_osmesa_color(ref), (long)w_ * h_, &d);
+    printf("  trace: %ld of %ld pixels differ, %ld lit\n", d.differ, d.pixels, img_lit_pixels(c->fb.color, (long)w_ * h_));
+    CHECK_EQ_INT(d.differ, 0);
+    CHECK(img_lit_pixels(c->fb.color, (long)w_ * h_) > (long)w_ * h_ / 2);
+    /* the model holds the blocks the trace gave, the sub-image included */
+    uint8_t got[256];
+    memcpy(data + (1 * 4 + 2) * 16, sub, 16);
+    fsglGetCompressedTexImage(c, GL_TEXTURE_2D, 0, got);
+    CHECK(memcmp(got, data, 256) == 0);
+    fs_context_destroy(c);
+    fs_osmesa_destroy(ref);
+    fs_replay_close(r);
+    unlink(path);
+}
+
 /* ---- known differences ---- */
 
 /* What OSMesa lists and accepts beyond the model's S3TC formats: FXT1 and
@@ -487,6 +584,7 @@ TEST_LIST = {
     TEST_ENTRY(get_compressed_round_trip_vs_osmesa),
     TEST_ENTRY(level_queries_vs_osmesa),
     TEST_ENTRY(errors_vs_osmesa),
+    TEST_ENTRY(trace_replay_vs_osmesa),
     TEST_ENTRY(known_differences),
     TEST_END,
 };
