@@ -534,6 +534,36 @@ TEST(trace_replay_vs_osmesa)
     unlink(path);
 }
 
+/* What the model does not do is counted as unsupported, not done
+ * silently: glTexSubImage2D and glCopyTexSubImage2D into a compressed
+ * level (llvmpipe recompresses), GL_GENERATE_MIPMAP of one; the usual
+ * calls count nothing. */
+TEST(not_modelled_is_counted)
+{
+    fs_context *c = fs_context_create(NULL, 16, 16);
+    REQUIRE(c);
+    static uint8_t d[16 * 16 * 4];
+    const GLenum F1 = GL_COMPRESSED_RGB_S3TC_DXT1_EXT;
+    fsglBindTexture(c, GL_TEXTURE_2D, 1);
+    fsglCompressedTexImage2D(c, GL_TEXTURE_2D, 0, F1, 8, 8, 0, 32, d);
+    fsglCompressedTexSubImage2D(c, GL_TEXTURE_2D, 0, 0, 0, 4, 4, F1, 8, d);
+    uint8_t got[32];
+    fsglGetCompressedTexImage(c, GL_TEXTURE_2D, 0, got);
+    CHECK_EQ_UINT(c->stats.unsupported_calls, 0);
+    fsglTexSubImage2D(c, GL_TEXTURE_2D, 0, 0, 0, 4, 4, GL_RGBA, GL_UNSIGNED_BYTE, d);
+    CHECK_EQ_UINT(c->stats.unsupported_calls, 1);
+    fsglCopyTexSubImage2D(c, GL_TEXTURE_2D, 0, 0, 0, 0, 0, 4, 4);
+    CHECK_EQ_UINT(c->stats.unsupported_calls, 2);
+    fsglTexParameteri(c, GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+    fsglCompressedTexImage2D(c, GL_TEXTURE_2D, 0, F1, 8, 8, 0, 32, d);
+    CHECK_EQ_UINT(c->stats.unsupported_calls, 3);
+    GLint w = -1;
+    fsglGetTexLevelParameteriv(c, GL_TEXTURE_2D, 1, GL_TEXTURE_WIDTH, &w);
+    CHECK_EQ_INT(w, 0); /* no level generated */
+    CHECK_EQ_INT(fsglGetError(c), GL_NO_ERROR);
+    fs_context_destroy(c);
+}
+
 /* ---- known differences ---- */
 
 /* What OSMesa lists and accepts beyond the model's S3TC formats: FXT1 and
@@ -585,6 +615,7 @@ TEST_LIST = {
     TEST_ENTRY(level_queries_vs_osmesa),
     TEST_ENTRY(errors_vs_osmesa),
     TEST_ENTRY(trace_replay_vs_osmesa),
+    TEST_ENTRY(not_modelled_is_counted),
     TEST_ENTRY(known_differences),
     TEST_END,
 };

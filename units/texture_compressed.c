@@ -43,6 +43,7 @@
  * glCopyTexSubImage into a compressed level, and GL_GENERATE_MIPMAP of a
  * compressed level; the first is refused as any unknown internal format
  * is, the others are counted as unsupported (texture_object.c, here).
+ * docs/compressed_textures.md sums this up.
  */
 #include <stdlib.h>
 #include <string.h>
