@@ -326,6 +326,17 @@ static void level_queries(fs_context *c, double *v, int *n)
     put(v, n, x);
     G(GetCompressedTexImage, GL_TEXTURE_2D, 0, data);
     put(v, n, err_of(c));
+    /* a compressed level 1 rewritten by GL_GENERATE_MIPMAP from an
+     * uncompressed base is no longer compressed */
+    G(BindTexture, GL_TEXTURE_2D, 41);
+    G(CompressedTexImage2D, GL_TEXTURE_2D, 1, GL_COMPRESSED_RGB_S3TC_DXT1_EXT, 4, 4, 0, 8, data);
+    G(TexParameteri, GL_TEXTURE_2D, GL_GENERATE_MIPMAP, GL_TRUE);
+    G(TexImage2D, GL_TEXTURE_2D, 0, GL_RGBA, 8, 8, 0, GL_RGBA, GL_UNSIGNED_BYTE, data);
+    x = -7;
+    G(GetTexLevelParameteriv, GL_TEXTURE_2D, 1, GL_TEXTURE_COMPRESSED, &x);
+    put(v, n, x);
+    G(GetCompressedTexImage, GL_TEXTURE_2D, 1, data);
+    put(v, n, err_of(c));
 }
 
 TEST(level_queries_vs_osmesa)

@@ -202,6 +202,14 @@ static void store_blocks(fs_tex_image *img, int x, int y, int z, int w, int h, i
 
 /* ---- the commands ---- */
 
+/* A level holding blocks: given by glCompressedTexImage and not replaced
+ * since (a level GL_GENERATE_MIPMAP rewrote from an uncompressed base
+ * keeps its old blocks but has the base's internal format). */
+static bool holds_blocks(const fs_tex_image *img)
+{
+    return img->compressed && img->texels && fs_tex_compressed_block_bytes(img->internal_format, NULL);
+}
+
 static bool pow2_or_zero(GLsizei v) { return (v & (v - 1)) == 0; }
 
 /* glCompressedTexImage's checks, in the order Mesa makes them (so that a
@@ -338,7 +346,7 @@ static GLenum check_subimage(fs_context *c, int dims, GLenum target, GLint level
     if (size[0] < 0 || size[1] < 0 || imageSize != blocks_size(size[0], size[1], bytes))
         return GL_INVALID_VALUE;
     fs_tex_image *img = &fs_tex_active(c)->bound[ti.k]->level[level];
-    if (!img->texels || !img->compressed || img->internal_format != (GLint)format)
+    if (!holds_blocks(img) || img->internal_format != (GLint)format)
         return GL_INVALID_OPERATION;
     const int dim[2] = {img->width, img->height};
     for (int i = 0; i < 2; i++)
@@ -410,11 +418,11 @@ static const fs_tex_image *get_level(fs_context *c, GLenum target, GLint level, 
         err = GL_INVALID_VALUE;
     else {
         img = &fs_tex_active(c)->bound[ti.k]->level[level];
-        if (!img->texels && !img->compressed)
+        if (!img->texels)
             err = ti.k == FS_TEX_3D ? GL_NO_ERROR : GL_INVALID_VALUE;
-        else if (!img->compressed)
+        else if (!holds_blocks(img))
             err = GL_INVALID_OPERATION;
-        if (!img->compressed)
+        if (!holds_blocks(img))
             img = NULL;
     }
     if (err != GL_NO_ERROR && set_error)

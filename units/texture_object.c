@@ -649,7 +649,7 @@ void fs_tex_subimage_nd(fs_context *c, int dims, GLenum target, GLint level, con
         fs_error(c, err);
         return;
     }
-    if (img->compressed) /* llvmpipe compresses the image into the blocks */
+    if (fs_tex_compressed_block_bytes(img->internal_format, NULL)) /* llvmpipe compresses into the blocks */
         fs_unsupported(c, "glTexSubImage into a compressed level (units/texture_compressed.c)");
     if (w > 0 && h > 0 && d > 0 && pixels)
         unpack_image(c, img, dims, off, w, h, d, format, type, pixels);
@@ -733,7 +733,7 @@ void fs_tex_copy_subimage_nd(fs_context *c, int dims, GLenum target, GLint level
     fs_tex_image *img = subimage_target(c, &ti, level, off, size);
     if (!img)
         return;
-    if (img->compressed)
+    if (fs_tex_compressed_block_bytes(img->internal_format, NULL))
         fs_unsupported(c, "glCopyTexSubImage into a compressed level (units/texture_compressed.c)");
     copy_from_framebuffer(c, img, off, x, y, w, h);
     fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], level);
