@@ -83,7 +83,7 @@ const GLubyte *fs_exec_GetString(fs_context *c, GLenum name)
     case GL_RENDERER: return (const GLubyte *)"fragsim functional model";
     case GL_VERSION: return (const GLubyte *)FS_GL_VERSION;
     /* Only what is implemented: the Occlusion Unit (units/occlusion_gl.c). */
-    case GL_EXTENSIONS: return (const GLubyte *)"GL_ARB_occlusion_query GL_FRAGSIM_occlusion_unit GL_HP_occlusion_test GL_FRAGSIM_footprint_filter GL_FRAGSIM_mp_grid";
+    case GL_EXTENSIONS: return (const GLubyte *)"GL_ARB_occlusion_query GL_ARB_texture_non_power_of_two GL_FRAGSIM_occlusion_unit GL_HP_occlusion_test GL_FRAGSIM_footprint_filter GL_FRAGSIM_mp_grid";
     default:
         fs_error(c, GL_INVALID_ENUM);
         return NULL;

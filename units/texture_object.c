@@ -459,18 +459,17 @@ static bool keeps_wide_texels(GLint internalformat, GLenum format, GLenum type)
     return unsized && wide;
 }
 
-static bool is_pow2_or_zero(GLsizei v) { return (v & (v - 1)) == 0; }
-
 /* One size of an image of level `level` of a target whose largest image is
- * 2^max_log2 (3.8.1): 2^n + 2 border (GL 1.x has no non-power-of-two
- * textures), at most the largest size >> level; zero is a valid, empty
- * image. */
+ * 2^max_log2 (3.8.1): any size from 0 (a valid, empty image) plus 2 border
+ * (ARB_texture_non_power_of_two, core in GL 2.0, which Mesa exposes on
+ * every context and captured programs use), at most the largest size >>
+ * level. */
 static bool size_ok(GLsizei v, GLint border, int max_log2, GLint level)
 {
     if (v < 0 || v > (1 << max_log2) + 2 * border)
         return false;
     GLsizei inner = v - 2 * border;
-    if (v > 0 && (inner < 0 || !is_pow2_or_zero(inner)))
+    if (v > 0 && inner < 0)
         return false;
     return inner <= ((1 << max_log2) >> level);
 }
