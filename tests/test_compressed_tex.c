@@ -76,6 +76,7 @@ static void random_blocks(GLenum f, int n, uint32_t seed, uint8_t *out)
 static GLenum cur_format;
 static GLenum cur_min, cur_mag;
 static int cur_size;          /* the texture is cur_size x cur_size */
+static int cur_h;             /* its height when not 0 (non-power-of-two cases) */
 static int cur_mipmaps;       /* define every level down to 1x1 */
 static int cur_subimage;      /* replace parts of level 0 after the upload */
 static int cur_list;          /* upload through a display list */
@@ -84,7 +85,14 @@ static float cur_scale, cur_tilt, cur_rot;
 static void upload(fs_context *c)
 {
     int size = cur_size;
-    uint8_t *data = malloc((size_t)image_bytes(cur_format, size, size));
+    uint8_t *data = malloc((size_t)image_bytes(cur_format, size, size > cur_h ? size : cur_h));
+    if (cur_h) {
+        int n = image_bytes(cur_format, size, cur_h);
+        random_blocks(cur_format, n / block_bytes(cur_format), 555u + (uint32_t)cur_format, data);
+        G(CompressedTexImage2D, GL_TEXTURE_2D, 0, cur_format, size, cur_h, 0, n, data);
+        free(data);
+        return;
+    }
     for (int lvl = 0;; lvl++) {
         random_blocks(cur_format, image_bytes(cur_format, size, size) / block_bytes(cur_format),
                       1234u + 77u * (uint32_t)lvl + (uint32_t)cur_format, data);
@@ -134,17 +142,21 @@ static void scene(fs_context *c, int w, int h)
     }
     G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)cur_min);
     G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, (GLint)cur_mag);
+    if (cur_h) {
+        G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+        G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
     G(TexEnvi, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
     G(Enable, GL_TEXTURE_2D);
-    float s = cur_scale;
+    float s = cur_scale, r = cur_h ? 1.7f : 1.0f, lo = cur_h ? -0.3f : 0.0f;
     G(Begin, GL_QUADS);
-    G(TexCoord2f, 0, 0);
+    G(TexCoord2f, lo, lo);
     G(Vertex3f, -s, -s, 0);
-    G(TexCoord2f, 1, 0);
+    G(TexCoord2f, r, lo);
     G(Vertex3f, s, -s, 0);
-    G(TexCoord2f, 1, 1);
+    G(TexCoord2f, r, r);
     G(Vertex3f, s, s, 0);
-    G(TexCoord2f, 0, 1);
+    G(TexCoord2f, lo, r);
     G(Vertex3f, -s, s, 0);
     G0(End);
     G(Disable, GL_TEXTURE_2D);
@@ -155,6 +167,7 @@ typedef struct scene_case {
     GLenum min, mag;
     int size, mipmaps, subimage, list;
     float scale, tilt, rot;
+    int h; /* a non-power-of-two size x h image, REPEAT and CLAMP_TO_EDGE */
 } scene_case;
 
 static void run_scenes(check_state *check_st_, const scene_case *cases, int n)
@@ -165,6 +178,7 @@ static void run_scenes(check_state *check_st_, const scene_case *cases, int n)
             cur_format = formats[f];
             cur_min = sc->min, cur_mag = sc->mag;
             cur_size = sc->size, cur_mipmaps = sc->mipmaps, cur_subimage = sc->subimage, cur_list = sc->list;
+            cur_h = sc->h;
             cur_scale = sc->scale, cur_tilt = sc->tilt, cur_rot = sc->rot;
             char name[64];
             snprintf(name, sizeof name, "%s_%s", format_names[f], sc->name);
@@ -203,6 +217,18 @@ TEST(subimage_vs_osmesa)
     static const scene_case cases[] = {
         {"sub_nearest", GL_NEAREST, GL_NEAREST, 16, 0, 1, 0, 1.5f, 0, 0},
         {"sub_lml", GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, 16, 1, 1, 0, 1.5f, 70, 0},
+    };
+    run_scenes(check_st_, cases, (int)(sizeof cases / sizeof cases[0]));
+}
+
+/* ARB_texture_non_power_of_two: sizes that are no multiple of 4 have
+ * partial blocks at the edges (EXT_texture_compression_s3tc). */
+TEST(non_power_of_two_vs_osmesa)
+{
+    static const scene_case cases[] = {
+        {"npot_nearest_12x20", GL_NEAREST, GL_NEAREST, 12, 0, 0, 0, 1.5f, 0, 0, 20},
+        {"npot_nearest_6x10_rot", GL_NEAREST, GL_NEAREST, 6, 0, 0, 0, 1.5f, 20, 17, 10},
+        {"npot_linear_13x7", GL_LINEAR, GL_LINEAR, 13, 0, 0, 0, 1.5f, 30, 11, 7},
     };
     run_scenes(check_st_, cases, (int)(sizeof cases / sizeof cases[0]));
 }
@@ -369,6 +395,11 @@ static void error_calls(fs_context *c, double *v, int *n)
     E_(G(CompressedTexImage2D, GL_TEXTURE_2D, 0, F1, 1, 1, 0, 8, d));           /* 1x1: one block */
     E_(G(CompressedTexImage2D, GL_TEXTURE_2D, 0, F1, 2, 4, 0, 8, d));
     E_(G(CompressedTexImage2D, GL_TEXTURE_2D, 0, F1, 0, 0, 0, 0, d));           /* empty */
+    E_(G(CompressedTexImage2D, GL_TEXTURE_2D, 0, F1, 6, 10, 0, 48, d));         /* non-power-of-two */
+    E_(G(CompressedTexSubImage2D, GL_TEXTURE_2D, 0, 4, 8, 2, 2, F1, 8, d));     /* the partial corner block */
+    E_(G(CompressedTexSubImage2D, GL_TEXTURE_2D, 0, 4, 4, 2, 4, F1, 8, d));
+    E_(G(CompressedTexSubImage2D, GL_TEXTURE_2D, 0, 4, 4, 2, 2, F1, 8, d));     /* height 2 inside */
+    E_(G(CompressedTexImage2D, GL_TEXTURE_2D, 0, F1, 6, 10, 0, 40, d));
     E_(G(CompressedTexImage2D, GL_TEXTURE_2D, 0, F1, 8, 8, 0, 31, NULL));       /* imageSize, no data */
     E_(G(CompressedTexImage2D, GL_TEXTURE_2D, 0, F1, 8, 8, 1, 31, d));          /* border before imageSize */
     E_(G(CompressedTexImage2D, GL_TEXTURE_2D, -1, F1, 8, 8, 0, 31, d));         /* imageSize before level */
@@ -620,6 +651,7 @@ TEST_LIST = {
     TEST_ENTRY(nearest_vs_osmesa),
     TEST_ENTRY(linear_vs_osmesa),
     TEST_ENTRY(subimage_vs_osmesa),
+    TEST_ENTRY(non_power_of_two_vs_osmesa),
     TEST_ENTRY(display_list_vs_osmesa),
     TEST_ENTRY(decoded_texels_vs_osmesa),
     TEST_ENTRY(get_compressed_round_trip_vs_osmesa),

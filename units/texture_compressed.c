@@ -210,8 +210,6 @@ static bool holds_blocks(const fs_tex_image *img)
     return img->compressed && img->texels && fs_tex_compressed_block_bytes(img->internal_format, NULL);
 }
 
-static bool pow2_or_zero(GLsizei v) { return (v & (v - 1)) == 0; }
-
 /* glCompressedTexImage's checks, in the order Mesa makes them (so that a
  * call with several faults gets the same error, measured through OSMesa):
  * the target (done by the caller), the format, the border, imageSize
@@ -236,9 +234,11 @@ static GLenum check_image(const fs_tex_target_info *ti, GLint level, GLenum inte
     int max_log2 = fs_tex_target_max_log2(ti->k);
     if (level < 0 || level > max_log2 || size[0] < 0 || size[1] < 0)
         return GL_INVALID_VALUE;
-    /* GL 1.x sizes, as glTexImage2D takes them (texture_object.c). */
+    /* The sizes glTexImage2D takes (texture_object.c): any, with
+     * ARB_texture_non_power_of_two, up to the largest >> level; a size
+     * that is no multiple of 4 has partial blocks at the edge. */
     for (int i = 0; i < 2; i++)
-        if (!pow2_or_zero(size[i]) || size[i] > ((1 << max_log2) >> level)) {
+        if (size[i] > ((1 << max_log2) >> level)) {
             *size_only = true;
             return GL_INVALID_VALUE;
         }
