@@ -247,5 +247,8 @@ int fs_texgen_count(GLenum pname); /* values of glTexGen*v, glGetTexGen*v (pipel
 /* Bytes glGetTexImage writes under the current pack state (0 when it
  * writes nothing: an error or an undefined level). */
 int64_t fs_gettexImage_bytes(fs_context *c, GLenum target, GLint level, GLenum format, GLenum type);
+/* Bytes glGetCompressedTexImage writes (units/texture_compressed.c; 0 when
+ * it writes nothing: an error or a level that is not compressed). */
+int64_t fs_getcompressed_bytes(fs_context *c, GLenum target, GLint level);
 
 #endif

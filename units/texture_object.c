@@ -35,8 +35,10 @@ static void object_defaults(fs_tex_object *t, GLuint name)
 static void object_release(fs_tex_object *t)
 {
     fs_mpgrid_gl_release(t);
-    for (int i = 0; i < FS_TEX_MAX_LEVELS; i++)
+    for (int i = 0; i < FS_TEX_MAX_LEVELS; i++) {
         free(t->level[i].texels);
+        free(t->level[i].compressed);
+    }
 }
 
 int fs_texture_init(fs_context *c)
@@ -515,6 +517,9 @@ static fs_tex_image *define_level(fs_context *c, fs_tex_object *t, GLint level, 
         }
     }
     free(img->texels);
+    free(img->compressed); /* an uncompressed image replaces a compressed one */
+    img->compressed = NULL;
+    img->compressed_size = 0;
     img->texels = texels;
     img->width = texels ? size[0] : 0;
     img->height = texels ? size[1] : 0;
@@ -643,6 +648,8 @@ void fs_tex_subimage_nd(fs_context *c, int dims, GLenum target, GLint level, con
         fs_error(c, err);
         return;
     }
+    if (fs_tex_compressed_block_bytes(img->internal_format, NULL)) /* llvmpipe compresses into the blocks */
+        fs_unsupported(c, "glTexSubImage into a compressed level (units/texture_compressed.c)");
     if (w > 0 && h > 0 && d > 0 && pixels)
         unpack_image(c, img, dims, off, w, h, d, format, type, pixels);
     fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], level);
@@ -725,6 +732,8 @@ void fs_tex_copy_subimage_nd(fs_context *c, int dims, GLenum target, GLint level
     fs_tex_image *img = subimage_target(c, &ti, level, off, size);
     if (!img)
         return;
+    if (fs_tex_compressed_block_bytes(img->internal_format, NULL))
+        fs_unsupported(c, "glCopyTexSubImage into a compressed level (units/texture_compressed.c)");
     copy_from_framebuffer(c, img, off, x, y, w, h);
     fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], level);
 }
@@ -1210,7 +1219,7 @@ static bool tex_level_value(const fs_tex_image *img, GLenum pname, GLint *v)
     case GL_TEXTURE_DEPTH: *v = defined ? img->depth : 0; return true;
     case GL_TEXTURE_INTERNAL_FORMAT: *v = defined ? img->internal_format : GL_RGBA; return true;
     case GL_TEXTURE_BORDER: *v = defined ? img->border : 0; return true;
-    case GL_TEXTURE_COMPRESSED: *v = GL_FALSE; return true;
+    case GL_TEXTURE_COMPRESSED: *v = defined && fs_tex_compressed_block_bytes(img->internal_format, NULL); return true;
     default: break;
     }
     static const fs_tex_image undefined;
@@ -1232,6 +1241,14 @@ static bool get_tex_level(fs_context *c, GLenum target, GLint level, GLenum pnam
     }
     const fs_tex_image *img =
         ti.proxy ? &c->texture->proxy[ti.k][level] : &fs_tex_active(c)->bound[ti.k]->level[level];
+    /* Table 6.18; INVALID_OPERATION for a level that is not compressed
+     * and for a proxy (as OSMesa; GL 1.5 leaves it undefined). */
+    if (pname == GL_TEXTURE_COMPRESSED_IMAGE_SIZE) {
+        *v = ti.proxy ? 0 : (GLint)fs_tex_compressed_image_size(img);
+        if (*v == 0)
+            fs_error(c, GL_INVALID_OPERATION);
+        return *v != 0;
+    }
     if (!tex_level_value(img, pname, v)) {
         fs_error(c, GL_INVALID_ENUM);
         return false;
