@@ -404,5 +404,5 @@ void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)
     if (fs_render_mode_diverts(&c->rmode))
         fs_render_mode_point(c, &r);
     else
-        fs_raster_point(c, &r);
+        fs_raster_point_sized(c, &r, s->points_attenuated ? v->psize : s->point_size);
 }
