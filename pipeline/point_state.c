@@ -35,7 +35,9 @@ float fs_point_size(const fs_raster_state *r)
 
 /* The derived size of a vertex at eye-plane distance d = |z_e| (GL 1.5
  * spec 3.3 names the eye distance; Mesa's fixed-function vertex program
- * takes |z_e|, as it does for fog): the clamped size times the reciprocal
+ * takes |z_e|, as it does for fog): GL_POINT_SIZE as it is (measured on
+ * OSMesa: size 2, minimum 3, attenuation 1/4 draws 4 pixels wide, not 6;
+ * size 20, maximum 10, attenuation 4 draws 10, not 5) times the reciprocal
  * square root of |a + d*(b + d*c)| (two multiply-adds, as the program's
  * MADs, which llvmpipe fuses), clamped to [min, max] by a max then a min. */
 float fs_point_derived_size(const fs_vs_setup *s, float d)

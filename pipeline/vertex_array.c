@@ -441,7 +441,7 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     const fs_raster_state *r = &c->raster;
     s->points_attenuated = fs_point_attenuated(r);
     memcpy(s->point_atten, r->point_atten, sizeof s->point_atten);
-    s->point_size = fs_point_size(r);
+    s->point_size = s->points_attenuated ? r->point_size : fs_point_size(r);
     s->point_size_min = r->point_size_min;
     s->point_size_max = r->point_size_max;
     fs_color_sum_setup(c, s);

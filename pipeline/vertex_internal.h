@@ -135,8 +135,9 @@ typedef struct fs_vs_setup {
     unsigned ucp_mask;
     float ucp[FS_MAX_CLIP_PLANES][4];
     /* Point distance attenuation (3.3, point_state.c): on (the
-     * coefficients are not (1, 0, 0)), the coefficients, the clamped
-     * GL_POINT_SIZE and the clamp's bounds. */
+     * coefficients are not (1, 0, 0)), the coefficients, GL_POINT_SIZE
+     * (attenuated as it is, clamped when not: point_state.c) and the
+     * bounds. */
     bool points_attenuated;
     float point_atten[3], point_size, point_size_min, point_size_max;
 } fs_vs_setup;
