@@ -39,7 +39,8 @@ float fs_point_size(const fs_raster_state *r)
  * OSMesa: size 2, minimum 3, attenuation 1/4 draws 4 pixels wide, not 6;
  * size 20, maximum 10, attenuation 4 draws 10, not 5) times the reciprocal
  * square root of |a + d*(b + d*c)| (two multiply-adds, as the program's
- * MADs, which llvmpipe fuses), clamped to [min, max] by a max then a min. */
+ * MADs, which llvmpipe fuses), clamped by a max then a min to the bounds
+ * fs_vs_prepare narrows to the implementation's range. */
 float fs_point_derived_size(const fs_vs_setup *s, float d)
 {
     float q = fmaf(d, s->point_atten[2], s->point_atten[1]);

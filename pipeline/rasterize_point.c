@@ -46,9 +46,13 @@ static void point_coverage(fs_quad *q)
  * carry (+-1, +-1, k, 1), k = (1 - 1 / radius)^2 (measured: the squared
  * inner radius, computed as 1 - 2/r + 1/r^2); point_coverage ends the
  * fragment shader. */
-static void raster_point_smooth(fs_context *c, const fs_rvertex *v, float x, float y, float size)
+static void raster_point_smooth(fs_context *c, const fs_rvertex *v, float x, float y, float size, bool per_vertex)
 {
-    float radius = size <= 2.0f ? 1.0f : 0.5f * size;
+    /* A size of the vertex's own (distance attenuation) is halved as it
+     * is: the stage reads the vertex's size output, which no clamp to the
+     * smooth range has touched (measured on OSMesa: attenuated smooth
+     * points below size 2 are drawn smaller). */
+    float radius = per_vertex ? 0.5f * size : size <= 2.0f ? 1.0f : 0.5f * size;
     float k = 1.0f / radius;
     k = 1.0f - 2.0f * k + k * k;
     fs_rvertex q[4] = {*v, *v, *v, *v};
@@ -194,8 +198,10 @@ void fs_raster_point_sized(fs_context *c, const fs_rvertex *v, float size)
         return;
     }
     if (r->point_smooth) {
-        /* The state tracker clamps the size to GL_SMOOTH_POINT_SIZE_RANGE. */
-        raster_point_smooth(c, v, x, y, size >= 1.0f ? size : 1.0f);
+        /* The state tracker clamps its size to GL_SMOOTH_POINT_SIZE_RANGE,
+         * not a vertex's. */
+        bool per_vertex = fs_point_attenuated(r);
+        raster_point_smooth(c, v, x, y, per_vertex || size >= 1.0f ? size : 1.0f, per_vertex);
         return;
     }
 

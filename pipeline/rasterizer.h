@@ -50,6 +50,10 @@ typedef struct fs_rvertex {
     float fog;
     /* The secondary colour (3.9), read only while interpolate_color2 is set. */
     float color2[4];
+    /* The vertex's derived point size (GL 1.5 spec 3.3), set by the vertex
+     * stage and read only for points while the distance attenuation is on
+     * (fs_point_attenuated). */
+    float point_size;
 } fs_rvertex;
 
 /* One texture unit's coordinates in a quad. */

@@ -65,8 +65,8 @@ typedef struct fs_pvert {
     /* The secondary colour (3.9), front and back, clamped, set while
      * fs_vs_setup.color_sum is (pipeline/color_sum.c). */
     float col2[2][4];
-    /* The point size derived from the eye distance (GL 1.5 spec 3.3), set
-     * while fs_vs_setup.points_attenuated is. */
+    /* The point size: derived from the eye distance (GL 1.5 spec 3.3)
+     * while fs_vs_setup.points_attenuated, else fs_vs_setup.point_size. */
     float psize;
     unsigned mask;    /* bit i: outside clip plane i (clip.c's order; bits
                          FS_CLIP_USER_BIT + i: user plane i) */

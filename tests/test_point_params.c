@@ -25,6 +25,8 @@ typedef struct pscene {
     bool fade;      /* a fade threshold above the sizes, blending on */
     bool sprite;    /* GL_POINT_SPRITE with a texture */
     int units;      /* sprites: textured units (1 or 2) */
+    bool smooth;    /* GL_POINT_SMOOTH on (sprites turn it off) */
+    bool polygons;  /* GL_POINT polygons instead of point primitives */
 } pscene;
 
 /* A w x h RGBA texture of random texels on the active unit. */
@@ -78,14 +80,18 @@ static void draw_points(fs_context *c, const void *user, int w, int h)
     }
     if (sc->fade)
         G(PointParameterf, GL_POINT_FADE_THRESHOLD_SIZE, rnd_in(&r, 4.0f, 40.0f));
+    if (sc->smooth)
+        G(Enable, GL_POINT_SMOOTH);
+    if (sc->polygons)
+        G(PolygonMode, GL_FRONT_AND_BACK, GL_POINT);
     for (int draw = 0; draw < 6; draw++) {
         float size = rnd_in(&r, 0.5f, sc->sprite ? 24.0f : 16.0f);
         if (rnd(&r) % 3 == 0)
             size = (float)(int)size + 0.5f * (float)(rnd(&r) & 1);
         G(PointSize, size);
         G(ShadeModel, rnd(&r) & 1 ? GL_FLAT : GL_SMOOTH);
-        G(Begin, GL_POINTS);
-        for (int i = 0; i < 8; i++) {
+        G(Begin, sc->polygons ? GL_TRIANGLES : GL_POINTS);
+        for (int i = 0; i < (sc->polygons ? 9 : 8); i++) {
             G(Color4f, rndf(&r), rndf(&r), rndf(&r), rnd_in(&r, 0.3f, 1.0f));
             if (sc->sprite)
                 G(MultiTexCoord2f, GL_TEXTURE1, rndf(&r), rndf(&r));
@@ -128,6 +134,24 @@ TEST(sprites_perspective_attenuated_vs_osmesa)
 TEST(sprites_two_units_vs_osmesa)
 {
     check_points(check_st_, (pscene){0, true, false, false, false, true, 2}, "sprites_units", 600, 30);
+}
+
+/* Smooth points take the derived size too (Mesa's draw module reads the
+ * vertex's size); a sprite is never smooth (Mesa's state tracker). */
+TEST(smooth_attenuated_vs_osmesa)
+{
+    check_points(check_st_, (pscene){0, true, true, true, false, false, 0, true, false}, "smooth_atten", 700, 30);
+}
+
+TEST(smooth_sprites_vs_osmesa)
+{
+    check_points(check_st_, (pscene){0, false, false, false, false, true, 1, true, false}, "smooth_sprites", 800, 20);
+}
+
+/* GL_POINT polygons (3.5.4): their vertices' points, attenuated. */
+TEST(polygon_points_attenuated_vs_osmesa)
+{
+    check_points(check_st_, (pscene){0, true, true, true, false, false, 0, false, true}, "poly_atten", 900, 30);
 }
 
 /* ---- errors, glGet and the attribute stack ---- */
@@ -303,6 +327,9 @@ TEST_LIST = {
     TEST_ENTRY(sprites_vs_osmesa),
     TEST_ENTRY(sprites_perspective_attenuated_vs_osmesa),
     TEST_ENTRY(sprites_two_units_vs_osmesa),
+    TEST_ENTRY(smooth_attenuated_vs_osmesa),
+    TEST_ENTRY(smooth_sprites_vs_osmesa),
+    TEST_ENTRY(polygon_points_attenuated_vs_osmesa),
     TEST_ENTRY(errors_vs_osmesa),
     TEST_ENTRY(glget_push_pop_vs_osmesa),
     TEST_ENTRY(display_list_vs_osmesa),
