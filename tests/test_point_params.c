@@ -66,6 +66,13 @@ static void draw_points(fs_context *c, const void *user, int w, int h)
         }
         G(ActiveTexture, GL_TEXTURE0);
         G(PointParameteri, GL_POINT_SPRITE_COORD_ORIGIN, rnd(&r) & 1 ? GL_LOWER_LEFT : GL_UPPER_LEFT);
+        /* A texture matrix transforms the vertex's coordinates, not the
+         * replaced ones. */
+        if (rnd(&r) & 1) {
+            G(MatrixMode, GL_TEXTURE);
+            G(Scalef, 2.0f, 0.5f, 1.0f);
+            G(MatrixMode, GL_MODELVIEW);
+        }
     }
     if (sc->attenuate) {
         GLfloat att[3] = {rnd_in(&r, 0.05f, 1.5f), rnd_in(&r, 0.0f, 0.6f), rnd_in(&r, 0.0f, 0.4f)};
@@ -152,6 +159,12 @@ TEST(smooth_sprites_vs_osmesa)
 TEST(polygon_points_attenuated_vs_osmesa)
 {
     check_points(check_st_, (pscene){0, true, true, true, false, false, 0, false, true}, "poly_atten", 900, 30);
+}
+
+/* Sprites as the vertices of GL_POINT polygons, attenuated. */
+TEST(polygon_sprites_vs_osmesa)
+{
+    check_points(check_st_, (pscene){0, true, true, false, false, true, 2, false, true}, "poly_sprites", 1000, 20);
 }
 
 /* ---- errors, glGet and the attribute stack ---- */
@@ -330,6 +343,7 @@ TEST_LIST = {
     TEST_ENTRY(smooth_attenuated_vs_osmesa),
     TEST_ENTRY(smooth_sprites_vs_osmesa),
     TEST_ENTRY(polygon_points_attenuated_vs_osmesa),
+    TEST_ENTRY(polygon_sprites_vs_osmesa),
     TEST_ENTRY(errors_vs_osmesa),
     TEST_ENTRY(glget_push_pop_vs_osmesa),
     TEST_ENTRY(display_list_vs_osmesa),
