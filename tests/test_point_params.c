@@ -251,6 +251,11 @@ static void errors_run(fs_context *c, double *v, int *n)
     add_err(c, v, n);
     G(TexEnvf, GL_POINT_SPRITE, GL_COORD_REPLACE, 1.0f);
     add_err(c, v, n);
+    /* Between Begin and End: INVALID_OPERATION (2.6.3), nothing set. */
+    G(Begin, GL_POINTS);
+    G(PointParameterf, GL_POINT_SIZE_MIN, 4.0f);
+    G0(End);
+    add_err(c, v, n);
     add_point_state(c, v, n);
 }
 
