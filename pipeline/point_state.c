@@ -38,8 +38,10 @@ float fs_point_size(const fs_raster_state *r)
  * takes |z_e|, as it does for fog): GL_POINT_SIZE as it is (measured on
  * OSMesa: size 2, minimum 3, attenuation 1/4 draws 4 pixels wide, not 6;
  * size 20, maximum 10, attenuation 4 draws 10, not 5) times the reciprocal
- * square root of |a + d*(b + d*c)| (two multiply-adds, as the program's
- * MADs, which llvmpipe fuses), clamped by a max then a min to the bounds
+ * square root of |a + d*(b + d*c)| (two multiply-adds for the program's
+ * MADs, taken as fused; unfused ones give the same images in
+ * tests/test_point_params.c, the size being snapped to 1/256 pixel),
+ * clamped by a max then a min to the bounds
  * fs_vs_prepare narrows to the implementation's range. */
 float fs_point_derived_size(const fs_vs_setup *s, float d)
 {
