@@ -459,6 +459,17 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     s->fog = c->st.fog.enabled;
     s->fog_from_coord = c->st.fog.coord_src == GL_FOG_COORD;
     c->raster.interpolate_fog = s->fog;
+    const fs_raster_state *r = &c->raster;
+    s->points_attenuated = fs_point_attenuated(r);
+    memcpy(s->point_atten, r->point_atten, sizeof s->point_atten);
+    s->point_size = s->points_attenuated ? r->point_size : fs_point_size(r);
+    /* Mesa's vertex program clamps to the bounds narrowed to the
+     * implementation's range, [1, 255] for llvmpipe whichever kind of
+     * point (GL_POINT_SIZE_RANGE and GL_ALIASED_POINT_SIZE_RANGE agree):
+     * measured on OSMesa, a smooth point attenuated below size 1 is drawn
+     * as size 1. */
+    s->point_size_min = r->point_size_min > 1.0f ? r->point_size_min : 1.0f;
+    s->point_size_max = r->point_size_max < 255.0f ? r->point_size_max : 255.0f;
     fs_color_sum_setup(c, s);
     fs_lighting_setup(c, s);
     fs_texgen_setup(c, s);
@@ -530,6 +541,8 @@ static inline void vs_attributes(const fs_vs_setup *s, const fs_ivert *v, fs_pve
     }
     if (s->fog)
         o->fog = s->fog_from_coord ? fabsf(v->fogc) : vs_fog_coord(s, v);
+    /* The attenuation's eye distance is the fog's |z_e| (point_state.c). */
+    o->psize = s->points_attenuated ? fs_point_derived_size(s, vs_fog_coord(s, v)) : s->point_size;
     if (s->color_sum && !s->lighting)
         for (int k = 0; k < 4; k++)
             o->col2[0][k] = clamp01(v->col2[k]);

@@ -66,6 +66,9 @@ typedef struct fs_pvert {
     /* The secondary colour (3.9), front and back, clamped, set while
      * fs_vs_setup.color_sum is (pipeline/color_sum.c). */
     float col2[2][4];
+    /* The point size: derived from the eye distance (GL 1.5 spec 3.3)
+     * while fs_vs_setup.points_attenuated, else fs_vs_setup.point_size. */
+    float psize;
     unsigned mask;    /* bit i: outside clip plane i (clip.c's order; bits
                          FS_CLIP_USER_BIT + i: user plane i) */
     bool lazy;        /* col and tc not computed yet (fs_vs_process under a tile mask) */
@@ -141,6 +144,12 @@ typedef struct fs_vs_setup {
      * pays for them) and each one's clip-space coefficients. */
     unsigned ucp_mask;
     float ucp[FS_MAX_CLIP_PLANES][4];
+    /* Point distance attenuation (3.3, point_state.c): on (the
+     * coefficients are not (1, 0, 0)), the coefficients, GL_POINT_SIZE
+     * (attenuated as it is, clamped when not: point_state.c) and the
+     * bounds. */
+    bool points_attenuated;
+    float point_atten[3], point_size, point_size_min, point_size_max;
 } fs_vs_setup;
 
 /* The material from batch vertex `start` on, after a glMaterial between
@@ -319,6 +328,10 @@ const fs_tile_mask *fs_vs_tile_mask(const fs_context *c, GLenum mode);
 void fs_vs_attributes(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pvert *pv, size_t k);
 /* Whether a window-space box can make fragments in a masked tile. */
 bool fs_vs_box_masked(const fs_tile_mask *t, float x0, float y0, float x1, float y1);
+
+/* point_state.c: the size of a vertex at eye-plane distance d while
+ * s->points_attenuated. */
+float fs_point_derived_size(const fs_vs_setup *s, float d);
 
 /* primitive.c: assembles a primitive from processed vertices.  idx may be
  * NULL (vertices in order).  elements: the draw came as indices (glDrawElements

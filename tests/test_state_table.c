@@ -698,8 +698,7 @@ TEST(pop_marks_groups_dirty)
 
 /* Not yet in the table. */
 #define PENDING_STATE \
-    GL_POINT_SIZE_MIN, GL_POINT_SIZE_MAX, GL_POINT_FADE_THRESHOLD_SIZE, \
-    GL_POINT_DISTANCE_ATTENUATION, GL_TEXTURE_BINDING_CUBE_MAP,
+    GL_TEXTURE_BINDING_CUBE_MAP,
 
 /* GL 1.0-1.5 names OSMesa answers in glGetIntegerv that the table does not
  * have yet (issue 18): the bindings of the arrays the model does not fetch,

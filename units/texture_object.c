@@ -971,6 +971,27 @@ bool fs_tex_complete(fs_tex_object *t)
 
 /* ---- texture environment (3.8.13) ---- */
 
+/* GL 2.0 spec 3.3: glTexEnv(GL_POINT_SPRITE, GL_COORD_REPLACE, b) sets
+ * the active unit's coordinate replacement (point state, kept with the
+ * rasterizer's: GL_POINT_BIT saves it, table 6.12); a value other than
+ * GL_TRUE or GL_FALSE is INVALID_VALUE, as Mesa answers, after truncating
+ * a float to an integer. */
+static void point_sprite_env(fs_context *c, GLenum pname, float v)
+{
+    if (pname != GL_COORD_REPLACE) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    GLint b = (GLint)v;
+    if (b != GL_TRUE && b != GL_FALSE) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    unsigned bit = 1u << fs_active_unit(c);
+    c->raster.coord_replace = b ? c->raster.coord_replace | bit : c->raster.coord_replace & ~bit;
+    fs_state_mark(c, GL_POINT_BIT);
+}
+
 static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *vals, bool vector)
 {
     fs_tex_env *s = &fs_tex_active(c)->env;
@@ -978,6 +999,10 @@ static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *val
         /* GL 1.4's unit LOD bias (3.8.13; texture_lod.c). */
         if (fs_tex_filter_control(c, pname, vals[0]))
             fs_state_mark(c, GL_TEXTURE_BIT);
+        return;
+    }
+    if (target == GL_POINT_SPRITE) {
+        point_sprite_env(c, pname, vals[0]);
         return;
     }
     if (target != GL_TEXTURE_ENV) {
@@ -1273,6 +1298,14 @@ void fs_exec_GetTexLevelParameterfv(fs_context *c, GLenum target, GLint level, G
 static int get_tex_env(fs_context *c, GLenum target, GLenum pname, float v[4])
 {
     const fs_tex_env *s = &fs_tex_active(c)->env;
+    if (target == GL_POINT_SPRITE) {
+        if (pname != GL_COORD_REPLACE) {
+            fs_error(c, GL_INVALID_ENUM);
+            return 0;
+        }
+        v[0] = (c->raster.coord_replace >> fs_active_unit(c)) & 1u ? 1.0f : 0.0f;
+        return 1;
+    }
     if (target != GL_TEXTURE_ENV) {
         fs_error(c, GL_INVALID_ENUM);
         return 0;
