@@ -409,10 +409,9 @@ void fs_lighting_setup(fs_context *c, fs_vs_setup *s)
          * where the spec's attenuation would leave all of it). */
         o->spot = l->spot_cutoff != 180.0f;
         o->spot_exp = l->spot_exponent;
-        /* Mesa: the cosine in double, the direction normalised twice. */
-        o->cos_cutoff = (float)cos(l->spot_cutoff * (FS_PI / 180.0));
+        /* The cutoff's cosine in float, the direction normalised once. */
+        o->cos_cutoff = cosf(l->spot_cutoff * (float)(FS_PI / 180.0));
         memcpy(o->spot_dir, l->spot_direction, sizeof o->spot_dir);
-        normalize3(o->spot_dir);
         normalize3(o->spot_dir);
         if (o->positional) {
             /* Mesa's _Position: the eye position divided by w. */
@@ -466,10 +465,12 @@ static float clamp01f(float v)
     return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; /* NaN becomes 0 */
 }
 
-/* The vertex program's POW (gallivm: 0 for a zero base). */
+/* The vertex program's POW (gallivm: 0 for a zero base; its polynomial
+ * gives a finite value for a NaN base, so a spot factor of a vertex at
+ * the light, 0 * pow(NaN), is 0: measured, gl10-gl-1.0-spot-light). */
 static float vp_pow(float x, float y)
 {
-    return x == 0.0f ? 0.0f : powf(x, y);
+    return x == 0.0f || x != x ? 0.0f : powf(x, y);
 }
 
 /* One side of the lighting equation (GL 1.5 spec 2.14.1) in the

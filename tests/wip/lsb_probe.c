@@ -3,7 +3,9 @@
  * GL_FEEDBACK mode (GL_3D_COLOR) on both, and the vertices of the
  * primitives covering pixel (X, Y) (GL window coordinates) are printed from
  * both, with every vertex whose feedback differs.
- *   lsb_probe TRACE CALL X Y */
+ *   lsb_probe TRACE CALL X Y
+ * With CALL "first": the first call (of those that render) after which
+ * the two colour buffers differ, and its differing pixels (up to 10). */
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/osmesa.h>
 #include <stdio.h>
@@ -37,7 +39,10 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: lsb_probe TRACE CALL X Y\n");
         return 2;
     }
-    uint64_t target = strtoull(argv[2], NULL, 10);
+    bool first = !strcmp(argv[2], "first");
+    char *dash = NULL;
+    uint64_t start = first ? UINT64_MAX : strtoull(argv[2], &dash, 10);
+    uint64_t target = dash && *dash == '-' ? strtoull(dash + 1, NULL, 10) : start;
     float px = (float)atof(argv[3]) + 0.5f, py = (float)atof(argv[4]) + 0.5f;
     char err[512];
     fs_replay_opts ro = {0};
@@ -45,7 +50,7 @@ int main(int argc, char **argv)
     if (!r) { fprintf(stderr, "%s\n", err); return 1; }
     const fs_replay_info *info = fs_replay_info_get(r);
     fs_context *c = fs_context_create(NULL, info->width, info->height);
-    fs_context_set_double_buffered(c, info->double_buffered);
+    (void)info->double_buffered; /* OSMesa has one buffer: so has the model here */
     fs_osmesa *o = fs_osmesa_create(info->width, info->height, 24, 8, err, sizeof err);
     if (!c || !o) { fprintf(stderr, "create: %s\n", err); return 1; }
     fs_call call;
@@ -54,7 +59,7 @@ int main(int argc, char **argv)
         if (ev == FS_REPLAY_EOF || ev == FS_REPLAY_ERROR) break;
         if (ev != FS_REPLAY_CALL) continue;
         uint64_t no = fs_replay_call_no(r);
-        if (no == target) {
+        if (no == start) {
             fsglFeedbackBuffer(c, FB, GL_3D_COLOR, fb_m);
             fsglRenderMode(c, GL_FEEDBACK);
             glFeedbackBuffer(FB, GL_3D_COLOR, fb_o);
@@ -62,17 +67,35 @@ int main(int argc, char **argv)
         }
         fs_submit(c, &call);
         fs_osmesa_dispatch(o, &call);
+        if (first && (fs_replay_call_flags(r) & 0x4u)) {
+            fsglFinish(c);
+            const uint8_t *a = c->fb.color, *b = fs_osmesa_color(o);
+            long n = (long)info->width * info->height, nd = 0;
+            for (long i = 0; i < n; i++)
+                if (memcmp(a + 4 * i, b + 4 * i, 3)) {
+                    if (nd < 10)
+                        printf("call %llu %s: pixel (%ld, %ld) model %d %d %d osmesa %d %d %d\n",
+                               (unsigned long long)no, fs_replay_call_name(r), i % info->width, i / info->width,
+                               a[4 * i], a[4 * i + 1], a[4 * i + 2], b[4 * i], b[4 * i + 1], b[4 * i + 2]);
+                    nd++;
+                }
+            if (nd) {
+                printf("%ld pixels differ after call %llu\n", nd, (unsigned long long)no);
+                return 0;
+            }
+        }
         if (no == target) {
             int nm = fsglRenderMode(c, GL_RENDER), no_ = glRenderMode(GL_RENDER);
             printf("feedback values: model %d, osmesa %d\n", nm, no_);
             int i = 0, j = 0, prim = 0, ndiff = 0;
             while (i < nm && j < no_) {
-                if (fb_m[i] != GL_POLYGON_TOKEN || fb_o[j] != GL_POLYGON_TOKEN) {
+                if (fb_m[i] != fb_o[j] || (fb_m[i] != GL_POLYGON_TOKEN && fb_m[i] != GL_POINT_TOKEN)) {
                     printf("token %g / %g at prim %d\n", fb_m[i], fb_o[j], prim);
                     break;
                 }
-                int n = (int)fb_m[i + 1], n2 = (int)fb_o[j + 1];
-                const float *vm = fb_m + i + 2, *vo = fb_o + j + 2;
+                int pt = fb_m[i] == GL_POINT_TOKEN;
+                int n = pt ? 1 : (int)fb_m[i + 1], n2 = pt ? 1 : (int)fb_o[j + 1];
+                const float *vm = fb_m + i + 2 - pt, *vo = fb_o + j + 2 - pt;
                 int hit = n == n2 && inside(vo, n, px, py);
                 for (int k = 0; k < n && k < n2; k++) {
                     int d = memcmp(vm + 7 * k, vo + 7 * k, 7 * sizeof(float)) != 0;
@@ -85,8 +108,8 @@ int main(int argc, char **argv)
                         printf("\n");
                     }
                 }
-                i += 2 + 7 * n;
-                j += 2 + 7 * n2;
+                i += 2 - pt + 7 * n;
+                j += 2 - pt + 7 * n2;
                 prim++;
             }
             printf("%d primitives, %d vertices differ\n", prim, ndiff);
