@@ -1,0 +1,237 @@
+/*
+ * Depth textures and ARB_shadow (GL 1.4 spec 3.8.1, 3.8.4, 3.8.14;
+ * units/texture_depth.c) against OSMesa (llvmpipe), tolerance 0: random
+ * depth textures in each depth internal format (and unsized
+ * DEPTH_COMPONENT from each client type) drawn with random r per vertex,
+ * every compare function and COMPARE_MODE NONE, every DEPTH_TEXTURE_MODE,
+ * NEAREST and LINEAR, MIPmaps; the parameters' state and errors.
+ */
+#include <stdint.h>
+#include <stdlib.h>
+#include "check.h"
+#include "osmesa_util.h"
+#include "test_rng.h"
+#include <GL/glext.h>
+
+#define W 48
+#define H 48
+#define TS 8 /* texture size */
+
+typedef struct depth_case {
+    GLint internal;
+    GLenum type;          /* client type of the depth data */
+    GLenum compare_mode;  /* GL_NONE or GL_COMPARE_R_TO_TEXTURE */
+    GLenum func;
+    GLenum mode;          /* DEPTH_TEXTURE_MODE */
+    GLenum min_filter, mag_filter;
+    GLenum env;
+    GLenum wrap;
+    uint64_t seed;
+    float r_lo, r_hi;     /* range of the random r of the vertices */
+    bool equal_r;         /* all vertices take r = one stored texel's depth */
+    float q;              /* the vertices' q (projective) */
+    float tilt;           /* rotation about x (degrees): minification */
+} depth_case;
+
+/* Client depth data of n texels of a type, random in [0, 1] (a few at 0
+ * and 1 exactly). */
+static void make_depth(rng *g, GLenum type, int n, void *out)
+{
+    for (int i = 0; i < n; i++) {
+        int k = rndi(g, 16);
+        float f = k == 0 ? 0.0f : k == 1 ? 1.0f : rndf(g, 0.0f, 1.0f);
+        switch (type) {
+        case GL_UNSIGNED_SHORT: ((uint16_t *)out)[i] = (uint16_t)(k < 2 ? (k ? 65535 : 0) : rnd(g)); break;
+        case GL_UNSIGNED_INT: ((uint32_t *)out)[i] = k < 2 ? (k ? 0xffffffffu : 0) : rnd(g); break;
+        case GL_UNSIGNED_BYTE: ((uint8_t *)out)[i] = (uint8_t)(k < 2 ? (k ? 255 : 0) : rnd(g)); break;
+        case GL_SHORT: ((int16_t *)out)[i] = (int16_t)rnd(g); break;
+        default: ((float *)out)[i] = k == 2 ? -0.25f : k == 3 ? 1.5f : f; break;
+        }
+    }
+}
+
+static void draw_depth(fs_context *c, const void *user, int w, int h)
+{
+    const depth_case *dc = user;
+    rng g = {dc->seed};
+    osm_frustum_scene(c, w, h, 0.2f, 0.3f, 0.4f, 10);
+    GLuint tex;
+    G(GenTextures, 1, &tex);
+    G(BindTexture, GL_TEXTURE_2D, tex);
+    G(PixelStorei, GL_UNPACK_ALIGNMENT, 1);
+    static uint32_t data[TS * TS];
+    bool mip = dc->min_filter != GL_NEAREST && dc->min_filter != GL_LINEAR;
+    for (int l = 0, s = TS; s >= 1 && (l == 0 || mip); l++, s /= 2) {
+        make_depth(&g, dc->type, s * s, data);
+        G(TexImage2D, GL_TEXTURE_2D, l, dc->internal, s, s, 0, GL_DEPTH_COMPONENT, dc->type, data);
+    }
+    G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)dc->min_filter);
+    G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, (GLint)dc->mag_filter);
+    G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, (GLint)dc->wrap);
+    G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, (GLint)dc->wrap);
+    G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, (GLint)dc->compare_mode);
+    G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, (GLint)dc->func);
+    G(TexParameteri, GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE, (GLint)dc->mode);
+    G(TexEnvi, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, (GLint)dc->env);
+    G(Enable, GL_TEXTURE_2D);
+    float req = 0.0f;
+    if (dc->equal_r) {
+        /* One texel's depth as the sampler reads it, through glGetTexImage. */
+        static float back[TS * TS];
+        G(GetTexImage, GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, back);
+        req = back[rndi(&g, TS * TS)];
+    }
+    G(Translatef, 0, 0, -2.5f);
+    G(Rotatef, dc->tilt, 1, 0, 0);
+    G(Begin, GL_QUADS);
+    static const float v[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (int i = 0; i < 4; i++) {
+        float r = dc->equal_r ? req : rndf(&g, dc->r_lo, dc->r_hi);
+        float s = v[i][0] * 0.6f + 0.5f, t = v[i][1] * 0.6f + 0.5f, q = dc->q;
+        G(Color4f, 0.9f, 0.7f, 0.5f, 0.6f);
+        G(TexCoord4f, s * q, t * q, r * q, q);
+        G(Vertex2f, v[i][0], v[i][1]);
+    }
+    G0(End);
+    G(DeleteTextures, 1, &tex);
+}
+
+/* Renders one case on both; the pixels that differ (-1: no context). */
+static long run_case(const depth_case *dc, GLenum *err)
+{
+    osm_pair p;
+    if (!osm_pair_render(&p, W, H, NULL, draw_depth, dc))
+        return -1;
+    long d = p.d.differ;
+    *err = fsglGetError(p.c);
+    if (d && getenv("DEPTHTEX_DUMP"))
+        img_dump_ppm("/tmp/depthtex.ppm", p.ref.color, p.c->fb.color, W, H, 4, true);
+    osm_pair_close(&p);
+    return d;
+}
+
+static const GLenum funcs[] = {GL_NEVER, GL_LESS, GL_EQUAL, GL_LEQUAL, GL_GREATER, GL_NOTEQUAL, GL_GEQUAL, GL_ALWAYS};
+static const GLenum modes[] = {GL_LUMINANCE, GL_INTENSITY, GL_ALPHA};
+static const struct { GLint internal; GLenum type; } formats[] = {
+    {GL_DEPTH_COMPONENT16, GL_FLOAT}, {GL_DEPTH_COMPONENT24, GL_FLOAT}, {GL_DEPTH_COMPONENT32, GL_FLOAT},
+    {GL_DEPTH_COMPONENT16, GL_UNSIGNED_SHORT}, {GL_DEPTH_COMPONENT24, GL_UNSIGNED_INT},
+    {GL_DEPTH_COMPONENT32, GL_UNSIGNED_INT}, {GL_DEPTH_COMPONENT16, GL_UNSIGNED_INT},
+    {GL_DEPTH_COMPONENT32, GL_UNSIGNED_SHORT}, {GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT},
+    {GL_DEPTH_COMPONENT, GL_UNSIGNED_INT}, {GL_DEPTH_COMPONENT, GL_FLOAT}, {GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE},
+    {GL_DEPTH_COMPONENT24, GL_SHORT},
+};
+#define NFORMATS (int)(sizeof formats / sizeof formats[0])
+
+/* Cases over a grid, counted; each that differs is printed. */
+static int run_grid(check_state *check_st_, const depth_case *base, int nfuncs_from, bool all_formats, bool all_modes,
+                    int *ncases)
+{
+    int bad = 0;
+    for (int f = 0; f < (all_formats ? NFORMATS : 3); f++)
+        for (int cf = nfuncs_from; cf < 8; cf++)
+            for (int m = 0; m < (all_modes ? 3 : 1); m++) {
+                depth_case dc = *base;
+                dc.internal = formats[f].internal;
+                dc.type = formats[f].type;
+                if (cf >= 0) {
+                    dc.compare_mode = GL_COMPARE_R_TO_TEXTURE;
+                    dc.func = funcs[cf];
+                } else {
+                    dc.compare_mode = GL_NONE;
+                }
+                dc.mode = modes[m];
+                dc.seed = base->seed + 1000u * (uint64_t)f + 31u * (uint64_t)(cf + 1) + (uint64_t)m;
+                GLenum err = GL_NO_ERROR;
+                long d = run_case(&dc, &err);
+                (*ncases)++;
+                if (d != 0 || err != GL_NO_ERROR) {
+                    printf("  differs: internal %#x type %#x compare %#x func %#x mode %#x min %#x mag %#x: %ld "
+                           "pixels, error %#x\n",
+                           (unsigned)dc.internal, dc.type, dc.compare_mode, dc.func, dc.mode, dc.min_filter,
+                           dc.mag_filter, d, err);
+                    bad++;
+                }
+            }
+    CHECK_EQ_INT(bad, 0);
+    return bad;
+}
+
+static const depth_case base_case = {
+    .func = GL_LEQUAL, .min_filter = GL_NEAREST, .mag_filter = GL_NEAREST, .env = GL_MODULATE,
+    .wrap = GL_REPEAT, .seed = 1, .r_lo = -0.2f, .r_hi = 1.2f, .q = 1.0f,
+};
+
+TEST(nearest_every_format_func_mode)
+{
+    int n = 0;
+    run_grid(check_st_, &base_case, -1, true, true, &n);
+    printf("  %d cases\n", n);
+}
+
+TEST(linear_every_format_func_mode)
+{
+    depth_case b = base_case;
+    b.min_filter = b.mag_filter = GL_LINEAR;
+    b.seed = 2;
+    int n = 0;
+    run_grid(check_st_, &b, -1, true, true, &n);
+    printf("  %d cases\n", n);
+}
+
+TEST(equal_reference_ties)
+{
+    /* r equal to a stored texel's depth: EQUAL, NOTEQUAL, LEQUAL and
+     * GEQUAL then depend on how the reference and the texel are compared. */
+    int n = 0;
+    for (int filt = 0; filt < 2; filt++) {
+        depth_case b = base_case;
+        b.equal_r = true;
+        b.min_filter = b.mag_filter = filt ? GL_LINEAR : GL_NEAREST;
+        b.seed = 3 + (uint64_t)filt;
+        run_grid(check_st_, &b, 0, true, false, &n);
+    }
+    printf("  %d cases\n", n);
+}
+
+TEST(mipmaps_projective_clamp_edge)
+{
+    int n = 0;
+    static const GLenum mins[] = {GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR_MIPMAP_NEAREST, GL_NEAREST_MIPMAP_LINEAR,
+                                  GL_LINEAR_MIPMAP_LINEAR};
+    for (int i = 0; i < 4; i++) {
+        depth_case b = base_case;
+        b.min_filter = mins[i];
+        b.mag_filter = GL_LINEAR;
+        b.tilt = -70.0f;
+        b.q = 1.7f;
+        b.wrap = i & 1 ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+        b.seed = 10 + (uint64_t)i;
+        run_grid(check_st_, &b, -1, false, false, &n);
+    }
+    printf("  %d cases\n", n);
+}
+
+TEST(environments)
+{
+    static const GLenum envs[] = {GL_REPLACE, GL_DECAL, GL_BLEND, GL_ADD};
+    int n = 0;
+    for (int i = 0; i < 4; i++) {
+        depth_case b = base_case;
+        b.env = envs[i];
+        b.min_filter = b.mag_filter = GL_LINEAR;
+        b.seed = 20 + (uint64_t)i;
+        run_grid(check_st_, &b, 6, false, true, &n);
+    }
+    printf("  %d cases\n", n);
+}
+
+TEST_LIST = {
+    TEST_ENTRY(nearest_every_format_func_mode),
+    TEST_ENTRY(linear_every_format_func_mode),
+    TEST_ENTRY(equal_reference_ties),
+    TEST_ENTRY(mipmaps_projective_clamp_edge),
+    TEST_ENTRY(environments),
+    TEST_END,
+};
+
+int main(int argc, char **argv) { return check_main(argc, argv, test_list); }
