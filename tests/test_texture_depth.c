@@ -31,6 +31,7 @@ typedef struct depth_case {
     bool equal_r;         /* all vertices take r = one stored texel's depth */
     float q;              /* the vertices' q (projective) */
     float tilt;           /* rotation about x (degrees): minification */
+    float span;           /* half the s and t range over the quad (0: 0.6) */
 } depth_case;
 
 /* Client depth data of n texels of a type, random in [0, 1] (a few at 0
@@ -87,7 +88,8 @@ static void draw_depth(fs_context *c, const void *user, int w, int h)
     static const float v[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
     for (int i = 0; i < 4; i++) {
         float r = dc->equal_r ? req : rndf(&g, dc->r_lo, dc->r_hi);
-        float s = v[i][0] * 0.6f + 0.5f, t = v[i][1] * 0.6f + 0.5f, q = dc->q;
+        float span = dc->span > 0.0f ? dc->span : 0.6f;
+        float s = v[i][0] * span + 0.5f, t = v[i][1] * span + 0.5f, q = dc->q;
         G(Color4f, 0.9f, 0.7f, 0.5f, 0.6f);
         G(TexCoord4f, s * q, t * q, r * q, q);
         G(Vertex2f, v[i][0], v[i][1]);
@@ -248,6 +250,114 @@ TEST(mipmaps_projective_clamp_edge)
         b.seed = 10 + (uint64_t)i;
         run_grid(check_st_, &b, -1, false, false, &n);
     }
+}
+
+TEST(min_mag_filters_differ)
+{
+    /* A tilted quad with minified and magnified pixels, min and mag image
+     * filters different: llvmpipe's float path then samples a quad's
+     * NEAREST pixels through its LINEAR code when the quad sharing its
+     * vector is LINEAR (texture_sample.c). */
+    int n = 0;
+    for (int i = 0; i < 4; i++) {
+        depth_case b = base_case;
+        b.min_filter = i & 1 ? GL_NEAREST : GL_LINEAR;
+        b.mag_filter = i & 1 ? GL_LINEAR : GL_NEAREST;
+        b.wrap = i & 2 ? GL_CLAMP : GL_REPEAT;
+        b.tilt = -70.0f;
+        b.span = 2.0f;
+        b.seed = 30 + (uint64_t)i;
+        run_grid(check_st_, &b, -1, false, false, &n);
+    }
+    printf("  %d cases\n", n);
+}
+
+/* A depth texture copied from the depth buffer (glCopyTexImage2D and
+ * glCopyTexSubImage2D, GL 1.4 3.8.2), or a 1D one, drawn with a compare. */
+typedef struct copy_case {
+    GLint internal;
+    GLenum func, filter;
+    bool sub, one_d;
+    uint64_t seed;
+} copy_case;
+
+static void draw_copy(fs_context *c, const void *user, int w, int h)
+{
+    const copy_case *cc = user;
+    rng g = {cc->seed};
+    osm_frustum_scene(c, w, h, 0.1f, 0.1f, 0.1f, 10);
+    G(Clear, GL_DEPTH_BUFFER_BIT);
+    G(Enable, GL_DEPTH_TEST);
+    G(Translatef, 0, 0, -2.0f);
+    /* Depths to copy: two tilted, crossing quads. */
+    for (int k = 0; k < 2; k++) {
+        G0(PushMatrix);
+        G(Rotatef, k ? 50.0f : -40.0f, 1, 0.3f, 0);
+        G(Begin, GL_QUADS);
+        G(Vertex2f, -1, -1);
+        G(Vertex2f, 1, -1);
+        G(Vertex2f, 1, 1);
+        G(Vertex2f, -1, 1);
+        G0(End);
+        G0(PopMatrix);
+    }
+    G(Disable, GL_DEPTH_TEST);
+    GLuint tex;
+    G(GenTextures, 1, &tex);
+    GLenum target = cc->one_d ? GL_TEXTURE_1D : GL_TEXTURE_2D;
+    G(BindTexture, target, tex);
+    if (cc->one_d) {
+        static float d[16];
+        for (int i = 0; i < 16; i++)
+            d[i] = rndf(&g, 0.0f, 1.0f);
+        G(TexImage1D, GL_TEXTURE_1D, 0, cc->internal, 16, 0, GL_DEPTH_COMPONENT, GL_FLOAT, d);
+    } else if (cc->sub) {
+        G(TexImage2D, GL_TEXTURE_2D, 0, cc->internal, 32, 32, 0, GL_DEPTH_COMPONENT, GL_FLOAT, NULL);
+        G(CopyTexSubImage2D, GL_TEXTURE_2D, 0, 4, 2, 8, 10, 24, 28);
+    } else {
+        G(CopyTexImage2D, GL_TEXTURE_2D, 0, cc->internal, 8, 8, 32, 32, 0);
+    }
+    G(TexParameteri, target, GL_TEXTURE_MIN_FILTER, (GLint)cc->filter);
+    G(TexParameteri, target, GL_TEXTURE_MAG_FILTER, (GLint)cc->filter);
+    G(TexParameteri, target, GL_TEXTURE_COMPARE_MODE, cc->func ? GL_COMPARE_R_TO_TEXTURE : GL_NONE);
+    if (cc->func)
+        G(TexParameteri, target, GL_TEXTURE_COMPARE_FUNC, (GLint)cc->func);
+    G(Enable, target);
+    G0(LoadIdentity);
+    G(Translatef, 0, 0, -2.0f);
+    G(Begin, GL_QUADS);
+    static const float v[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+    for (int i = 0; i < 4; i++) {
+        G(TexCoord3f, v[i][0] * 0.5f + 0.5f, v[i][1] * 0.5f + 0.5f, rndf(&g, 0.0f, 1.0f));
+        G(Vertex2f, v[i][0], v[i][1]);
+    }
+    G0(End);
+    G(DeleteTextures, 1, &tex);
+}
+
+TEST(copied_and_1d_depth_textures)
+{
+    static const GLint ifs[] = {GL_DEPTH_COMPONENT, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32};
+    int n = 0, bad = 0;
+    for (int kind = 0; kind < 3; kind++)
+        for (int i = 0; i < 4; i++)
+            for (int f = 0; f < 9; f++)
+                for (int filt = 0; filt < 2; filt++) {
+                    copy_case cc = {ifs[i], f ? funcs[f - 1] : 0, filt ? GL_LINEAR : GL_NEAREST, kind == 1,
+                                    kind == 2, 500u + 10u * (uint64_t)f + (uint64_t)i};
+                    osm_pair p;
+                    REQUIRE(osm_pair_render(&p, W, H, NULL, draw_copy, &cc));
+                    GLenum err = fsglGetError(p.c);
+                    n++;
+                    if (p.d.differ || err) {
+                        printf("  differs: kind %d internal %#x func %#x filter %#x: %ld pixels, max %d, error %#x\n",
+                               kind, (unsigned)cc.internal, cc.func, cc.filter, p.d.differ, p.d.maxd, err);
+                        bad++;
+                    }
+                    osm_pair_close(&p);
+                }
+    printf("  %d cases\n", n);
+    CHECK_EQ_INT(bad, 0);
 }
 
 TEST(environments)
@@ -417,6 +527,8 @@ TEST_LIST = {
     TEST_ENTRY(linear_every_format_func_mode),
     TEST_ENTRY(equal_reference_ties),
     TEST_ENTRY(mipmaps_projective_clamp_edge),
+    TEST_ENTRY(min_mag_filters_differ),
+    TEST_ENTRY(copied_and_1d_depth_textures),
     TEST_ENTRY(environments),
     TEST_ENTRY(state_sizes_errors_vs_osmesa),
     TEST_ENTRY(upload_readback_vs_osmesa),

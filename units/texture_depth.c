@@ -18,10 +18,13 @@
  *   reads as the float n / (2^n - 1) (a float product with the constant
  *   1 / (2^n - 1)) for 16 and 24 bits; a 32-bit one keeps its top 23 bits:
  *   (n >> 9) / 2^23 * (2^23 / (2^23 - 1)).
+ * - glCopyTexImage copies a depth buffer of the same width; into 16 bits
+ *   from 24 it rounds as llvmpipe's blit does (fs_tex_depth_store_copy).
  * - Comparison (3.8.14): the reference r (divided by q, as the coordinates
  *   are) is clamped to [0, 1], NaN to 0, and compared in float with each
  *   texel before filtering: LINEAR weights the four results (the
- *   "percentage closer" value), the MIPmap levels blend those.  The
+ *   "percentage closer" value), the MIPmap levels blend those.  A 1D
+ *   texture compares with t, not r (fs_tex_depth_ref_coord).  The
  *   reference is not quantized to the texel format first (gallivm compares
  *   in float).
  * - The result (the depth, or the comparison's) becomes R, G, B, A by
@@ -172,10 +175,21 @@ void fs_tex_depth_unpack(fs_context *c, fs_tex_image *img, int dims, const int o
 
 void fs_tex_depth_store_copy(fs_tex_image *img, uint8_t *texel, uint32_t z, int fb_bits)
 {
-    /* The depth buffer's value as a float, then stored as an upload does. */
-    float f = (float)((double)z / (double)((1ull << fb_bits) - 1u));
-    if (img->depth_bits == fb_bits)
+    /* The same width is copied.  Into fewer bits llvmpipe blits: the
+     * buffer's depth read as the sampler reads it, written to the narrower
+     * format as a depth write rounds (f * (2^n - 1) rounded to even, in
+     * float).  Into more bits (24 to 32) the float value stored as an
+     * upload stores it (no pixel differs in the tests; not analysed further). */
+    if (img->depth_bits == fb_bits) {
         put_texel(texel, z);
+        return;
+    }
+    fs_tex_image src = {.depth_bits = fb_bits};
+    uint8_t raw[4];
+    put_texel(raw, z);
+    float f = fs_tex_depth_texel(&src, raw);
+    if (img->depth_bits < fb_bits)
+        put_texel(texel, (uint32_t)nearbyintf(f * (float)((1u << img->depth_bits) - 1u)));
     else
         put_texel(texel, float_to_storage(f, img->depth_bits));
 }

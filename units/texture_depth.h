@@ -51,6 +51,11 @@ float fs_tex_depth_filtered_value(const struct fs_tex_object *t, float ref, floa
 /* The reference r/q clamped to [0, 1] (NaN to 0), as llvmpipe clamps it
  * for a fixed-point depth format. */
 float fs_tex_depth_ref(float r);
+/* The coordinate the reference is: r (GL 1.4 3.8.14) for 2D textures, but
+ * t for 1D ones, as Mesa's fixed-function fragment program takes the
+ * comparator from the component after the texture's coordinates
+ * (measured: a 1D depth texture compares with t/q on OSMesa). */
+static inline int fs_tex_depth_ref_coord(int dims) { return dims < 2 ? 1 : 2; }
 /* The filtered value v as R, G, B, A by DEPTH_TEXTURE_MODE (3.8.14,
  * table 3.21: LUMINANCE (v, v, v, 1), INTENSITY (v, v, v, v), ALPHA
  * (0, 0, 0, v), RED (v, 0, 0, 1)). */

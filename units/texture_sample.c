@@ -830,8 +830,8 @@ static bool sample_unit(fs_context *c, fs_quad *q, int u, const fs_quad_tex *qt,
             continue;
         f.pixel = i;
         const float sti[3] = {str[0][i], str[1][i], str[2][i]};
-        if (depth) /* r divided by q as the coordinates are */
-            f.ref = fs_tex_depth_ref(qt->tex[i][2] * (1.0f / qt->tex[i][3]));
+        if (depth) /* divided by q as the coordinates are (texture_depth.h) */
+            f.ref = fs_tex_depth_ref(qt->tex[i][fs_tex_depth_ref_coord(dims)] * (1.0f / qt->tex[i][3]));
         sample_pixel(&f, &lr, img_filter, mip_linear, float_path, via_linear, sti, texel[i][u]);
         if (depth)
             fs_tex_depth_mode_apply(t, texel[i][u]);
