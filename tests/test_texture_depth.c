@@ -2,7 +2,8 @@
  * Depth textures and ARB_shadow (GL 1.4 spec 3.8.1, 3.8.4, 3.8.14;
  * units/texture_depth.c) against OSMesa (llvmpipe), tolerance 0: random
  * depth textures in each depth internal format (and unsized
- * DEPTH_COMPONENT from each client type) drawn with random r per vertex,
+ * DEPTH_COMPONENT from each client type, and ARB_depth_buffer_float's
+ * DEPTH_COMPONENT32F, which llvmpipe offers) drawn with random r per vertex,
  * every compare function and COMPARE_MODE NONE, every DEPTH_TEXTURE_MODE,
  * NEAREST and LINEAR, MIPmaps; the parameters' state and errors.
  */
@@ -127,7 +128,7 @@ static const struct { GLint internal; GLenum type; } formats[] = {
     {GL_DEPTH_COMPONENT32, GL_UNSIGNED_INT}, {GL_DEPTH_COMPONENT16, GL_UNSIGNED_INT},
     {GL_DEPTH_COMPONENT32, GL_UNSIGNED_SHORT}, {GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT},
     {GL_DEPTH_COMPONENT, GL_UNSIGNED_INT}, {GL_DEPTH_COMPONENT, GL_FLOAT}, {GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE},
-    {GL_DEPTH_COMPONENT24, GL_SHORT},
+    {GL_DEPTH_COMPONENT24, GL_SHORT}, {GL_DEPTH_COMPONENT32F, GL_FLOAT}, {GL_DEPTH_COMPONENT32F, GL_UNSIGNED_SHORT},
 };
 #define NFORMATS (int)(sizeof formats / sizeof formats[0])
 
@@ -337,10 +338,11 @@ static void draw_copy(fs_context *c, const void *user, int w, int h)
 
 TEST(copied_and_1d_depth_textures)
 {
-    static const GLint ifs[] = {GL_DEPTH_COMPONENT, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32};
+    static const GLint ifs[] = {GL_DEPTH_COMPONENT, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32,
+                                GL_DEPTH_COMPONENT32F};
     int n = 0, bad = 0;
     for (int kind = 0; kind < 3; kind++)
-        for (int i = 0; i < 4; i++)
+        for (int i = 0; i < 5; i++)
             for (int f = 0; f < 9; f++)
                 for (int filt = 0; filt < 2; filt++) {
                     copy_case cc = {ifs[i], f ? funcs[f - 1] : 0, filt ? GL_LINEAR : GL_NEAREST, kind == 1,
@@ -423,12 +425,13 @@ static void depth_state(fs_context *c, double *out, int *n)
         PUT(iv);
     }
     /* Sizes of each format (table 6.18), 1D and 2D, proxies. */
-    static const GLint ifs[] = {GL_DEPTH_COMPONENT, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32};
+    static const GLint ifs[] = {GL_DEPTH_COMPONENT, GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT32,
+                                GL_DEPTH_COMPONENT32F};
     static const GLenum types[] = {GL_UNSIGNED_BYTE, GL_UNSIGNED_SHORT, GL_UNSIGNED_INT, GL_FLOAT, GL_SHORT};
     static const GLenum sizes[] = {GL_TEXTURE_DEPTH_SIZE, GL_TEXTURE_RED_SIZE, GL_TEXTURE_LUMINANCE_SIZE,
                                    GL_TEXTURE_ALPHA_SIZE, GL_TEXTURE_INTENSITY_SIZE, GL_TEXTURE_INTERNAL_FORMAT};
     static uint32_t zeros[64];
-    for (int i = 0; i < 4; i++)
+    for (int i = 0; i < 5; i++)
         for (int t = 0; t < 5; t++) {
             G(TexImage2D, GL_TEXTURE_2D, 0, ifs[i], 4, 2, 0, GL_DEPTH_COMPONENT, types[t], zeros);
             ERR();

@@ -5,7 +5,9 @@
  * the rules, not copied; tests/test_texture_depth.c compares with OSMesa):
  *
  * - Storage: DEPTH_COMPONENT16 at 16 bits, DEPTH_COMPONENT24 at 24 (Z24X8),
- *   DEPTH_COMPONENT32 at 32 (Z32_UNORM); unsized DEPTH_COMPONENT at the
+ *   DEPTH_COMPONENT32 at 32 (Z32_UNORM), ARB_depth_buffer_float's
+ *   DEPTH_COMPONENT32F as a float (clamped to [0, 1] on upload, as
+ *   measured; its reference not clamped); unsized DEPTH_COMPONENT at the
  *   size that matches the client type (measured: UNSIGNED_SHORT 16,
  *   UNSIGNED_INT 32, others 24).
  * - Upload: a client type equal to the storage (UNSIGNED_SHORT into 16
@@ -46,7 +48,7 @@
 bool fs_tex_depth_format(GLint f)
 {
     return f == GL_DEPTH_COMPONENT || f == GL_DEPTH_COMPONENT16 || f == GL_DEPTH_COMPONENT24 ||
-           f == GL_DEPTH_COMPONENT32;
+           f == GL_DEPTH_COMPONENT32 || f == GL_DEPTH_COMPONENT32F;
 }
 
 int fs_tex_depth_bits(GLint f, GLenum type)
@@ -54,13 +56,31 @@ int fs_tex_depth_bits(GLint f, GLenum type)
     switch (f) {
     case GL_DEPTH_COMPONENT16: return 16;
     case GL_DEPTH_COMPONENT24: return 24;
-    case GL_DEPTH_COMPONENT32: return 32;
+    case GL_DEPTH_COMPONENT32: case GL_DEPTH_COMPONENT32F: return 32;
     case GL_DEPTH_COMPONENT: return type == GL_UNSIGNED_SHORT ? 16 : type == GL_UNSIGNED_INT ? 32 : 24;
     default: return 0;
     }
 }
 
+static inline float bits_to_float(uint32_t u)
+{
+    float f;
+    memcpy(&f, &u, 4);
+    return f;
+}
+
 static void put_texel(uint8_t *texel, uint32_t v) { memcpy(texel, &v, 4); }
+
+/* ARB_depth_buffer_float's DEPTH_COMPONENT32F, which llvmpipe offers: the
+ * texel is the float itself (Z32_FLOAT). */
+static bool float_image(const fs_tex_image *img) { return img->internal_format == GL_DEPTH_COMPONENT32F; }
+
+static uint32_t float_bits(float f)
+{
+    uint32_t v;
+    memcpy(&v, &f, 4);
+    return v;
+}
 
 static uint32_t get_texel(const uint8_t *texel)
 {
@@ -132,11 +152,11 @@ static uint32_t float_to_storage(float f, int bits)
 
 /* One client value to the storage of a bits-wide image (the rules at the
  * top of the file). */
-static uint32_t client_to_storage(const fs_context *c, uint32_t raw, GLenum type, int bits)
+static uint32_t client_to_storage(const fs_context *c, uint32_t raw, GLenum type, int bits, bool is_float)
 {
     float scale = c->px.depth_scale, bias = c->px.depth_bias;
     bool identity = scale == 1.0f && bias == 0.0f;
-    if (identity) {
+    if (identity && !is_float) {
         if ((type == GL_UNSIGNED_SHORT && bits == 16) || (type == GL_UNSIGNED_INT && bits == 32))
             return raw;
         if (type == GL_UNSIGNED_INT && bits == 16)
@@ -152,7 +172,7 @@ static uint32_t client_to_storage(const fs_context *c, uint32_t raw, GLenum type
     }
     if (clamp)
         f = f < 0.0f ? 0.0f : f > 1.0f ? 1.0f : f;
-    return float_to_storage(f, bits);
+    return is_float ? float_bits(f) : float_to_storage(f, bits);
 }
 
 void fs_tex_depth_unpack(fs_context *c, fs_tex_image *img, int dims, const int off[3], int w, int h, int d,
@@ -169,7 +189,8 @@ void fs_tex_depth_unpack(fs_context *c, fs_tex_image *img, int dims, const int o
                                               (size_t)img->width + (size_t)off[0]) * 4;
             for (int x = 0; x < w; x++, src += l.group_bytes)
                 put_texel(dst + 4 * x,
-                          client_to_storage(c, load_elem(src, l.elem_bytes, l.swap_bytes), type, img->depth_bits));
+                          client_to_storage(c, load_elem(src, l.elem_bytes, l.swap_bytes), type, img->depth_bits,
+                                            float_image(img)));
         }
 }
 
@@ -180,7 +201,8 @@ void fs_tex_depth_store_copy(fs_tex_image *img, uint8_t *texel, uint32_t z, int 
      * format as a depth write rounds (f * (2^n - 1) rounded to even, in
      * float).  Into more bits (24 to 32) the float value stored as an
      * upload stores it (no pixel differs in the tests; not analysed further). */
-    if (img->depth_bits == fb_bits) {
+    bool is_float = float_image(img);
+    if (img->depth_bits == fb_bits && !is_float) {
         put_texel(texel, z);
         return;
     }
@@ -188,7 +210,9 @@ void fs_tex_depth_store_copy(fs_tex_image *img, uint8_t *texel, uint32_t z, int 
     uint8_t raw[4];
     put_texel(raw, z);
     float f = fs_tex_depth_texel(&src, raw);
-    if (img->depth_bits < fb_bits)
+    if (is_float) /* the sampled float, written as it is */
+        put_texel(texel, float_bits(f));
+    else if (img->depth_bits < fb_bits)
         put_texel(texel, (uint32_t)nearbyintf(f * (float)((1u << img->depth_bits) - 1u)));
     else
         put_texel(texel, float_to_storage(f, img->depth_bits));
@@ -198,6 +222,8 @@ void fs_tex_depth_store_copy(fs_tex_image *img, uint8_t *texel, uint32_t z, int 
  * n / (2^n - 1) in float for 16 bits, in double for 24 and 32. */
 static float texel_for_get(const fs_tex_image *img, uint32_t v)
 {
+    if (float_image(img))
+        return bits_to_float(v);
     if (img->depth_bits == 16)
         return (float)v * (1.0f / 65535.0f);
     return (float)((double)v / (double)((1ull << img->depth_bits) - 1u));
@@ -261,16 +287,12 @@ void fs_tex_depth_get_image(fs_context *c, const fs_tex_image *img, int dims, GL
         }
 }
 
-static inline float bits_to_float(uint32_t u)
-{
-    float f;
-    memcpy(&f, &u, 4);
-    return f;
-}
 
 float fs_tex_depth_texel(const fs_tex_image *img, const uint8_t *texel)
 {
     uint32_t v = get_texel(texel);
+    if (float_image(img))
+        return bits_to_float(v);
     if (img->depth_bits == 32) {
         /* More bits than a float's mantissa: the top 23 as a fraction of
          * 2^23 (through the bits of 1 + v / 2^23), scaled to reach 1. */
@@ -280,8 +302,12 @@ float fs_tex_depth_texel(const fs_tex_image *img, const uint8_t *texel)
     return (float)v * (float)(1.0 / (double)((1u << img->depth_bits) - 1u));
 }
 
-float fs_tex_depth_ref(float r)
+float fs_tex_depth_ref(const fs_tex_object *t, float r)
 {
+    /* A float depth format is not clamped (gallivm clamps the reference
+     * for fixed-point formats only). */
+    if (float_image(&t->level[t->first_level]))
+        return r;
     return r > 0.0f ? (r < 1.0f ? r : 1.0f) : 0.0f;
 }
 

@@ -18,7 +18,8 @@ typedef struct fs_context fs_context;
 struct fs_tex_image;
 struct fs_tex_object;
 
-/* Whether an internalformat is DEPTH_COMPONENT or a sized one (table 3.16). */
+/* Whether an internalformat is DEPTH_COMPONENT or a sized one (table 3.16;
+ * and ARB_depth_buffer_float's DEPTH_COMPONENT32F, which llvmpipe offers). */
 bool fs_tex_depth_format(GLint internalformat);
 /* Bits llvmpipe stores a depth internalformat at: the sized formats at
  * their size; DEPTH_COMPONENT at the size matching the client type
@@ -48,9 +49,9 @@ float fs_tex_depth_texel(const struct fs_tex_image *img, const uint8_t *texel);
  * with COMPARE_R_TO_TEXTURE 1 or 0 by the compare function (3.8.14),
  * else d. */
 float fs_tex_depth_filtered_value(const struct fs_tex_object *t, float ref, float d);
-/* The reference r/q clamped to [0, 1] (NaN to 0), as llvmpipe clamps it
- * for a fixed-point depth format. */
-float fs_tex_depth_ref(float r);
+/* The reference r/q of texture t clamped to [0, 1] (NaN to 0), as
+ * llvmpipe clamps it for a fixed-point depth format. */
+float fs_tex_depth_ref(const struct fs_tex_object *t, float r);
 /* The coordinate the reference is: r (GL 1.4 3.8.14) for 2D textures, but
  * t for 1D ones, as Mesa's fixed-function fragment program takes the
  * comparator from the component after the texture's coordinates

@@ -357,6 +357,7 @@ static GLenum base_format(GLint f)
         return GL_RG;
     /* GL 1.4 depth textures (units/texture_depth.c). */
     case GL_DEPTH_COMPONENT: case GL_DEPTH_COMPONENT16: case GL_DEPTH_COMPONENT24: case GL_DEPTH_COMPONENT32:
+    case GL_DEPTH_COMPONENT32F:
         return GL_DEPTH_COMPONENT;
     default:
         return 0;

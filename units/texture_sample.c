@@ -831,7 +831,7 @@ static bool sample_unit(fs_context *c, fs_quad *q, int u, const fs_quad_tex *qt,
         f.pixel = i;
         const float sti[3] = {str[0][i], str[1][i], str[2][i]};
         if (depth) /* divided by q as the coordinates are (texture_depth.h) */
-            f.ref = fs_tex_depth_ref(qt->tex[i][fs_tex_depth_ref_coord(dims)] * (1.0f / qt->tex[i][3]));
+            f.ref = fs_tex_depth_ref(t, qt->tex[i][fs_tex_depth_ref_coord(dims)] * (1.0f / qt->tex[i][3]));
         sample_pixel(&f, &lr, img_filter, mip_linear, float_path, via_linear, sti, texel[i][u]);
         if (depth)
             fs_tex_depth_mode_apply(t, texel[i][u]);
