@@ -170,8 +170,8 @@ static uint32_t client_to_storage(const fs_context *c, uint32_t raw, GLenum type
         f = f * scale + bias;
         clamp = true;
     }
-    if (clamp)
-        f = f < 0.0f ? 0.0f : f > 1.0f ? 1.0f : f;
+    if (clamp) /* NaN to 0 (Mesa's CLAMP leaves it, and its conversion is undefined) */
+        f = !(f > 0.0f) ? 0.0f : f > 1.0f ? 1.0f : f;
     return is_float ? float_bits(f) : float_to_storage(f, bits);
 }
 
@@ -271,7 +271,7 @@ void fs_tex_depth_get_image(fs_context *c, const fs_tex_image *img, int dims, GL
                 /* The integer types as table 2.9 inverted, rounded; Mesa's
                  * exact rounding of each is not measured. */
                 default: {
-                    float cf = f < 0.0f ? 0.0f : f > 1.0f ? 1.0f : f;
+                    float cf = !(f > 0.0f) ? 0.0f : f > 1.0f ? 1.0f : f; /* NaN to 0 */
                     if (!counted)
                         fs_unsupported(c, "glGetTexImage(GL_DEPTH_COMPONENT) to an integer type (rounding not measured)");
                     counted = true;
