@@ -208,6 +208,11 @@ void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int level)
         fs_unsupported(c, "GL_GENERATE_MIPMAP on a 3D texture");
         return;
     }
+    if (b->base_format == GL_DEPTH_COMPONENT) {
+        /* Depth texels are not RGBA8 (units/texture_depth.h). */
+        fs_unsupported(c, "GL_GENERATE_MIPMAP on a depth texture");
+        return;
+    }
     int w = b->width, h = b->height;
     for (int l = level + 1; l < FS_TEX_MAX_LEVELS && l <= t->max_level && (w > 1 || h > 1); l++) {
         w = w > 1 ? w / 2 : 1;

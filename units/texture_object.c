@@ -10,6 +10,7 @@
 #include <string.h>
 #include "texture_priv.h"
 #include "texel_format.h"
+#include "texture_depth.h"
 #include "mpgrid_gl.h"
 #include "footprint.h"
 #include "../pipeline/context.h"
@@ -29,6 +30,7 @@ static void object_defaults(fs_tex_object *t, GLuint name)
     t->footprint_budget = 16;
     t->footprint_snap = GL_FOOTPRINT_SNAP_INTEGER_FRAGSIM;
     fs_tex_lod_defaults(t);
+    fs_tex_depth_defaults(t);
     t->complete = -1;
 }
 
@@ -294,6 +296,21 @@ static GLenum tex_format_error(GLenum format, GLenum type)
     return err;
 }
 
+/* The same for the image commands, which take DEPTH_COMPONENT (GL 1.4
+ * 3.8.1: with a depth internal format only, which the caller checks with
+ * depth_mismatch once the image's other arguments passed). */
+static GLenum image_format_error(GLenum format, GLenum type)
+{
+    return format == GL_DEPTH_COMPONENT ? fs_pixel_check(format, type) : tex_format_error(format, type);
+}
+
+/* 3.8.1: DEPTH_COMPONENT data with a colour internal format, or other
+ * data with a depth one, is INVALID_OPERATION. */
+static bool depth_mismatch(bool depth_image, GLenum format)
+{
+    return depth_image != (format == GL_DEPTH_COMPONENT);
+}
+
 /* Bytes glTexImage2D/glTexSubImage2D read (GL 1.5 spec 3.6.4, unpacking by
  * the whole unpack state).  0 for invalid formats and types (the command
  * then fails with an error and reads nothing). */
@@ -340,6 +357,10 @@ static GLenum base_format(GLint f)
         return GL_RED;
     case GL_RG: case GL_RG8: case GL_RG16:
         return GL_RG;
+    /* GL 1.4 depth textures (units/texture_depth.c). */
+    case GL_DEPTH_COMPONENT: case GL_DEPTH_COMPONENT16: case GL_DEPTH_COMPONENT24: case GL_DEPTH_COMPONENT32:
+    case GL_DEPTH_COMPONENT32F:
+        return GL_DEPTH_COMPONENT;
     default:
         return 0;
     }
@@ -373,6 +394,10 @@ static uint8_t *texel_addr(const fs_tex_image *img, int x, int y, int z)
 static void unpack_image(fs_context *c, fs_tex_image *img, int dims, const int off[3], int w, int h, int d,
                          GLenum format, GLenum type, const uint8_t *pixels)
 {
+    if (img->base_format == GL_DEPTH_COMPONENT) {
+        fs_tex_depth_unpack(c, img, dims, off, w, h, d, type, pixels);
+        return;
+    }
     fs_pixel_store ps = fs_pixel_store_unpack(c);
     fs_pixel_layout l;
     if (!fs_pixel_layout_init(&l, &ps, dims, w, h, d, format, type))
@@ -407,7 +432,7 @@ static void unpack_inner(fs_context *c, fs_tex_image *img, int dims, int border,
         return;
     }
     fs_tex_image whole = {.width = w, .height = h, .depth = d, .base_format = img->base_format,
-                          .internal_format = img->internal_format};
+                          .internal_format = img->internal_format, .depth_bits = img->depth_bits};
     whole.texels = malloc((size_t)w * (size_t)h * (size_t)d * 4);
     if (!whole.texels) {
         fs_error(c, GL_OUT_OF_MEMORY);
@@ -421,7 +446,11 @@ static void unpack_inner(fs_context *c, fs_tex_image *img, int dims, int border,
     free(whole.texels);
 }
 
-GLenum fs_tex_base_format(GLint internalformat) { return base_format(internalformat); }
+GLenum fs_tex_base_format(GLint internalformat)
+{
+    /* GL_FRAGSIM_mp_grid keeps colour textures only. */
+    return fs_tex_depth_format(internalformat) ? 0 : base_format(internalformat);
+}
 
 GLenum fs_tex_unpack_rgba8(fs_context *c, uint8_t *dst, int w, int h, GLenum base, GLenum format, GLenum type,
                            const void *pixels)
@@ -526,6 +555,7 @@ static fs_tex_image *define_level(fs_context *c, fs_tex_object *t, GLint level, 
     img->depth = texels ? size[2] : 0;
     img->internal_format = internalformat;
     img->base_format = base_format(internalformat);
+    img->depth_bits = fs_tex_depth_bits(internalformat, 0);
     t->complete = -1;
     return img;
 }
@@ -553,6 +583,7 @@ static bool proxy_image(fs_context *c, const fs_tex_target_info *ti, GLenum err,
     img->border = border;
     img->internal_format = internalformat;
     img->base_format = base_format(internalformat);
+    img->depth_bits = fs_tex_depth_bits(internalformat, 0);
     img->described = true;
     return true;
 }
@@ -575,9 +606,14 @@ void fs_tex_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLint 
     if (!image_target(c, target, dims, true, &ti))
         return;
     const GLsizei size[3] = {w, h, d};
-    GLenum err = tex_format_error(format, type);
+    GLenum err = image_format_error(format, type);
     if (err == GL_NO_ERROR)
         err = check_image_args(&ti, level, internalformat, size, border);
+    /* GL 1.4 3.8.1: depth textures are one- and two-dimensional (Mesa
+     * answers INVALID_OPERATION for 3D, proxy included; measured). */
+    bool depth = fs_tex_depth_format(internalformat);
+    if (err == GL_NO_ERROR && (depth_mismatch(depth, format) || (depth && dims == 3)))
+        err = GL_INVALID_OPERATION;
     if (ti.proxy && proxy_image(c, &ti, err, level, internalformat, size, border))
         return;
     if (err != GL_NO_ERROR) {
@@ -591,6 +627,8 @@ void fs_tex_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLint 
     inner_size(dims, size, border, inner);
     fs_tex_object *t = fs_tex_active(c)->bound[ti.k];
     fs_tex_image *img = define_level(c, t, level, internalformat, inner);
+    if (img)
+        img->depth_bits = fs_tex_depth_bits(internalformat, type);
     if (img && keeps_wide_texels(internalformat, format, type))
         fs_unsupported(c, "16/10-bit texels, unsized internal format (stored at 8 bits)");
     if (img && img->texels && pixels)
@@ -635,7 +673,7 @@ void fs_tex_subimage_nd(fs_context *c, int dims, GLenum target, GLint level, con
     fs_tex_target_info ti;
     if (!image_target(c, target, dims, false, &ti))
         return;
-    GLenum err = tex_format_error(format, type);
+    GLenum err = image_format_error(format, type);
     if (err == GL_INVALID_ENUM) {
         fs_error(c, err);
         return;
@@ -644,6 +682,8 @@ void fs_tex_subimage_nd(fs_context *c, int dims, GLenum target, GLint level, con
     fs_tex_image *img = subimage_target(c, &ti, level, off, size);
     if (!img)
         return;
+    if (err == GL_NO_ERROR && depth_mismatch(img->base_format == GL_DEPTH_COMPONENT, format))
+        err = GL_INVALID_OPERATION;
     if (err != GL_NO_ERROR) {
         fs_error(c, err);
         return;
@@ -669,6 +709,7 @@ static void copy_from_framebuffer(fs_context *c, fs_tex_image *img, const int ds
                                   GLsizei h)
 {
     const fs_framebuffer *fb = &c->fb;
+    bool depth = img->base_format == GL_DEPTH_COMPONENT;
     for (int j = 0; j < h; j++) {
         int64_t sy = (int64_t)y + j;
         if (sy < 0 || sy >= fb->height)
@@ -677,6 +718,12 @@ static void copy_from_framebuffer(fs_context *c, fs_tex_image *img, const int ds
             int64_t sx = (int64_t)x + i;
             if (sx < 0 || sx >= fb->width)
                 continue;
+            if (depth) {
+                /* A depth texture copies the depth buffer (GL 1.4 3.8.2). */
+                fs_tex_depth_store_copy(img, texel_addr(img, dst[0] + i, dst[1] + j, dst[2]),
+                                        fb->depth[(size_t)sy * (size_t)fb->width + (size_t)sx], fb->depth_bits);
+                continue;
+            }
             const uint8_t *src = fb->color + ((size_t)sy * (size_t)fb->width + (size_t)sx) * 4;
             uint8_t *t = texel_addr(img, dst[0] + i, dst[1] + j, dst[2]);
             store_texel(t, src, img->base_format);
@@ -696,6 +743,9 @@ void fs_tex_copy_image_nd(fs_context *c, int dims, GLenum target, GLint level, G
     GLenum err = internalformat >= 1 && internalformat <= 4
                      ? GL_INVALID_VALUE
                      : check_image_args(&ti, level, (GLint)internalformat, size, border);
+    /* A depth texture needs a depth buffer to copy from (GL 1.4 3.8.2). */
+    if (err == GL_NO_ERROR && fs_tex_depth_format((GLint)internalformat) && (c->fb.depth_bits == 0 || dims == 3))
+        err = GL_INVALID_OPERATION;
     if (err != GL_NO_ERROR) {
         fs_error(c, err);
         return;
@@ -734,6 +784,10 @@ void fs_tex_copy_subimage_nd(fs_context *c, int dims, GLenum target, GLint level
         return;
     if (fs_tex_compressed_block_bytes(img->internal_format, NULL))
         fs_unsupported(c, "glCopyTexSubImage into a compressed level (units/texture_compressed.c)");
+    if (img->base_format == GL_DEPTH_COMPONENT && c->fb.depth_bits == 0) {
+        fs_error(c, GL_INVALID_OPERATION); /* no depth buffer to copy (GL 1.4 3.8.2) */
+        return;
+    }
     copy_from_framebuffer(c, img, off, x, y, w, h);
     fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], level);
 }
@@ -863,6 +917,11 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
         return;
     default: {
         GLenum lod_err;
+        if (fs_tex_depth_parameter(t, pname, e, &lod_err)) {
+            if (lod_err != GL_NO_ERROR)
+                fs_error(c, lod_err);
+            return;
+        }
         if (!fs_tex_lod_parameter(t, pname, vals[0], &lod_err))
             break;
         if (lod_err != GL_NO_ERROR)
@@ -1063,7 +1122,8 @@ void fs_exec_TexEnvfv(fs_context *c, GLenum target, GLenum pname, const GLfloat 
 /* The scalar fields fs_tex_params shares with fs_tex_object, by name. */
 #define FS_TEX_PARAM_FIELDS(X) \
     X(min_filter) X(mag_filter) X(wrap_s) X(wrap_t) X(wrap_r) X(priority) X(footprint_budget) X(footprint_snap) \
-    X(base_level) X(max_level) X(min_lod) X(max_lod) X(lod_bias) X(generate_mipmap)
+    X(base_level) X(max_level) X(min_lod) X(max_lod) X(lod_bias) X(generate_mipmap) \
+    X(depth_mode) X(compare_mode) X(compare_func)
 
 static void params_save(const fs_tex_object *t, fs_tex_params *p)
 {
@@ -1183,6 +1243,8 @@ static int tex_parameter_value(const fs_tex_object *t, GLenum pname, tex_param_v
     case GL_TEXTURE_FOOTPRINT_BUDGET_FRAGSIM: v[0] = (float)t->footprint_budget; return 1;
     case GL_TEXTURE_FOOTPRINT_SNAP_FRAGSIM: v[0] = (float)t->footprint_snap; return 1;
     default:
+        if (fs_tex_depth_parameter_value(t, pname, v))
+            return 1;
         p->has_int = fs_tex_lod_value(t, pname, v, &p->i) != 0;
         return p->has_int ? 1 : 0;
     }
@@ -1227,7 +1289,7 @@ static int component_bits(const fs_tex_image *img, GLenum pname)
     case GL_TEXTURE_ALPHA_SIZE: k = FS_TC_ALPHA; break;
     case GL_TEXTURE_LUMINANCE_SIZE: k = FS_TC_LUMINANCE; break;
     case GL_TEXTURE_INTENSITY_SIZE: k = FS_TC_INTENSITY; break;
-    case GL_TEXTURE_DEPTH_SIZE: return 0;
+    case GL_TEXTURE_DEPTH_SIZE: return img->texels || img->described ? img->depth_bits : 0;
     default: return -1;
     }
     return img->texels || img->described ? fs_texel_bits(img->internal_format, img->base_format, k) : 0;
@@ -1410,7 +1472,8 @@ static const fs_tex_image *get_image_level(fs_context *c, const fs_tex_target_in
 int64_t fs_gettexImage_bytes(fs_context *c, GLenum target, GLint level, GLenum format, GLenum type)
 {
     fs_tex_target_info ti;
-    if (!fs_tex_target_of(target, &ti) || get_image_format_error(format, type) != GL_NO_ERROR)
+    bool depth_ok = format == GL_DEPTH_COMPONENT && fs_pixel_check(format, type) == GL_NO_ERROR;
+    if (!fs_tex_target_of(target, &ti) || (!depth_ok && get_image_format_error(format, type) != GL_NO_ERROR))
         return 0;
     const fs_tex_image *img = get_image_level(c, &ti, level);
     if (!img)
@@ -1446,14 +1509,25 @@ void fs_exec_GetTexImage(fs_context *c, GLenum target, GLint level, GLenum forma
         fs_error(c, GL_INVALID_VALUE);
         return;
     }
-    GLenum err = get_image_format_error(format, type);
+    /* GL 1.4 6.1.4: DEPTH_COMPONENT reads a depth texture, and only a
+     * depth texture is read as depth (INVALID_OPERATION otherwise). */
+    const fs_tex_image *img = get_image_level(c, &ti, level);
+    bool depth_image = img && img->base_format == GL_DEPTH_COMPONENT;
+    GLenum err = format == GL_DEPTH_COMPONENT ? fs_pixel_check(format, type) : get_image_format_error(format, type);
+    if (err == GL_NO_ERROR && img && depth_mismatch(depth_image, format))
+        err = GL_INVALID_OPERATION;
+    if (err == GL_NO_ERROR && !img && format == GL_DEPTH_COMPONENT)
+        err = GL_INVALID_OPERATION; /* no depth texture to read */
     if (err != GL_NO_ERROR) {
         fs_error(c, err);
         return;
     }
-    const fs_tex_image *img = get_image_level(c, &ti, level);
     if (!img || !pixels)
         return; /* an undefined level writes nothing */
+    if (depth_image) {
+        fs_tex_depth_get_image(c, img, ti.dims, type, pixels);
+        return;
+    }
     fs_pixel_store ps = fs_pixel_store_pack(c);
     fs_pixel_layout l;
     if (!fs_pixel_layout_init(&l, &ps, ti.dims, img->width, img->height, img->depth, format, type))

@@ -27,6 +27,9 @@ typedef struct fs_tex_image {
      * for glGetCompressedTexImage; NULL otherwise (texture_compressed.c). */
     uint8_t *compressed;
     size_t compressed_size;
+    /* A DEPTH_COMPONENT image (base_format GL_DEPTH_COMPONENT) keeps one
+     * uint32 depth of depth_bits bits per texel (units/texture_depth.h). */
+    int depth_bits;
 } fs_tex_image;
 
 /* The texture targets as indices into a unit's bindings and enables and
@@ -49,6 +52,8 @@ typedef struct fs_tex_object {
     /* GL_FRAGSIM_footprint_filter: the budget M and the corner snapping. */
     int footprint_budget;
     GLenum footprint_snap;
+    /* GL 1.4 depth textures (3.8.4, 3.8.14; units/texture_depth.c). */
+    GLenum depth_mode, compare_mode, compare_func;
     fs_tex_image level[FS_TEX_MAX_LEVELS];
     /* GL 1.2-1.4 level range, LOD clamps and bias, automatic MIPmaps
      * (3.8.8-3.8.10, table 6.17; units/texture_lod.c). */

@@ -39,6 +39,7 @@
 #include "footprint.h"
 #include "mpgrid_gl.h"
 #include "texture_reads.h"
+#include "texture_depth.h"
 #include "../pipeline/context.h"
 #include "../glext/GL_FRAGSIM_footprint_filter.h"
 
@@ -249,6 +250,7 @@ typedef struct tex_fetch {
     int dims;
     GLenum wrap[3];
     bool pot[3]; /* each axis of the base level a power of two */
+    float ref;        /* a depth texture's reference r/q at the pixel (texture_depth.h) */
 } tex_fetch;
 
 /* An image's size along axis a (0 s, 1 t, 2 r). */
@@ -365,8 +367,17 @@ static void sample_level8(tex_fetch *f, int level, GLenum filter, const float st
 static void fetch_f(tex_fetch *f, const fs_tex_image *img, const int xyz[3], float out[4])
 {
     const fs_tex_object *t = f->t;
-    if (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0 || xyz[0] >= img->width || xyz[1] >= img->height ||
-        xyz[2] >= img->depth) {
+    bool outside = xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0 || xyz[0] >= img->width || xyz[1] >= img->height ||
+                   xyz[2] >= img->depth;
+    if (img->base_format == GL_DEPTH_COMPONENT) {
+        /* A depth texel (the border's depth is its R), compared with the
+         * reference before filtering (GL 1.4 3.8.14). */
+        uint8_t tmp[4];
+        float d = outside ? t->border[0] : fs_tex_depth_texel(img, texel_at(f, img, xyz, tmp));
+        out[0] = out[1] = out[2] = out[3] = fs_tex_depth_filtered_value(t, f->ref, d);
+        return;
+    }
+    if (outside) {
         /* 3.8.7: the border colour is taken as a texel of the image's base
          * format, expanded like the stored texels (texture_priv.h), as
          * Mesa converts it for the sampler. */
@@ -860,12 +871,13 @@ static bool sample_unit(fs_context *c, fs_quad *q, int u, const fs_quad_tex *qt,
      * wrap (CLAMP, CLAMP_TO_BORDER, MIRRORED_REPEAT) on any axis the
      * target has takes the float path, whatever the filter (its MIPmap
      * blend then rounds differently, and LINEAR may reach the border). */
-    bool float_path = !fs_tex_simple_wraps(t);
+    bool depth = t->level[t->first_level].base_format == GL_DEPTH_COMPONENT;
+    bool float_path = !fs_tex_simple_wraps(t) || depth; /* depth: texture_depth.c */
     bool via_linear = float_path && img_filter == GL_NEAREST && c->raster.tex_pair_lod && fs_tex_pair_decides(t) &&
                       nearest_via_linear(t, &lp, dims, qt);
     fs_tex_reads reads;
     tex_fetch f = {t, t->mpgrid, {0, 0, 0}, c->observer ? &reads : NULL, 0, dims,
-                   {t->wrap_s, dims > 1 ? t->wrap_t : GL_REPEAT, dims > 2 ? t->wrap_r : GL_REPEAT}};
+                   {t->wrap_s, dims > 1 ? t->wrap_t : GL_REPEAT, dims > 2 ? t->wrap_r : GL_REPEAT}, {false, false, false}, 0.0f};
     for (int a = 0; a < 3; a++) {
         int len = image_len(&t->level[t->first_level], a);
         f.pot[a] = (len & (len - 1)) == 0;
@@ -877,7 +889,11 @@ static bool sample_unit(fs_context *c, fs_quad *q, int u, const fs_quad_tex *qt,
             continue;
         f.pixel = i;
         const float sti[3] = {str[0][i], str[1][i], str[2][i]};
+        if (depth) /* divided by q as the coordinates are (texture_depth.h) */
+            f.ref = fs_tex_depth_ref(t, qt->tex[i][fs_tex_depth_ref_coord(dims)] * (1.0f / qt->tex[i][3]));
         sample_pixel(&f, &lr, img_filter, mip_linear, float_path, via_linear, sti, texel[i][u]);
+        if (depth)
+            fs_tex_depth_mode_apply(t, texel[i][u]);
     }
     if (f.mpgrid)
         fs_mpgrid_gl_work_done(f.mpgrid, &f.work);
@@ -928,6 +944,8 @@ static void texture_units(fs_context *c, fs_quad *q, const fs_quad_tex *tc)
          * missing components being 0 (Mesa's texenv, as measured). */
         if (base == GL_RED || base == GL_RG)
             base = GL_RGB;
+        if (base == GL_DEPTH_COMPONENT) /* 3.8.13: as its DEPTH_TEXTURE_MODE */
+            base = fs_tex_depth_env_base(t);
         for (int i = 0; i < 4; i++) {
             if (!(q->mask & (1u << i)))
                 continue;

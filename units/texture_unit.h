@@ -71,6 +71,7 @@ typedef struct fs_tex_params {
     int base_level, max_level;    /* GL 1.2-1.4 level of detail (texture_lod.c) */
     float min_lod, max_lod, lod_bias;
     bool generate_mipmap;
+    GLenum depth_mode, compare_mode, compare_func; /* GL 1.4 depth textures (texture_depth.c) */
 } fs_tex_params;
 /* A texture unit's environment (3.8.13, table 6.19): the mode, the
  * constant colour and GL_COMBINE's parameters, [0] for the RGB function,
