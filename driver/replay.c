@@ -385,6 +385,56 @@ static int to_array(fs_replayer *r, const fs_tcall *tc, int kind, const fs_tval 
     return 0;
 }
 
+/* glMultiDrawElements' indices (kind AP, gl_call.h): apitrace records one
+ * value per draw, a blob of its indices or, while an element array buffer
+ * is bound, a pointer value (an offset, GL 1.5 spec 2.9.2; NULL is offset
+ * 0).  Into the arena as an array of pointers; each blob must hold what
+ * its draw reads (count[i] indices of the call's type, arguments k - 2 and
+ * k - 1, already converted); blobs and addresses do not mix. */
+static int to_pointers(fs_replayer *r, const fs_tcall *tc, fs_call *call, int k, const fs_tval *v)
+{
+    fs_arg *a = &call->a[k];
+    if (v->type == FS_TV_NULL) {
+        a->p = NULL;
+        a->count = 0;
+        return 0;
+    }
+    if (v->type != FS_TV_ARRAY)
+        return fail(r, tc, "%s", "expected an array of pointers");
+    if (v->arr.n > UINT32_MAX / sizeof(void *))
+        return fail(r, tc, "%s", "array of pointers too long");
+    const void **ptrs = arena_alloc(r, v->arr.n * sizeof *ptrs + 1);
+    if (!ptrs)
+        return fail(r, tc, "%s", "out of memory");
+    const GLint *count = call->a[k - 2].p;
+    GLenum type = (GLenum)call->a[k - 1].i;
+    bool blobs = false, addrs = false;
+    for (size_t i = 0; i < v->arr.n; i++) {
+        const fs_tval *e = &v->arr.elems[i];
+        int64_t addr;
+        if (e->type == FS_TV_BLOB || e->type == FS_TV_STRING) {
+            int64_t need = count && i < call->a[k - 2].count ? fs_index_bytes(count[i], type) : 0;
+            if ((int64_t)e->str.len < need)
+                return fail(r, tc, "%s", "indices blob shorter than its draw reads");
+            ptrs[i] = e->str.ptr;
+            blobs = true;
+        } else if (e->type == FS_TV_NULL) {
+            ptrs[i] = NULL;
+        } else if (tv_int(e, &addr)) {
+            ptrs[i] = (const void *)(uintptr_t)addr;
+            addrs = true;
+        } else {
+            return fail(r, tc, "%s", "non-pointer element in an array of pointers");
+        }
+    }
+    if (blobs && addrs)
+        return fail(r, tc, "%s", "indices mix blobs and addresses");
+    a->p = ptrs;
+    a->count = (uint32_t)v->arr.n;
+    a->is_data = addrs ? FS_ARG_ADDR : 0;
+    return 0;
+}
+
 /* *call with every argument zero: what convert() and rec_next() fill in. */
 static void call_start(fs_call *call, int cmd, unsigned nargs, uint32_t flags)
 {
@@ -452,6 +502,10 @@ static int convert(fs_replayer *r, const fs_tcall *tc, int cmd, fs_call *call)
             } else if (to_array(r, tc, kind, v, a) != 0) {
                 return -1;
             }
+            break;
+        case FS_K_AP:
+            if (to_pointers(r, tc, call, k, v) != 0)
+                return -1;
             break;
         case FS_K_OV: case FS_K_OF: case FS_K_OD: case FS_K_OI: case FS_K_OU: case FS_K_OUS: case FS_K_OB: case FS_K_OUB: case FS_K_OP:
             a->out = NULL; /* the dispatcher provides scratch space */
