@@ -1080,23 +1080,20 @@ void fs_exec_DrawElements(fs_context *c, GLenum mode, GLsizei count, GLenum type
 }
 
 /* GL 1.4 spec 2.8: glMultiDrawElements is a glDrawElements per draw, in
- * order.  Its errors as OSMesa raises them, before any draw: a negative
- * drawcount or count GL_INVALID_VALUE, a bad mode or type GL_INVALID_ENUM
+ * order.  Its errors as OSMesa raises them, before any draw, in this
+ * order: a negative drawcount GL_INVALID_VALUE, a bad mode or type
+ * GL_INVALID_ENUM, a negative count GL_INVALID_VALUE
  * (tests/test_array_draws.c, multidraw_elements_errors_vs_osmesa). */
 bool fs_multidraw_elements_valid(fs_context *c, GLenum mode, const GLsizei *count, GLenum type, GLsizei drawcount)
 {
     GLenum err = GL_NO_ERROR;
-    if (drawcount < 0) {
+    if (drawcount < 0)
         err = GL_INVALID_VALUE;
-    } else {
-        if (!index_type_valid(type))
-            err = GL_INVALID_ENUM;
-        for (GLsizei i = 0; i < drawcount; i++)
-            if (count[i] < 0)
-                err = GL_INVALID_VALUE;
-        if (err == GL_NO_ERROR && !fs_prim_mode_valid(mode))
-            err = GL_INVALID_ENUM;
-    }
+    else if (!fs_prim_mode_valid(mode) || !index_type_valid(type))
+        err = GL_INVALID_ENUM;
+    for (GLsizei i = 0; err == GL_NO_ERROR && i < drawcount; i++)
+        if (count[i] < 0)
+            err = GL_INVALID_VALUE;
     if (err != GL_NO_ERROR)
         fs_error(c, err);
     return err == GL_NO_ERROR;
