@@ -722,10 +722,58 @@ static void rec_free(fs_replayer *r)
 
 /* Bytes of the data argument k of `call` points to, or -1 when it points
  * at none (a scalar, an output, an address in the traced program). */
+static int64_t rec_payload(const fs_call *call, int k);
+_Static_assert(sizeof(void *) == 8, "a recorded pointer takes 8 bytes");
+
+/* An array of index pointers (AP, glMultiDrawElements) in the record: a
+ * table of 8 bytes per draw, then each draw's indices.  The table holds
+ * recorded addresses as they are, else for each draw the offset of its
+ * indices from the table's start (0: NULL), which rec_next turns back into
+ * pointers.  ptrs: the pointers, or the table of offsets (either way
+ * nonzero for the same draws). */
+static int64_t rec_ap_payload(const fs_call *call, int k)
+{
+    const fs_arg *a = &call->a[k];
+    int64_t n = 8 * (int64_t)a->count;
+    if (a->is_data == FS_ARG_ADDR)
+        return n;
+    const GLint *count = call->a[k - 2].p;
+    for (uint32_t i = 0; i < a->count; i++) {
+        uint64_t v;
+        memcpy(&v, (const unsigned char *)a->p + 8 * (size_t)i, 8);
+        if (v)
+            n += (int64_t)REC_ALIGN((size_t)fs_index_bytes(count[i], (GLenum)call->a[k - 1].i));
+    }
+    return n;
+}
+
+static void rec_ap_write(const fs_call *call, int k, unsigned char *out)
+{
+    const fs_arg *a = &call->a[k];
+    if (a->is_data == FS_ARG_ADDR) {
+        memcpy(out, a->p, 8 * (size_t)a->count);
+        return;
+    }
+    const GLint *count = call->a[k - 2].p;
+    const void *const *ptrs = a->p;
+    size_t at = 8 * (size_t)a->count;
+    for (uint32_t i = 0; i < a->count; i++) {
+        uint64_t off = ptrs[i] ? at : 0;
+        memcpy(out + 8 * (size_t)i, &off, 8);
+        if (!ptrs[i])
+            continue;
+        size_t n = (size_t)fs_index_bytes(count[i], (GLenum)call->a[k - 1].i);
+        memcpy(out + at, ptrs[i], n);
+        at += REC_ALIGN(n);
+    }
+}
+
 static int64_t rec_payload(const fs_call *call, int k)
 {
     const fs_arg *a = &call->a[k];
     int kind = fs_cmd_table[call->cmd].kinds[k];
+    if (kind == FS_K_AP)
+        return a->p ? rec_ap_payload(call, k) : -1;
     if (!a->p || a->is_data == FS_ARG_ADDR)
         return -1;
     if (kind == FS_K_CPTR)
@@ -785,7 +833,10 @@ static void rec_add(fs_replayer *r, const char *name, const fs_call *call, bool 
         h->data |= (uint16_t)(1u << k);
         memcpy(slot, &a->count, 4);
         memcpy(slot + 4, &a->is_data, 4);
-        memcpy(data, a->p, (size_t)n);
+        if (fs_cmd_table[call->cmd].kinds[k] == FS_K_AP)
+            rec_ap_write(call, k, data);
+        else
+            memcpy(data, a->p, (size_t)n);
         data[n] = 0;
         data += REC_ALIGN((size_t)n + 1);
     }
@@ -832,6 +883,21 @@ static int rec_next(fs_replayer *r, fs_call *call, const struct name_info **ni, 
         memcpy(&a->count, slot, 4);
         memcpy(&a->is_data, slot + 4, 4);
         a->p = data;
+        if (fs_cmd_table[h->cmd].kinds[k] == FS_K_AP && a->is_data != FS_ARG_ADDR) {
+            /* the table's offsets back into pointers (rec_ap_write) */
+            arena_reset(r);
+            const void **ptrs = arena_alloc(r, 8 * (size_t)a->count + 1);
+            if (!ptrs) {
+                snprintf(r->err, sizeof r->err, "%s: out of memory", r->path);
+                return -1;
+            }
+            for (uint32_t i = 0; i < a->count; i++) {
+                uint64_t off;
+                memcpy(&off, data + 8 * (size_t)i, 8);
+                ptrs[i] = off ? data + off : NULL;
+            }
+            a->p = ptrs;
+        }
         data += REC_ALIGN((size_t)rec_payload(call, k) + 1);
     }
     return 1;

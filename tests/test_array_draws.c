@@ -5,15 +5,22 @@
  * into an element array buffer, compiled into display lists, and its
  * errors; glInterleavedArrays (GL 1.1, 2.8, table 2.5), all 14 formats
  * drawn and the state each leaves (strides, pointers, enables, the client
- * active texture unit, a bound GL_ARRAY_BUFFER), and its errors;
+ * active texture unit, a bound GL_ARRAY_BUFFER), and its errors; both
+ * read from a trace as apitrace records them (indices as blobs or as
+ * offsets, the interleaved block an offset into a buffer), replayed from
+ * the record and from the file on the model and on OSMesa;
  * glGetPointerv (6.1.11) for every array and the selection and feedback
  * buffers; and the signed normalized arrays of a draw (byte, short and int
  * normals and colours), which llvmpipe's vertex fetch converts otherwise
  * than GL 1.5's table 2.9 does.
  */
 #define GL_GLEXT_PROTOTYPES
+#include <unistd.h>
 #include "check.h"
 #include "osmesa_util.h"
+#include "trace_build.h"
+#include "../driver/osmesa_ref.h"
+#include "../driver/replay.h"
 
 #define COMPARE_SCENE(fn, w, h, name) OSM_CHECK_SCENE(fn, w, h, name, "FS_ARRAY_DRAWS_DUMP", "array_draws")
 
@@ -667,6 +674,147 @@ TEST(known_differences)
     CHECK_EQ_INT(err, GL_NO_ERROR);
 }
 
+/* ---- from a trace ---- */
+
+static fs_tval tb_array(const fs_tval *elems, size_t n)
+{
+    fs_tval x;
+    memset(&x, 0, sizeof x);
+    x.type = FS_TV_ARRAY;
+    x.arr.elems = elems;
+    x.arr.n = n;
+    return x;
+}
+
+/* A trace as apitrace writes these calls: glInterleavedArrays with a
+ * buffer bound (the pointer an offset), glMultiDrawElements with an
+ * element buffer bound (offsets, NULL the first: offset 0) and without
+ * (blobs, one of a zero count empty). */
+static int write_multidraw_trace(const char *path)
+{
+    char err[256];
+    fs_trace_writer *w = fs_trace_create(path, err, sizeof err);
+    if (!w)
+        return -1;
+    fs_tval vp[4] = {tb_ival(0), tb_ival(0), tb_ival(48), tb_ival(40)};
+    tb_write_call(w, "glViewport", 4, vp, 0);
+    /* GL_C3F_V3F: 12 vertices of a colour and a position, 8 bytes in. */
+    static float block[2 + 12 * 6];
+    for (int i = 0; i < 12; i++) {
+        float *v = block + 2 + 6 * i;
+        v[0] = 0.1f + 0.07f * (float)i;
+        v[1] = 1.0f - 0.06f * (float)i;
+        v[2] = (float)(i % 3) * 0.4f;
+        v[3] = -0.9f + 0.15f * (float)i + ((i % 3) == 1 ? 0.3f : 0.0f);
+        v[4] = (i % 3) == 2 ? 0.8f : -0.7f + 0.05f * (float)i;
+        v[5] = 0;
+    }
+    fs_tval bb[2] = {tb_eval(GL_ARRAY_BUFFER, "GL_ARRAY_BUFFER"), tb_ival(1)};
+    tb_write_call(w, "glBindBuffer", 2, bb, 0);
+    fs_tval bd[4] = {tb_eval(GL_ARRAY_BUFFER, "GL_ARRAY_BUFFER"), tb_ival(sizeof block), tb_blob(block, sizeof block),
+                     tb_eval(GL_STATIC_DRAW, "GL_STATIC_DRAW")};
+    tb_write_call(w, "glBufferData", 4, bd, 0);
+    fs_tval ia[3] = {tb_eval(GL_C3F_V3F, "GL_C3F_V3F"), tb_ival(0), tb_opaque(8)};
+    tb_write_call(w, "glInterleavedArrays", 3, ia, 0);
+    bb[1] = tb_ival(0);
+    tb_write_call(w, "glBindBuffer", 2, bb, 0);
+    static const GLubyte idx[9] = {0, 1, 2, 3, 4, 5, 2, 4, 5};
+    fs_tval eb[2] = {tb_eval(GL_ELEMENT_ARRAY_BUFFER, "GL_ELEMENT_ARRAY_BUFFER"), tb_ival(2)};
+    tb_write_call(w, "glBindBuffer", 2, eb, 0);
+    fs_tval ed[4] = {tb_eval(GL_ELEMENT_ARRAY_BUFFER, "GL_ELEMENT_ARRAY_BUFFER"), tb_ival(sizeof idx),
+                     tb_blob(idx, sizeof idx), tb_eval(GL_STATIC_DRAW, "GL_STATIC_DRAW")};
+    tb_write_call(w, "glBufferData", 4, ed, 0);
+    fs_tval counts[3] = {tb_ival(3), tb_ival(0), tb_ival(3)};
+    fs_tval offs[3];
+    memset(&offs[0], 0, sizeof offs[0]);
+    offs[0].type = FS_TV_NULL;
+    offs[1] = tb_opaque(1);
+    offs[2] = tb_opaque(3);
+    fs_tval md[5] = {tb_eval(GL_TRIANGLES, "GL_TRIANGLES"), tb_array(counts, 3),
+                     tb_eval(GL_UNSIGNED_BYTE, "GL_UNSIGNED_BYTE"), tb_array(offs, 3), tb_ival(3)};
+    tb_write_call(w, "glMultiDrawElements", 5, md, 0);
+    eb[1] = tb_ival(0);
+    tb_write_call(w, "glBindBuffer", 2, eb, 0);
+    static const GLushort us[2][3] = {{6, 7, 8}, {9, 10, 11}};
+    fs_tval blobs[3] = {tb_blob(us[0], sizeof us[0]), tb_blob(us[1], 0), tb_blob(us[1], sizeof us[1])};
+    fs_tval md2[5] = {tb_eval(GL_TRIANGLES, "GL_TRIANGLES"), tb_array(counts, 3),
+                      tb_eval(GL_UNSIGNED_SHORT, "GL_UNSIGNED_SHORT"), tb_array(blobs, 3), tb_ival(3)};
+    tb_write_call(w, "glMultiDrawElements", 5, md2, 0);
+    fs_tval sw[2] = {tb_ival(0), tb_ival(0)};
+    tb_write_call(w, "glXSwapBuffers", 2, sw, 0);
+    return fs_trace_finish(w);
+}
+
+/* Replays the trace (record_limit 1: from the file, 0: from the record)
+ * on the model and on OSMesa; the pixels that differ, -1 on an error;
+ * *unsupported the model's calls it could not execute, *digest its image's
+ * (FNV-1a). */
+static long replay_both(const char *path, size_t record_limit, bool *from_record, uint64_t *unsupported,
+                        uint64_t *digest)
+{
+    char err[512];
+    fs_replay_opts o = {NULL, 0, 0, record_limit, false, FS_TRACE_PARSER_FAST};
+    fs_replayer *r = fs_replay_open(path, &o, err, sizeof err);
+    if (!r)
+        return -1;
+    int w = fs_replay_info_get(r)->width, h = fs_replay_info_get(r)->height;
+    *from_record = fs_replay_info_get(r)->from_record;
+    fs_osmesa *ref = fs_osmesa_create(w, h, 24, 8, err, sizeof err);
+    fs_context *c = ref ? fs_context_create(NULL, w, h) : NULL;
+    long differ = -1;
+    fs_call call;
+    fs_replay_event ev;
+    while (c && (ev = fs_replay_next(r, &call)) != FS_REPLAY_EOF && ev != FS_REPLAY_ERROR) {
+        if (ev != FS_REPLAY_CALL)
+            continue;
+        fs_call mine = call;
+        fs_submit(c, &mine);
+        fs_osmesa_dispatch(ref, &call);
+    }
+    if (c && ev == FS_REPLAY_EOF) {
+        const uint8_t *a = fs_osmesa_color(ref), *b = c->fb.color;
+        differ = 0;
+        for (long i = 0; i < (long)w * h; i++)
+            differ += memcmp(a + 4 * i, b + 4 * i, 4) != 0;
+        long lit = 0;
+        for (long i = 0; i < (long)w * h; i++)
+            lit += (b[4 * i] | b[4 * i + 1] | b[4 * i + 2]) != 0;
+        printf("  multidraw trace (record limit %zu): %ld pixels differ, %ld lit\n", record_limit, differ, lit);
+        if (lit < 40)
+            differ = -2; /* the draws must have drawn */
+        *digest = 1469598103934665603ull;
+        for (long i = 0; i < 4L * w * h; i++)
+            *digest = (*digest ^ b[i]) * 1099511628211ull;
+        *unsupported = c->stats.unsupported_calls;
+        for (int i = 0; i < c->unsupported_feature_count; i++)
+            printf("  unsupported: %s\n", c->unsupported_feature[i].name);
+        *unsupported += (uint64_t)c->unsupported_feature_count;
+    }
+    if (c)
+        fs_context_destroy(c);
+    if (ref)
+        fs_osmesa_destroy(ref);
+    fs_replay_close(r);
+    return differ;
+}
+
+TEST(multidraw_and_interleaved_from_a_trace_vs_osmesa)
+{
+    char path[128];
+    snprintf(path, sizeof path, "/tmp/fragsim_test_array_draws_%d.trace", (int)getpid());
+    REQUIRE(write_multidraw_trace(path) == 0);
+    uint64_t digest[2] = {0, 1};
+    for (int pass = 0; pass < 2; pass++) {
+        bool from_record = false;
+        uint64_t unsupported = 99;
+        CHECK_EQ_INT(replay_both(path, pass ? 0 : 1, &from_record, &unsupported, &digest[pass]), 0);
+        CHECK_EQ_INT(from_record, pass == 1); /* the record holds the arrays of pointers */
+        CHECK_EQ_INT((int)unsupported, 0);
+    }
+    CHECK(digest[0] == digest[1]); /* the record replays what the file holds */
+    unlink(path);
+}
+
 TEST_LIST = {
     TEST_ENTRY(multidraw_arrays_vs_osmesa),
     TEST_ENTRY(errors_and_pointers_vs_osmesa),
@@ -676,6 +824,7 @@ TEST_LIST = {
     TEST_ENTRY(interleaved_arrays_vs_osmesa),
     TEST_ENTRY(interleaved_state_vs_osmesa),
     TEST_ENTRY(known_differences),
+    TEST_ENTRY(multidraw_and_interleaved_from_a_trace_vs_osmesa),
     TEST_END,
 };
 
