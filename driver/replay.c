@@ -731,18 +731,27 @@ _Static_assert(sizeof(void *) == 8, "a recorded pointer takes 8 bytes");
  * indices from the table's start (0: NULL), which rec_next turns back into
  * pointers.  ptrs: the pointers, or the table of offsets (either way
  * nonzero for the same draws). */
+/* Bytes of draw i's indices (as to_pointers checked them): none without
+ * a count for it. */
+static size_t rec_ap_draw_bytes(const fs_call *call, int k, uint32_t i)
+{
+    const GLint *count = call->a[k - 2].p;
+    if (!count || i >= call->a[k - 2].count)
+        return 0;
+    return (size_t)fs_index_bytes(count[i], (GLenum)call->a[k - 1].i);
+}
+
 static int64_t rec_ap_payload(const fs_call *call, int k)
 {
     const fs_arg *a = &call->a[k];
     int64_t n = 8 * (int64_t)a->count;
     if (a->is_data == FS_ARG_ADDR)
         return n;
-    const GLint *count = call->a[k - 2].p;
     for (uint32_t i = 0; i < a->count; i++) {
         uint64_t v;
         memcpy(&v, (const unsigned char *)a->p + 8 * (size_t)i, 8);
         if (v)
-            n += (int64_t)REC_ALIGN((size_t)fs_index_bytes(count[i], (GLenum)call->a[k - 1].i));
+            n += (int64_t)REC_ALIGN(rec_ap_draw_bytes(call, k, i));
     }
     return n;
 }
@@ -754,7 +763,6 @@ static void rec_ap_write(const fs_call *call, int k, unsigned char *out)
         memcpy(out, a->p, 8 * (size_t)a->count);
         return;
     }
-    const GLint *count = call->a[k - 2].p;
     const void *const *ptrs = a->p;
     size_t at = 8 * (size_t)a->count;
     for (uint32_t i = 0; i < a->count; i++) {
@@ -762,7 +770,7 @@ static void rec_ap_write(const fs_call *call, int k, unsigned char *out)
         memcpy(out + 8 * (size_t)i, &off, 8);
         if (!ptrs[i])
             continue;
-        size_t n = (size_t)fs_index_bytes(count[i], (GLenum)call->a[k - 1].i);
+        size_t n = rec_ap_draw_bytes(call, k, i);
         memcpy(out + at, ptrs[i], n);
         at += REC_ALIGN(n);
     }

@@ -689,7 +689,7 @@ static fs_tval tb_array(const fs_tval *elems, size_t n)
 /* A trace as apitrace writes these calls: glInterleavedArrays with a
  * buffer bound (the pointer an offset), glMultiDrawElements with an
  * element buffer bound (offsets, NULL the first: offset 0) and without
- * (blobs, one of a zero count empty). */
+ * (blobs, one of a zero count empty), and with no draw and no counts. */
 static int write_multidraw_trace(const char *path)
 {
     char err[256];
@@ -740,6 +740,12 @@ static int write_multidraw_trace(const char *path)
     fs_tval md2[5] = {tb_eval(GL_TRIANGLES, "GL_TRIANGLES"), tb_array(counts, 3),
                       tb_eval(GL_UNSIGNED_SHORT, "GL_UNSIGNED_SHORT"), tb_array(blobs, 3), tb_ival(3)};
     tb_write_call(w, "glMultiDrawElements", 5, md2, 0);
+    /* No draw, no counts, and more pointers than draws: nothing (a record
+     * that sized the indices by counts it has not would read NULL). */
+    fs_tval none[5] = {tb_eval(GL_TRIANGLES, "GL_TRIANGLES"), tb_ival(0), tb_eval(GL_UNSIGNED_SHORT, "GL_UNSIGNED_SHORT"),
+                       tb_array(blobs, 3), tb_ival(0)};
+    none[1].type = FS_TV_NULL;
+    tb_write_call(w, "glMultiDrawElements", 5, none, 0);
     fs_tval sw[2] = {tb_ival(0), tb_ival(0)};
     tb_write_call(w, "glXSwapBuffers", 2, sw, 0);
     return fs_trace_finish(w);
