@@ -251,9 +251,13 @@ int64_t fs_map1_points(GLenum target, GLint stride, GLint order);
 int64_t fs_map2_points(GLenum target, GLint ustride, GLint uorder, GLint vstride, GLint vorder);
 int fs_getmap_count(fs_context *c, GLenum target, GLenum query);
 int fs_texenv_count(GLenum pname);
+int fs_point_param_count(GLenum pname); /* values of glPointParameter*v (pipeline/point_state.c) */
 int fs_texgen_count(GLenum pname); /* values of glTexGen*v, glGetTexGen*v (pipeline/texgen.c) */
 /* Bytes glGetTexImage writes under the current pack state (0 when it
  * writes nothing: an error or an undefined level). */
 int64_t fs_gettexImage_bytes(fs_context *c, GLenum target, GLint level, GLenum format, GLenum type);
+/* Bytes glGetCompressedTexImage writes (units/texture_compressed.c; 0 when
+ * it writes nothing: an error or a level that is not compressed). */
+int64_t fs_getcompressed_bytes(fs_context *c, GLenum target, GLint level);
 
 #endif

@@ -83,7 +83,7 @@ const GLubyte *fs_exec_GetString(fs_context *c, GLenum name)
     case GL_RENDERER: return (const GLubyte *)"fragsim functional model";
     case GL_VERSION: return (const GLubyte *)FS_GL_VERSION;
     /* Only what is implemented: the Occlusion Unit (units/occlusion_gl.c). */
-    case GL_EXTENSIONS: return (const GLubyte *)"GL_ARB_occlusion_query GL_FRAGSIM_occlusion_unit GL_HP_occlusion_test GL_FRAGSIM_footprint_filter GL_FRAGSIM_mp_grid";
+    case GL_EXTENSIONS: return (const GLubyte *)"GL_ARB_occlusion_query GL_ARB_texture_non_power_of_two GL_FRAGSIM_occlusion_unit GL_HP_occlusion_test GL_FRAGSIM_footprint_filter GL_FRAGSIM_mp_grid";
     default:
         fs_error(c, GL_INVALID_ENUM);
         return NULL;
@@ -161,8 +161,16 @@ static bool get_computed(fs_context *c, GLenum pname, get_result *r)
     case GL_TEXTURE_BINDING_2D: put1(r, GET_NUM, fs_texture_binding_2d(c)); return true;
     case GL_TEXTURE_BINDING_3D: put1(r, GET_NUM, fs_texture_binding(c, GL_TEXTURE_3D)); return true;
     /* GL 1.5 spec table 6.30 and GL_FRAGSIM_occlusion_unit's New State. */
-    /* GL_NUM_COMPRESSED_TEXTURE_FORMATS is 0: the list is empty. */
-    case GL_COMPRESSED_TEXTURE_FORMATS: put(r, GET_ENUM, 0, v); return true;
+    /* Table 6.30: the compressed formats the texture unit decodes. */
+    case GL_NUM_COMPRESSED_TEXTURE_FORMATS: put1(r, GET_NUM, fs_tex_compressed_formats(NULL)); return true;
+    case GL_COMPRESSED_TEXTURE_FORMATS: {
+        GLint f[8];
+        int n = fs_tex_compressed_formats(f);
+        for (int i = 0; i < n; i++)
+            v[i] = f[i];
+        put(r, GET_ENUM, n, v);
+        return true;
+    }
     case GL_LIST_MODE: case GL_LIST_INDEX: {
         GLenum mode;
         GLuint index;

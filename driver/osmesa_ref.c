@@ -122,6 +122,20 @@ static int64_t osm_gettex_bytes(GLenum target, GLint level, GLenum format, GLenu
                               type);
 }
 
+/* The bytes OSMesa's glGetCompressedTexImage writes: its level's
+ * compressed size (0 for a level that is not compressed; the query's
+ * error is not the trace's). */
+static int64_t osm_getcompressed_bytes(GLenum target, GLint level)
+{
+    GLint compressed = 0, size = 0;
+    glGetTexLevelParameteriv(target, level, GL_TEXTURE_COMPRESSED, &compressed);
+    if (compressed)
+        glGetTexLevelParameteriv(target, level, GL_TEXTURE_COMPRESSED_IMAGE_SIZE, &size);
+    while (glGetError() != GL_NO_ERROR)
+        ;
+    return compressed ? size : 0;
+}
+
 /* The values OSMesa's glGetMap writes: GL_COEFF's count from its own
  * orders (evaluator targets are GL_MAP1_* and GL_MAP2_*, table 5.1). */
 static int osm_getmap_count(GLenum target, GLenum query)
@@ -192,6 +206,7 @@ static int osm_getmap_count(GLenum target, GLenum query)
 #define fs_teximage_bytes(c, w, h, f, t) osm_teximage_bytes(w, h, f, t)
 #define fs_teximage_nd_bytes(c, n, w, h, d, f, t) osm_image_nd_bytes(false, n, w, h, d, f, t)
 #define fs_gettexImage_bytes(c, tg, l, f, t) osm_gettex_bytes(tg, l, f, t)
+#define fs_getcompressed_bytes(c, tg, l) osm_getcompressed_bytes(tg, l)
 #define fs_getmap_count(c, tg, q) osm_getmap_count(tg, q)
 #define fs_pixel_map_size(c, map) osm_pixel_map_size(map)
 #define FS_OCALL_V(e) e

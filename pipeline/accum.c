@@ -114,6 +114,7 @@ static void accum_pixel(fs_context *c, GLenum op, float value, int16_t *a, uint8
 
 void fs_exec_Accum(fs_context *c, GLenum op, GLfloat value)
 {
+    fs_modelview_analyse(c);
     if (op != GL_ACCUM && op != GL_LOAD && op != GL_RETURN && op != GL_MULT && op != GL_ADD) {
         fs_error(c, GL_INVALID_ENUM);
         return;

@@ -55,6 +55,7 @@ uint32_t fs_clear_depth_value(const fs_context *c)
 
 void fs_exec_Clear(fs_context *c, GLbitfield mask)
 {
+    fs_modelview_analyse(c);
     const GLbitfield all = GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT |
                            GL_STENCIL_BUFFER_BIT | GL_ACCUM_BUFFER_BIT;
     if (mask & ~all) {

@@ -58,6 +58,7 @@ typedef struct cvert {
     float tc[FS_MAX_TEXTURE_UNITS][4]; /* the first fs_vs_setup.ntex units */
     float fog;        /* fog coordinate (fs_pvert.fog) */
     float col2[2][4]; /* secondary colour (fs_pvert.col2) */
+    float psize;      /* derived point size (fs_pvert.psize) */
     bool edge; /* the vertex's edge flag (GL 1.5 spec 2.6.2) */
 } cvert;
 
@@ -70,6 +71,7 @@ static void from_pvert(const fs_vs_setup *s, cvert *d, const fs_pvert *v)
     memcpy(d->tc, v->tc, (size_t)s->ntex * sizeof d->tc[0]);
     d->fog = v->fog;
     memcpy(d->col2, v->col2, sizeof d->col2);
+    d->psize = v->psize;
 }
 
 #define LERP(t, out, in) ((out) + (t) * ((in) - (out)))
@@ -98,6 +100,9 @@ static void interp(const fs_vs_setup *s, cvert *d, float t, const cvert *out, co
             d->col2[1][k] = LERP(t, out->col2[1][k], in->col2[1][k]);
         }
     d->fog = LERP(t, out->fog, in->fog);
+    /* The draw module's clipper interpolates every vertex output, the
+     * point size too (a GL_POINT polygon's new vertices). */
+    d->psize = LERP(t, out->psize, in->psize);
 }
 
 static void to_rvertex(fs_rvertex *r, const float *win, const float *col, const float *col2, const float (*tc)[4],
@@ -133,6 +138,7 @@ typedef struct tri_src {
     const float (*tc[3])[4];
     float fog[3];
     const float *flat_col, *flat_col2;
+    float psize[3]; /* derived point sizes, for GL_POINT polygons */
 } tri_src;
 
 static void emit3(fs_context *c, const fs_vs_setup *s, const tri_src *t, unsigned edges)
@@ -146,6 +152,8 @@ static void emit3(fs_context *c, const fs_vs_setup *s, const tri_src *t, unsigne
     for (int i = 0; i < 3; i++)
         to_rvertex(&r[i], t->win[i], (flat ? t->flat_col : t->col[i]) + 4 * side,
                    (flat ? t->flat_col2 : t->col2[i]) + 4 * side, t->tc[i], s->ntex, t->fog[i]);
+    for (int i = 0; i < 3; i++)
+        r[i].point_size = s->points_attenuated ? t->psize[i] : 0.0f;
     if (fs_render_mode_diverts(&c->rmode)) {
         fs_render_mode_triangle(c, &r[0], &r[1], &r[2]);
         return;
@@ -164,7 +172,7 @@ static void emit_cverts(fs_context *c, const fs_vs_setup *s, const cvert *a, con
 {
     const tri_src t = {{a->win, b->win, d->win}, {a->col[0], b->col[0], d->col[0]},
                        {a->col2[0], b->col2[0], d->col2[0]}, {a->tc, b->tc, d->tc},
-                       {a->fog, b->fog, d->fog}, flat_col, flat_col2};
+                       {a->fog, b->fog, d->fog}, flat_col, flat_col2, {a->psize, b->psize, d->psize}};
     emit3(c, s, &t, edges);
 }
 
@@ -185,7 +193,8 @@ void fs_emit_triangle(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0,
     const fs_pvert *f = provoking >= 0 ? pv[provoking] : NULL;
     const tri_src t = {{v0->win, v1->win, v2->win}, {v0->col[0], v1->col[0], v2->col[0]},
                        {v0->col2[0], v1->col2[0], v2->col2[0]}, {v0->tc, v1->tc, v2->tc},
-                       {v0->fog, v1->fog, v2->fog}, f ? f->col[0] : NULL, f ? f->col2[0] : NULL};
+                       {v0->fog, v1->fog, v2->fog}, f ? f->col[0] : NULL, f ? f->col2[0] : NULL,
+                       {v0->psize, v1->psize, v2->psize}};
     emit3(c, s, &t, drawn_edges(edges));
 }
 
@@ -401,8 +410,9 @@ void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)
     memcpy(r.tex, v->tc, (size_t)s->ntex * sizeof r.tex[0]);
     r.fog = v->fog;
     memcpy(r.color2, v->col2[0], sizeof r.color2);
+    r.point_size = s->points_attenuated ? v->psize : s->point_size;
     if (fs_render_mode_diverts(&c->rmode))
         fs_render_mode_point(c, &r);
     else
-        fs_raster_point(c, &r);
+        fs_raster_point_sized(c, &r, r.point_size);
 }

@@ -60,7 +60,7 @@ void fs_exec_ClipPlane(fs_context *c, GLenum plane, const GLdouble *equation)
      * in float). */
     const float p[4] = {(float)equation[0], (float)equation[1], (float)equation[2], (float)equation[3]};
     float inv[16];
-    plane_inverse(inv, c->xf.modelview[c->xf.modelview_top].m);
+    fs_matrix_invert(inv, &c->xf.modelview[c->xf.modelview_top]);
     row_times(c->xf.clip_plane[i], p, inv);
     fs_state_mark(c, GL_TRANSFORM_BIT);
 }

@@ -360,6 +360,8 @@ void fs_color_material_update(fs_context *c)
         apply_color_material(&c->lighting.material[1], c->lighting.color_material_mode, c->current.color);
 }
 
+/* Mesa's NORMALIZE_3FV, on the CPU for the light state: the squares
+ * summed left to right, 1/sqrt, a zero vector left alone. */
 static void normalize3(float v[3])
 {
     float len2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
@@ -378,6 +380,7 @@ void fs_lighting_setup(fs_context *c, fs_vs_setup *s)
     s->need_eye = L->local_viewer;
     s->normalize = c->xf.normalize;
     s->rescale = c->xf.rescale_normal;
+    s->light_object_space = false;
     memcpy(s->model_ambient, L->model_ambient, sizeof s->model_ambient);
     s->mat[0] = L->material[0];
     s->mat[1] = L->material[1];
@@ -399,25 +402,62 @@ void fs_lighting_setup(fs_context *c, fs_vs_setup *s)
         memcpy(o->spe, l->specular, 16);
         memcpy(o->pos, l->position, 16);
         memcpy(o->att, l->attenuation, sizeof o->att);
+        o->attenuated = o->att[0] != 1.0f || o->att[1] != 0.0f || o->att[2] != 0.0f;
         o->positional = l->position[3] != 0.0f;
         /* Infinite lights are spot lights too in llvmpipe (measured: piglit's
          * infinite-spot-light reads half the ambient red, its spot factor,
          * where the spec's attenuation would leave all of it). */
         o->spot = l->spot_cutoff != 180.0f;
         o->spot_exp = l->spot_exponent;
-        o->cos_cutoff = cosf(l->spot_cutoff * (float)(FS_PI / 180.0));
+        /* Mesa: the cosine in double, the direction normalised twice. */
+        o->cos_cutoff = (float)cos(l->spot_cutoff * (FS_PI / 180.0));
         memcpy(o->spot_dir, l->spot_direction, sizeof o->spot_dir);
         normalize3(o->spot_dir);
+        normalize3(o->spot_dir);
         if (o->positional) {
+            /* Mesa's _Position: the eye position divided by w. */
+            float iw = 1.0f / o->pos[3];
+            o->pos[0] *= iw; o->pos[1] *= iw; o->pos[2] *= iw;
             s->need_eye = true;
-        } else {
-            memcpy(o->vp_inf, l->position, sizeof o->vp_inf);
-            normalize3(o->vp_inf);
-            o->h_inf[0] = o->vp_inf[0];
-            o->h_inf[1] = o->vp_inf[1];
-            o->h_inf[2] = o->vp_inf[2] + 1.0f;
-            normalize3(o->h_inf);
         }
+    }
+}
+
+/* Mesa's vertex program lights in eye space when a light is positional
+ * or a spot light, with a local viewer or separate specular colour, when
+ * texture generation reads eye coordinates, or when the modelview does not
+ * preserve lengths; otherwise in object space (light.c
+ * _mesa_update_tnl_spaces): then the normal is the object's and a
+ * directional light's direction is brought back by the inverse modelview,
+ * with the eye's z axis (the half vector's) by the modelview itself.  The
+ * directional vectors are Mesa's state values, computed on the CPU. */
+void fs_lighting_spaces(fs_vs_setup *s)
+{
+    bool eye = s->need_eye || s->separate_specular || s->texgen_eye || !s->mv_rigid;
+    for (int i = 0; i < s->nlights; i++)
+        eye |= s->light[i].positional || s->light[i].spot;
+    s->light_object_space = !eye;
+    float zdir[3] = {0.0f, 0.0f, 1.0f};
+    if (!eye) {
+        zdir[0] = s->mv[2];
+        zdir[1] = s->mv[6];
+        zdir[2] = s->mv[10];
+    }
+    for (int i = 0; i < s->nlights; i++) {
+        fs_light_setup *o = &s->light[i];
+        if (o->positional)
+            continue;
+        float p[4];
+        if (eye)
+            memcpy(p, o->pos, sizeof p);
+        else
+            fs_mat_xform4(p, s->mv_inv, o->pos);
+        memcpy(o->vp_inf, p, sizeof o->vp_inf);
+        normalize3(o->vp_inf);
+        o->h_inf[0] = o->vp_inf[0] + zdir[0];
+        o->h_inf[1] = o->vp_inf[1] + zdir[1];
+        o->h_inf[2] = o->vp_inf[2] + zdir[2];
+        normalize3(o->h_inf);
     }
 }
 
@@ -426,99 +466,112 @@ static float clamp01f(float v)
     return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; /* NaN becomes 0 */
 }
 
-/* One side of the lighting equation (GL 1.5 spec 2.14.1). */
-static void light_side(const fs_vs_setup *s, const fs_material *m, const float eye[4],
-                       const float n[3], float out[4], float *spec_out)
+/* The vertex program's POW (gallivm: 0 for a zero base). */
+static float vp_pow(float x, float y)
 {
-    float s_r = 0.0f, s_g = 0.0f, s_b = 0.0f; /* the specular sums, when apart */
-    float r = m->emission[0] + m->ambient[0] * s->model_ambient[0];
-    float g = m->emission[1] + m->ambient[1] * s->model_ambient[1];
-    float b = m->emission[2] + m->ambient[2] * s->model_ambient[2];
+    return x == 0.0f ? 0.0f : powf(x, y);
+}
+
+/* One side of the lighting equation (GL 1.5 spec 2.14.1) in the
+ * operations, order and float rounding of Mesa's fixed-function vertex
+ * program (ffvertex_prog.c, compiled by gallivm with every multiply-add
+ * a product and a sum): the scene colour (emission + model ambient times
+ * ambient) collects per light the ambient product, then the diffuse
+ * product times max(n.VP, 0), then the specular product times the
+ * specular factor; a light with attenuation (distance or spot) scales the
+ * three factors of LIT first.  sign is -1 for the back face, which takes
+ * the negated dot products. */
+static void light_side(const fs_vs_setup *s, const fs_material *m, const float eye[4], const float n[3],
+                       float sign, float shin, bool shin_zero, float out[4], float *spec_out)
+{
+    float col[3], col1[3] = {0.0f, 0.0f, 0.0f};
+    for (int k = 0; k < 3; k++)
+        col[k] = s->model_ambient[k] * m->ambient[k] + m->emission[k];
+    float *cs = spec_out ? col1 : col; /* where the specular term goes */
     for (int i = 0; i < s->nlights; i++) {
         const fs_light_setup *l = &s->light[i];
-        float vp[3], h[3], att = 1.0f;
+        float vp[3], dist = 0.0f, d2 = 0.0f;
         if (l->positional) {
-            /* The vector to the light, from a homogeneous eye position. */
-            float lx = l->pos[0], ly = l->pos[1], lz = l->pos[2];
-            float ex = eye[0], ey = eye[1], ez = eye[2];
-            if (eye[3] != 1.0f && eye[3] != 0.0f) {
-                float iw = 1.0f / eye[3];
-                ex *= iw; ey *= iw; ez *= iw;
-            }
-            if (l->pos[3] != 1.0f) {
-                float iw = 1.0f / l->pos[3];
-                lx *= iw; ly *= iw; lz *= iw;
-            }
-            vp[0] = lx - ex; vp[1] = ly - ey; vp[2] = lz - ez;
-            float d2 = vp[0] * vp[0] + vp[1] * vp[1] + vp[2] * vp[2];
-            float d = sqrtf(d2);
-            if (d > 0.0f) {
-                float inv = 1.0f / d;
-                vp[0] *= inv; vp[1] *= inv; vp[2] *= inv;
-            }
-            att = 1.0f / (l->att[0] + l->att[1] * d + l->att[2] * d2);
+            vp[0] = l->pos[0] - eye[0];
+            vp[1] = l->pos[1] - eye[1];
+            vp[2] = l->pos[2] - eye[2];
+            d2 = fs_vs_dot3(vp, vp);
+            dist = 1.0f / sqrtf(d2); /* RSQ */
+            vp[0] *= dist; vp[1] *= dist; vp[2] *= dist;
         } else {
-            vp[0] = l->vp_inf[0]; vp[1] = l->vp_inf[1]; vp[2] = l->vp_inf[2];
+            memcpy(vp, l->vp_inf, sizeof vp);
         }
+        bool has_att = false;
+        float att = 1.0f;
         if (l->spot) {
-            /* The direction from the light to the vertex against the
-             * spot direction (2.14.1); for an infinite light the light's
-             * own direction. */
-            float sd = -(vp[0] * l->spot_dir[0] + vp[1] * l->spot_dir[1] + vp[2] * l->spot_dir[2]);
-            if (sd < l->cos_cutoff)
-                continue; /* outside the cone: the whole term is zero */
-            att *= l->spot_exp == 0.0f ? 1.0f : powf(sd, l->spot_exp);
+            const float nvp[3] = {-vp[0], -vp[1], -vp[2]};
+            float sp = fs_vs_dot3(nvp, l->spot_dir);
+            float slt = l->cos_cutoff < sp ? 1.0f : 0.0f;
+            att = slt * vp_pow(fabsf(sp), l->spot_exp);
+            has_att = true;
         }
-        float ar = l->amb[0] * m->ambient[0], ag = l->amb[1] * m->ambient[1], ab = l->amb[2] * m->ambient[2];
-        float ndotvp = n[0] * vp[0] + n[1] * vp[1] + n[2] * vp[2];
-        float dr = 0, dg = 0, db = 0, sr = 0, sg = 0, sb = 0;
-        if (ndotvp > 0.0f) {
-            dr = ndotvp * l->dif[0] * m->diffuse[0];
-            dg = ndotvp * l->dif[1] * m->diffuse[1];
-            db = ndotvp * l->dif[2] * m->diffuse[2];
-            if (l->positional || s->local_viewer) {
-                if (s->local_viewer) {
-                    float v[3] = {-eye[0], -eye[1], -eye[2]};
-                    normalize3(v);
-                    h[0] = vp[0] + v[0]; h[1] = vp[1] + v[1]; h[2] = vp[2] + v[2];
-                } else {
-                    h[0] = vp[0]; h[1] = vp[1]; h[2] = vp[2] + 1.0f;
-                }
-                normalize3(h);
+        if (l->attenuated && l->positional) {
+            /* The program's (r (1/r), 1/r, (1/r)^2) from r = RSQ(d^2),
+             * dotted with the three factors, then its reciprocal; NIR's
+             * algebraic rules make 1/r a square root of d^2 and its
+             * square d^2 itself (measured on OSMesa,
+             * tests/test_lighting_order.c). */
+            float d = sqrtf(d2);
+            const float dv[3] = {dist * d, d, d2};
+            float q = 1.0f / fs_vs_dot3(l->att, dv);
+            att = has_att ? q * att : q;
+            has_att = true;
+        }
+        float half[3];
+        if (!shin_zero) {
+            if (s->local_viewer) {
+                float eh[3] = {eye[0], eye[1], eye[2]};
+                fs_vs_normalize3(eh);
+                half[0] = vp[0] - eh[0]; half[1] = vp[1] - eh[1]; half[2] = vp[2] - eh[2];
+                fs_vs_normalize3(half);
+            } else if (!l->positional) {
+                memcpy(half, l->h_inf, sizeof half);
             } else {
-                h[0] = l->h_inf[0]; h[1] = l->h_inf[1]; h[2] = l->h_inf[2];
-            }
-            float ndoth = n[0] * h[0] + n[1] * h[1] + n[2] * h[2];
-            if (ndoth > 0.0f) {
-                float spec = m->shininess == 0.0f ? 1.0f : powf(ndoth, m->shininess);
-                sr = spec * l->spe[0] * m->specular[0];
-                sg = spec * l->spe[1] * m->specular[1];
-                sb = spec * l->spe[2] * m->specular[2];
+                half[0] = vp[0]; half[1] = vp[1]; half[2] = vp[2] + 1.0f;
+                fs_vs_normalize3(half);
             }
         }
-        if (spec_out) {
-            r += att * (ar + dr);
-            g += att * (ag + dg);
-            b += att * (ab + db);
-            s_r += att * sr;
-            s_g += att * sg;
-            s_b += att * sb;
-            continue;
+        float nvp = sign * fs_vs_dot3(n, vp);
+        /* Without a shininess the program's dot products are all n.VP. */
+        float nh = shin_zero ? nvp : sign * fs_vs_dot3(n, half);
+        float expo = shin_zero ? nvp : shin;
+        float lx = 1.0f, ly, lz;
+        if (has_att || !shin_zero) {
+            /* LIT: (1, max(n.VP, 0), n.VP > 0 ? pow(max(n.H, 0), e) : 0);
+             * the exponent clamped to [-128, 128]. */
+            ly = nvp > 0.0f ? nvp : 0.0f;
+            float e = expo < -128.0f ? -128.0f : expo > 128.0f ? 128.0f : expo;
+            lz = nvp > 0.0f ? vp_pow(nh > 0.0f ? nh : 0.0f, e) : 0.0f;
+        } else {
+            ly = nvp > 0.0f ? nvp : 0.0f;
+            lz = 0.0f < nvp ? 1.0f : 0.0f;
         }
-        r += att * (ar + dr + sr);
-        g += att * (ag + dg + sg);
-        b += att * (ab + db + sb);
+        for (int k = 0; k < 3; k++) {
+            float amb = l->amb[k] * m->ambient[k], dif = l->dif[k] * m->diffuse[k];
+            float spe = l->spe[k] * m->specular[k];
+            if (has_att)
+                col[k] = (lx * att) * amb + col[k];
+            else
+                col[k] = amb + col[k];
+            col[k] = (has_att ? ly * att : ly) * dif + col[k];
+            cs[k] = (has_att ? lz * att : lz) * spe + cs[k];
+        }
     }
     if (spec_out) {
         /* GL_SEPARATE_SPECULAR_COLOR: the secondary colour, alpha 1. */
-        spec_out[0] = clamp01f(s_r);
-        spec_out[1] = clamp01f(s_g);
-        spec_out[2] = clamp01f(s_b);
+        spec_out[0] = clamp01f(col1[0]);
+        spec_out[1] = clamp01f(col1[1]);
+        spec_out[2] = clamp01f(col1[2]);
         spec_out[3] = 1.0f;
     }
-    out[0] = clamp01f(r);
-    out[1] = clamp01f(g);
-    out[2] = clamp01f(b);
+    out[0] = clamp01f(col[0]);
+    out[1] = clamp01f(col[1]);
+    out[2] = clamp01f(col[2]);
     out[3] = clamp01f(m->diffuse[3]);
 }
 
@@ -537,9 +590,10 @@ void fs_light_vertex(const fs_vs_setup *s, const float eye[4], const float n[3],
         }
     }
     bool apart = s->separate_specular;
-    light_side(s, mp[0], eye, n, out[0], apart ? spec[0] : NULL);
-    if (s->two_side) {
-        float nb[3] = {-n[0], -n[1], -n[2]};
-        light_side(s, mp[1], eye, nb, out[1], apart ? spec[1] : NULL);
-    }
+    /* The program has no specular factor when no shininess is set (front,
+     * or back with two sides: ffvertex_prog.c's material_shininess_is_zero). */
+    bool shin_zero = mp[0]->shininess == 0.0f && !(s->two_side && mp[1]->shininess != 0.0f);
+    light_side(s, mp[0], eye, n, 1.0f, mp[0]->shininess, shin_zero, out[0], apart ? spec[0] : NULL);
+    if (s->two_side)
+        light_side(s, mp[1], eye, n, -1.0f, mp[1]->shininess, shin_zero, out[1], apart ? spec[1] : NULL);
 }

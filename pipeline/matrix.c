@@ -90,10 +90,42 @@ const fs_matrix *fs_current_matrix(const fs_context *c, GLenum mode)
     }
 }
 
-static void mult(fs_context *c, const float m[16])
+/* Multiplies the current matrix by m, adding Mesa's flags for it
+ * (matrix_multf; glMultMatrix marks the matrix for analysis from its
+ * values). */
+static void mult(fs_context *c, const float m[16], unsigned flags)
 {
     fs_matrix *t = top(c);
     fs_mat_mul(t->m, t->m, m);
+    t->flags = (t->flags | flags) & ~(unsigned)FS_MATF_IDENTITY;
+}
+
+/* Mesa skips a glMultMatrix by the identity altogether (matrix.c
+ * matrix_mult), leaving the flags as they were; the test compares values,
+ * so -0 passes for 0 (measured: sierpinski3d multiplies by such a matrix,
+ * and llvmpipe's lighting then follows the flags of the commands around
+ * it, tests/test_lighting_order.c). */
+static void mult_matrix(fs_context *c, const float m[16])
+{
+    float id[16];
+    fs_mat_identity(id);
+    bool same = true;
+    for (int i = 0; i < 16; i++)
+        same &= m[i] == id[i];
+    if (same)
+        return;
+    mult(c, m, FS_MATF_GENERAL | FS_MATF_DIRTY);
+}
+
+/* glLoadMatrix: Mesa changes nothing when the matrix is the same, else
+ * analyses the new one from its values. */
+static void load_matrix(fs_context *c, const float m[16])
+{
+    fs_matrix *t = top(c);
+    if (memcmp(t->m, m, sizeof t->m) == 0)
+        return;
+    memcpy(t->m, m, sizeof t->m);
+    t->flags = FS_MATF_GENERAL | FS_MATF_DIRTY;
 }
 
 void fs_exec_MatrixMode(fs_context *c, GLenum mode)
@@ -107,26 +139,32 @@ void fs_exec_MatrixMode(fs_context *c, GLenum mode)
 
 void fs_exec_LoadIdentity(fs_context *c)
 {
-    fs_mat_identity(top(c)->m);
+    fs_matrix *t = top(c);
+    fs_mat_identity(t->m);
+    /* Mesa's _math_matrix_set_identity clears the dirty bits only. */
+    t->flags = (t->flags & ~(unsigned)FS_MATF_DIRTY) | FS_MATF_IDENTITY;
 }
 
 void fs_exec_LoadMatrixf(fs_context *c, const GLfloat *m)
 {
-    memcpy(top(c)->m, m, 16 * sizeof(float));
+    float f[16];
+    memcpy(f, m, sizeof f);
+    load_matrix(c, f);
 }
 
 void fs_exec_LoadMatrixd(fs_context *c, const GLdouble *m)
 {
-    float *t = top(c)->m;
+    float f[16];
     for (int i = 0; i < 16; i++)
-        t[i] = (float)m[i];
+        f[i] = (float)m[i];
+    load_matrix(c, f);
 }
 
 void fs_exec_MultMatrixf(fs_context *c, const GLfloat *m)
 {
     float f[16];
     memcpy(f, m, sizeof f);
-    mult(c, f);
+    mult_matrix(c, f);
 }
 
 void fs_exec_MultMatrixd(fs_context *c, const GLdouble *m)
@@ -134,7 +172,7 @@ void fs_exec_MultMatrixd(fs_context *c, const GLdouble *m)
     float f[16];
     for (int i = 0; i < 16; i++)
         f[i] = (float)m[i];
-    mult(c, f);
+    mult_matrix(c, f);
 }
 
 /* GL 1.3's transposed forms (2.11.2): LoadTransposeMatrix(m) is
@@ -149,9 +187,9 @@ static void transposed(fs_context *c, const GLfloat *mf, const GLdouble *md, boo
         t[i] = mf ? mf[k] : (float)md[k];
     }
     if (load)
-        fs_exec_LoadMatrixf(c, t);
+        load_matrix(c, t);
     else
-        mult(c, t);
+        mult_matrix(c, t);
 }
 
 void fs_exec_LoadTransposeMatrixf(fs_context *c, const GLfloat *m) { transposed(c, m, NULL, true); }
@@ -168,6 +206,7 @@ void fs_exec_Translatef(fs_context *c, GLfloat x, GLfloat y, GLfloat z)
     m[13] = m[1] * x + m[5] * y + m[9] * z + m[13];
     m[14] = m[2] * x + m[6] * y + m[10] * z + m[14];
     m[15] = m[3] * x + m[7] * y + m[11] * z + m[15];
+    top(c)->flags = (top(c)->flags | FS_MATF_TRANSLATION) & ~(unsigned)FS_MATF_IDENTITY;
 }
 
 void fs_exec_Translated(fs_context *c, GLdouble x, GLdouble y, GLdouble z)
@@ -182,6 +221,10 @@ void fs_exec_Scalef(fs_context *c, GLfloat x, GLfloat y, GLfloat z)
     m[1] *= x; m[5] *= y; m[9] *= z;
     m[2] *= x; m[6] *= y; m[10] *= z;
     m[3] *= x; m[7] *= y; m[11] *= z;
+    /* Mesa: uniform when the factors agree within 1e-8. */
+    bool uniform = fabsf(x - y) < 1e-8f && fabsf(x - z) < 1e-8f;
+    top(c)->flags = (top(c)->flags | (uniform ? FS_MATF_UNIFORM_SCALE : FS_MATF_GENERAL_SCALE)) &
+                    ~(unsigned)FS_MATF_IDENTITY;
 }
 
 void fs_exec_Scaled(fs_context *c, GLdouble x, GLdouble y, GLdouble z)
@@ -236,7 +279,7 @@ void fs_exec_Rotatef(fs_context *c, GLfloat angle, GLfloat x, GLfloat y, GLfloat
         M_(2, 2) = (one_c * zz) + co;
     }
 #undef M_
-    mult(c, m);
+    mult(c, m, FS_MATF_ROTATION);
 }
 
 void fs_exec_Rotated(fs_context *c, GLdouble angle, GLdouble x, GLdouble y, GLdouble z)
@@ -297,7 +340,7 @@ void fs_exec_Frustum(fs_context *c, GLdouble left, GLdouble right, GLdouble bott
     m[10] = -(f + n) / (f - n);
     m[11] = -1.0f;
     m[14] = -(2.0f * f * n) / (f - n);
-    mult(c, m);
+    mult(c, m, FS_MATF_PERSPECTIVE);
 }
 
 void fs_exec_Ortho(fs_context *c, GLdouble left, GLdouble right, GLdouble bottom, GLdouble top_,
@@ -317,5 +360,5 @@ void fs_exec_Ortho(fs_context *c, GLdouble left, GLdouble right, GLdouble bottom
     m[10] = -2.0f / (f - n);
     m[14] = -(f + n) / (f - n);
     m[15] = 1.0f;
-    mult(c, m);
+    mult(c, m, FS_MATF_GENERAL_SCALE | FS_MATF_TRANSLATION);
 }

@@ -23,7 +23,10 @@ enum mat_class { M_IDENTITY, M_2D_NO_ROT, M_3D_NO_ROT, M_2D, M_3D, M_PERSPECTIVE
 
 /* Properties of the upper 3x3 (Mesa's matrix flags, the ones inversion
  * reads). */
-enum { F_TRANSLATION = 1, F_ROTATION = 2, F_UNIFORM_SCALE = 4, F_GENERAL_SCALE = 8, F_GENERAL_3D = 16 };
+enum {
+    F_TRANSLATION = FS_MATF_TRANSLATION, F_ROTATION = FS_MATF_ROTATION, F_UNIFORM_SCALE = FS_MATF_UNIFORM_SCALE,
+    F_GENERAL_SCALE = FS_MATF_GENERAL_SCALE, F_GENERAL_3D = FS_MATF_GENERAL_3D
+};
 
 static bool zeros(const float m[16], const int *idx, int n)
 {
@@ -233,20 +236,114 @@ static bool invert_general(float out[16], const float m[16])
     return true;
 }
 
-bool fs_mat_invert_gl(float out[16], const float m[16])
+/* Inverts m of class cls with flags (a singular matrix gives the
+ * identity, as Mesa leaves it). */
+static void invert_class(float out[16], const float m[16], enum mat_class cls, unsigned flags)
 {
-    unsigned flags;
     bool ok;
-    const enum mat_class cls = classify(m, &flags);
     switch (cls) {
-    case M_IDENTITY: fs_mat_identity(out); return true;
+    case M_IDENTITY: fs_mat_identity(out); return;
     case M_2D_NO_ROT: ok = invert_no_rot(out, m, 2, flags); break;
     case M_3D_NO_ROT: ok = invert_no_rot(out, m, 3, flags); break;
     case M_2D: case M_3D: ok = invert_3d(out, m, flags); break;
     default: ok = invert_general(out, m); break;
     }
     if (!ok)
-        fs_mat_identity(out); /* singular: the identity, as Mesa leaves it */
-    /* Length preserving: a rotation and translation, nothing else. */
-    return (cls == M_2D || cls == M_3D) && !(flags & ~(unsigned)(F_ROTATION | F_TRANSLATION));
+        fs_mat_identity(out);
+}
+
+/* Length preserving: a rotation and translation, nothing else (Mesa's
+ * _math_matrix_is_length_preserving, on the flags). */
+static bool length_preserving(unsigned flags)
+{
+    return !(flags & ~(unsigned)(F_ROTATION | F_TRANSLATION));
+}
+
+/* The flags of Mesa's analysis from the values (analyse_from_scratch):
+ * classify's, with the scale of a matrix without rotation and the
+ * perspective and general classes' own. */
+static unsigned value_flags(const float m[16], enum mat_class cls, unsigned flags)
+{
+    const float tol = sq(1e-6f);
+    switch (cls) {
+    case M_2D_NO_ROT:
+        if (m[0] != 1.0f || m[5] != 1.0f)
+            flags |= F_GENERAL_SCALE;
+        break;
+    case M_3D_NO_ROT:
+        if (sq(m[0] - m[5]) < tol && sq(m[0] - m[10]) < tol) {
+            if (sq(m[0] - 1.0f) > tol)
+                flags |= F_UNIFORM_SCALE;
+        } else {
+            flags |= F_GENERAL_SCALE;
+        }
+        break;
+    case M_PERSPECTIVE:
+    case M_GENERAL:
+        flags |= FS_MATF_GENERAL;
+        break;
+    default:
+        break;
+    }
+    return flags;
+}
+
+bool fs_mat_invert_gl(float out[16], const float m[16])
+{
+    unsigned flags;
+    const enum mat_class cls = classify(m, &flags);
+    invert_class(out, m, cls, flags);
+    return length_preserving(value_flags(m, cls, flags));
+}
+
+/* Mesa's analysis from the flags (analyse_from_flags): the class the
+ * commands that built the matrix imply, the values deciding only between
+ * the 2D and 3D forms. */
+static enum mat_class flags_class(const float m[16], unsigned flags)
+{
+    const unsigned geom = flags & (unsigned)(F_TRANSLATION | F_ROTATION | F_UNIFORM_SCALE | F_GENERAL_SCALE |
+                                             F_GENERAL_3D | FS_MATF_PERSPECTIVE | FS_MATF_GENERAL);
+    if (geom == 0)
+        return M_IDENTITY;
+    if (!(geom & ~(unsigned)(F_TRANSLATION | F_UNIFORM_SCALE | F_GENERAL_SCALE)))
+        return m[10] == 1.0f && m[14] == 0.0f ? M_2D_NO_ROT : M_3D_NO_ROT;
+    if (!(geom & ~(unsigned)(F_TRANSLATION | F_ROTATION | F_UNIFORM_SCALE | F_GENERAL_SCALE | F_GENERAL_3D)))
+        return m[8] == 0.0f && m[9] == 0.0f && m[2] == 0.0f && m[6] == 0.0f && m[10] == 1.0f && m[14] == 0.0f
+                   ? M_2D
+                   : M_3D;
+    return M_GENERAL; /* Mesa's perspective class has its own inversion: not modelled */
+}
+
+/* Mesa's analysis of a matrix whose values decide (analyse_from_scratch):
+ * its class, and its flags replaced by the values'. */
+static enum mat_class analyse(fs_matrix *mx)
+{
+    unsigned flags;
+    const enum mat_class cls = classify(mx->m, &flags);
+    mx->flags = value_flags(mx->m, cls, flags);
+    return cls;
+}
+
+void fs_modelview_analyse(fs_context *c)
+{
+    fs_matrix *mx = &c->xf.modelview[c->xf.modelview_top];
+    if (mx->flags & FS_MATF_DIRTY)
+        (void)analyse(mx);
+}
+
+bool fs_matrix_invert(float out[16], fs_matrix *mx)
+{
+    const float *m = mx->m;
+    if (mx->flags & FS_MATF_DIRTY) {
+        const enum mat_class cls = analyse(mx);
+        invert_class(out, m, cls, mx->flags);
+        return length_preserving(mx->flags);
+    }
+    if (mx->flags & FS_MATF_IDENTITY) {
+        fs_mat_identity(out); /* glLoadIdentity's inverse, whatever the flags */
+        return length_preserving(mx->flags);
+    }
+    unsigned flags = mx->flags;
+    invert_class(out, m, flags_class(m, flags), flags);
+    return length_preserving(flags);
 }

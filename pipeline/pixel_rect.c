@@ -110,6 +110,7 @@ static bool bitmap_frag(fs_context *c, const void *user, int x, int y, float rgb
 void fs_exec_Bitmap(fs_context *c, GLsizei width, GLsizei height, GLfloat xorig, GLfloat yorig, GLfloat xmove,
                     GLfloat ymove, const GLubyte *bitmap)
 {
+    fs_modelview_analyse(c);
     if (width < 0 || height < 0) {
         fs_error(c, GL_INVALID_VALUE);
         return;
@@ -292,6 +293,7 @@ static void draw_image(fs_context *c, image_src *m)
 void fs_exec_DrawPixels(fs_context *c, GLsizei width, GLsizei height, GLenum format, GLenum type,
                         const GLvoid *pixels)
 {
+    fs_modelview_analyse(c);
     GLenum err = drawpixels_error(c, width, height, format, type);
     if (err != GL_NO_ERROR) {
         fs_error(c, err);
@@ -351,6 +353,7 @@ static void *copy_source(const fs_context *c, image_src *m, GLint x, GLint y)
 
 void fs_exec_CopyPixels(fs_context *c, GLint x, GLint y, GLsizei width, GLsizei height, GLenum type)
 {
+    fs_modelview_analyse(c);
     int kind = type == GL_COLOR ? FS_PIXEL_COLOR : type == GL_DEPTH ? FS_PIXEL_DEPTH
              : type == GL_STENCIL ? FS_PIXEL_STENCIL : 0;
     if (!kind) {

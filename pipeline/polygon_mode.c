@@ -100,7 +100,8 @@ void fs_raster_polygon(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1
     case GL_POINT:
         for (int i = 0; i < 3; i++)
             if (edges & (1u << i))
-                fs_raster_point(c, &o[i]);
+                /* With attenuation, each vertex's derived size (3.3). */
+                fs_raster_point_sized(c, &o[i], fs_point_attenuated(r) ? o[i].point_size : fs_point_size(r));
         break;
     default:
         fs_raster_triangle(c, &o[0], &o[1], &o[2]);

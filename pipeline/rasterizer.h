@@ -50,6 +50,10 @@ typedef struct fs_rvertex {
     float fog;
     /* The secondary colour (3.9), read only while interpolate_color2 is set. */
     float color2[4];
+    /* The vertex's derived point size (GL 1.5 spec 3.3), set by the vertex
+     * stage and read only for points while the distance attenuation is on
+     * (fs_point_attenuated). */
+    float point_size;
 } fs_rvertex;
 
 /* One texture unit's coordinates in a quad. */
@@ -108,6 +112,16 @@ typedef struct fs_raster_state {
     float offset_factor, offset_units;
     GLenum polygon_mode[2];     /* front, back: GL_FILL */
     float point_size, line_width;
+    /* GL 1.4 point parameters (GL 1.5 spec 3.3, pipeline/point_state.c):
+     * GL_POINT_SIZE_MIN, _MAX, GL_POINT_FADE_THRESHOLD_SIZE and the
+     * distance attenuation's a, b, c; and GL 2.0's point sprites (GL 2.0
+     * spec 3.3): GL_POINT_SPRITE, GL_POINT_SPRITE_COORD_ORIGIN and each
+     * unit's GL_COORD_REPLACE (bit u). */
+    float point_size_min, point_size_max, point_fade_threshold;
+    float point_atten[3];
+    bool point_sprite;
+    GLenum sprite_origin;
+    unsigned coord_replace;
     /* GL_LINE_SMOOTH and GL_POINT_SMOOTH (3.4.4, 3.3.1): llvmpipe's
      * coverage (line_smooth.c, rasterize_point.c). */
     bool line_smooth, point_smooth;
@@ -235,4 +249,13 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
 void fs_raster_triangle_dropped(fs_context *c, const float x[3], const float y_raster[3]);
 void fs_raster_line(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1);
 void fs_raster_point(fs_context *c, const fs_rvertex *v);
+/* The same with the point's size given (fs_raster_point takes
+ * fs_point_size's): a size the vertex stage derived (point_state.c). */
+void fs_raster_point_sized(fs_context *c, const fs_rvertex *v, float size);
+/* point_state.c: whether the distance attenuation is not (1, 0, 0), so
+ * each vertex has its own size (GL 1.5 spec 3.3), and the size of a point
+ * without attenuation: GL_POINT_SIZE clamped to [GL_POINT_SIZE_MIN,
+ * GL_POINT_SIZE_MAX]. */
+bool fs_point_attenuated(const fs_raster_state *r);
+float fs_point_size(const fs_raster_state *r);
 #endif

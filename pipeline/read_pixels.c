@@ -17,6 +17,7 @@ int64_t fs_readpixels_bytes(fs_context *c, GLsizei w, GLsizei h, GLenum format, 
 void fs_exec_ReadPixels(fs_context *c, GLint x, GLint y, GLsizei width, GLsizei height,
                         GLenum format, GLenum type, GLvoid *pixels)
 {
+    fs_modelview_analyse(c);
     GLenum err = fs_pixel_check(format, type);
     if (err == GL_INVALID_ENUM) {
         fs_error(c, GL_INVALID_ENUM);

@@ -95,7 +95,7 @@ static void texgen_v(fs_context *c, GLenum coord, GLenum pname, const float p[4]
     case GL_EYE_PLANE: {
         /* (p1 p2 p3 p4) M^-1 with M the modelview now (2.11.4). */
         float inv[16];
-        fs_mat_invert_gl(inv, c->xf.modelview[c->xf.modelview_top].m);
+        fs_matrix_invert(inv, &c->xf.modelview[c->xf.modelview_top]);
         for (int i = 0; i < 4; i++)
             g->eye_plane[i] = p[0] * inv[4 * i] + p[1] * inv[4 * i + 1] + p[2] * inv[4 * i + 2] + p[3] * inv[4 * i + 3];
         break;
@@ -200,13 +200,9 @@ void fs_exec_GetTexGeniv(fs_context *c, GLenum coord, GLenum pname, GLint *param
  * modelview that preserves lengths (as Mesa's normal scale). */
 static void normal_matrix(fs_vs_setup *s)
 {
-    float inv[16];
-    const bool rigid = fs_mat_invert_gl(inv, s->mv);
-    for (int r = 0; r < 3; r++)
-        for (int k = 0; k < 3; k++)
-            s->texgen_nmat[r * 3 + k] = inv[r * 4 + k];
-    float f = inv[2] * inv[2] + inv[6] * inv[6] + inv[10] * inv[10];
-    s->texgen_nscale = rigid || f < 1e-12f ? 1.0f : 1.0f / sqrtf(f);
+    /* The modelview's inverse as fs_vs_prepare analysed it (Mesa's). */
+    memcpy(s->texgen_nmat, s->nmat, sizeof s->texgen_nmat);
+    s->texgen_nscale = s->nscale;
 }
 
 void fs_texgen_setup(fs_context *c, fs_vs_setup *s)

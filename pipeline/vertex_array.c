@@ -484,8 +484,29 @@ void fs_vs_constant_attribs(fs_context *c, const fs_vs_setup *s, unsigned varyin
 void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
 {
     const fs_transform_state *x = &c->xf;
-    const float *mv = x->modelview[x->modelview_top].m;
+    fs_modelview_analyse(c);
+    fs_matrix *mvm = &c->xf.modelview[x->modelview_top];
+    const float *mv = mvm->m;
     memcpy(s->mv, mv, sizeof s->mv);
+    /* Mesa analyses the modelview at each draw; its inverse (the normal
+     * matrix, lighting's object space, texgen) follows the analysis.
+     * Draws of one object share a modelview: invert it once (the
+     * persistent setup of the context keeps the last one). */
+    if (!(s->nmat_valid && s->nmat_flags == mvm->flags && memcmp(s->nmat_of, mv, sizeof s->nmat_of) == 0)) {
+        s->mv_rigid = fs_matrix_invert(s->mv_inv, mvm);
+        memcpy(s->nmat_of, mv, sizeof s->nmat_of);
+        s->nmat_flags = mvm->flags;
+        s->nmat_valid = true;
+        /* The inverse's rows are the normal matrix; GL_RESCALE_NORMAL's
+         * factor is 1 / |third row|, 1 for a length-preserving modelview
+         * (Mesa's normal scale). */
+        for (int r = 0; r < 3; r++)
+            for (int k = 0; k < 3; k++)
+                s->nmat[r * 3 + k] = s->mv_inv[r * 4 + k];
+        const float *inv = s->mv_inv;
+        float d = inv[2] * inv[2] + inv[6] * inv[6] + inv[10] * inv[10];
+        s->nscale = s->mv_rigid || d < 1e-12f ? 1.0f : 1.0f / sqrtf(d);
+    }
     fs_mat_mul(s->mvp, x->projection[x->projection_top].m, mv);
     float id[16];
     fs_mat_identity(id);
@@ -510,22 +531,24 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     s->fog = c->st.fog.enabled;
     s->fog_from_coord = c->st.fog.coord_src == GL_FOG_COORD;
     c->raster.interpolate_fog = s->fog;
+    const fs_raster_state *r = &c->raster;
+    s->points_attenuated = fs_point_attenuated(r);
+    memcpy(s->point_atten, r->point_atten, sizeof s->point_atten);
+    s->point_size = s->points_attenuated ? r->point_size : fs_point_size(r);
+    /* Mesa's vertex program clamps to the bounds narrowed to the
+     * implementation's range, [1, 255] for llvmpipe whichever kind of
+     * point (GL_POINT_SIZE_RANGE and GL_ALIASED_POINT_SIZE_RANGE agree):
+     * measured on OSMesa, a smooth point attenuated below size 1 is drawn
+     * as size 1. */
+    s->point_size_min = r->point_size_min > 1.0f ? r->point_size_min : 1.0f;
+    s->point_size_max = r->point_size_max < 255.0f ? r->point_size_max : 255.0f;
     fs_color_sum_setup(c, s);
     fs_lighting_setup(c, s);
     fs_texgen_setup(c, s);
     /* Draws of one object share a modelview: invert it once (the
      * persistent setup of the context keeps the last one). */
-    if (s->lighting && !(s->nmat_valid && memcmp(s->nmat_of, mv, sizeof s->nmat_of) == 0)) {
-        memcpy(s->nmat_of, mv, sizeof s->nmat_of);
-        s->nmat_valid = true;
-        float inv[16];
-        fs_mat_invert(inv, mv);
-        for (int r = 0; r < 3; r++)
-            for (int k = 0; k < 3; k++)
-                s->nmat[r * 3 + k] = inv[r * 4 + k];
-        float d = inv[2] * inv[2] + inv[6] * inv[6] + inv[10] * inv[10];
-        s->nscale = d > 0.0f ? 1.0f / sqrtf(d) : 1.0f;
-    }
+    if (s->lighting)
+        fs_lighting_spaces(s);
 }
 
 static float clamp01(float v)
@@ -590,6 +613,8 @@ static inline void vs_attributes(const fs_vs_setup *s, const fs_ivert *v, fs_pve
     }
     if (s->fog)
         o->fog = s->fog_from_coord ? fabsf(v->fogc) : vs_fog_coord(s, v);
+    /* The attenuation's eye distance is the fog's |z_e| (point_state.c). */
+    o->psize = s->points_attenuated ? fs_point_derived_size(s, vs_fog_coord(s, v)) : s->point_size;
     if (s->color_sum && !s->lighting)
         for (int k = 0; k < 4; k++)
             o->col2[0][k] = clamp01(v->col2[k]);

@@ -8,6 +8,7 @@
 #ifndef FS_VERTEX_INTERNAL_H
 #define FS_VERTEX_INTERNAL_H
 #include <math.h>
+#include <string.h>
 #include <stddef.h>
 #include <stdint.h>
 #include "context.h"
@@ -65,6 +66,9 @@ typedef struct fs_pvert {
     /* The secondary colour (3.9), front and back, clamped, set while
      * fs_vs_setup.color_sum is (pipeline/color_sum.c). */
     float col2[2][4];
+    /* The point size: derived from the eye distance (GL 1.5 spec 3.3)
+     * while fs_vs_setup.points_attenuated, else fs_vs_setup.point_size. */
+    float psize;
     unsigned mask;    /* bit i: outside clip plane i (clip.c's order; bits
                          FS_CLIP_USER_BIT + i: user plane i) */
     bool lazy;        /* col and tc not computed yet (fs_vs_process under a tile mask) */
@@ -72,12 +76,15 @@ typedef struct fs_pvert {
 
 typedef struct fs_light_setup {
     float amb[4], dif[4], spe[4];   /* light colours (material applied per vertex) */
-    float pos[4];                   /* eye position */
-    float vp_inf[3], h_inf[3];      /* normalised direction and half vector, directional lights */
+    float pos[4];                   /* eye position, x y z divided by w when positional */
+    /* Directional lights: the normalised direction and half vector, in eye
+     * or object space (fs_vs_setup.light_object_space). */
+    float vp_inf[3], h_inf[3];
     float spot_dir[3];              /* normalised */
     float cos_cutoff, spot_exp;
     float att[3];
     bool positional, spot;
+    bool attenuated;                /* attenuation other than (1, 0, 0) */
 } fs_light_setup;
 
 /* State derived once per draw from the GL state. */
@@ -87,6 +94,12 @@ typedef struct fs_vs_setup {
     float nmat[9];      /* rows of the inverse transpose (upper 3x3) */
     float nscale;       /* GL_RESCALE_NORMAL factor */
     float nmat_of[16];  /* the modelview nmat and nscale were computed from */
+    unsigned nmat_flags; /* and its flags (fs_matrix.flags) */
+    float mv_inv[16];   /* its inverse (fs_mat_invert_gl) */
+    bool mv_rigid;      /* the modelview preserves lengths (fs_mat_invert_gl) */
+    /* Lighting in object space (lighting.c, fs_lighting_spaces): normals
+     * untransformed, directional lights brought to the object. */
+    bool light_object_space;
     bool has_fma;       /* the CPU has FMA: fs_vs_process's FMA variant */
     bool has_avx2;      /* ... and AVX2: positions 8 at a time */
     bool nmat_valid;
@@ -131,6 +144,12 @@ typedef struct fs_vs_setup {
      * pays for them) and each one's clip-space coefficients. */
     unsigned ucp_mask;
     float ucp[FS_MAX_CLIP_PLANES][4];
+    /* Point distance attenuation (3.3, point_state.c): on (the
+     * coefficients are not (1, 0, 0)), the coefficients, GL_POINT_SIZE
+     * (attenuated as it is, clamped when not: point_state.c) and the
+     * bounds. */
+    bool points_attenuated;
+    float point_atten[3], point_size, point_size_min, point_size_max;
 } fs_vs_setup;
 
 /* The material from batch vertex `start` on, after a glMaterial between
@@ -186,10 +205,25 @@ bool fs_vs_reserve_edge(fs_context *c, size_t n); /* iv_edge */
 void fs_mat_identity(float m[16]);
 void fs_mat_mul(float r[16], const float a[16], const float b[16]); /* r = a * b */
 bool fs_mat_invert(float r[16], const float m[16]);
+/* Mesa's matrix flags (m_matrix.c), kept in fs_matrix.flags by the
+ * matrix commands: what built the matrix (the geometry bits), that its
+ * values decide instead (DIRTY: after glLoadMatrix or glMultMatrix, until
+ * the next analysis), that it is the identity of glLoadIdentity (which
+ * keeps the geometry bits: Mesa clears only its dirty bits). */
+enum {
+    FS_MATF_TRANSLATION = 1, FS_MATF_ROTATION = 2, FS_MATF_UNIFORM_SCALE = 4, FS_MATF_GENERAL_SCALE = 8,
+    FS_MATF_GENERAL_3D = 16, FS_MATF_PERSPECTIVE = 32, FS_MATF_GENERAL = 64,
+    FS_MATF_DIRTY = 128, FS_MATF_IDENTITY = 256
+};
 /* matrix_inverse.c: the inverse as llvmpipe's GL front end computes it
- * (Mesa's matrix classes, in float); true when m preserves lengths (a
- * rotation and a translation at most), whose normals need no rescaling. */
+ * (Mesa's matrix classes, in float, chosen from m's values); true when m
+ * preserves lengths (a rotation and a translation at most), whose normals
+ * need no rescaling. */
 bool fs_mat_invert_gl(float out[16], const float m[16]);
+/* The same for a stack matrix as Mesa analyses it when it is used: by its
+ * flags, or from its values when they are dirty (the flags are then
+ * replaced by the values' and kept, as Mesa does). */
+bool fs_matrix_invert(float out[16], fs_matrix *m);
 /* Transforms with the accumulation order Mesa's vertex program uses. */
 static inline void fs_mat_xform4(float o[4], const float m[16], const float v[4])
 {
@@ -217,22 +251,43 @@ void fs_lighting_setup(fs_context *c, fs_vs_setup *s);
  * generation (2.11.4): the normal times the inverse transpose of the
  * modelview, then normalised (GL_NORMALIZE) or rescaled
  * (GL_RESCALE_NORMAL), as llvmpipe's vertex shader does. */
+/* llvmpipe's dot product of three: the products summed from the last
+ * component to the first (texgen.c measured it). */
+static inline float fs_vs_dot3(const float a[3], const float b[3])
+{
+    float d = a[2] * b[2];
+    d = d + a[1] * b[1];
+    return d + a[0] * b[0];
+}
+
+/* The vertex program's normalisation: the dot product, 1/sqrt, a product
+ * (a zero vector stays zero, where the program would give NaN). */
+static inline void fs_vs_normalize3(float v[3])
+{
+    float d = fs_vs_dot3(v, v);
+    if (d > 0.0f) {
+        float q = 1.0f / sqrtf(d);
+        v[0] *= q; v[1] *= q; v[2] *= q;
+    }
+}
+
 static inline void fs_vs_eye_normal(const fs_vs_setup *s, const fs_ivert *v, float eye[4], float nrm[3])
 {
     if (s->need_eye)
         fs_mat_xform4(eye, s->mv, v->obj);
-    for (int r = 0; r < 3; r++)
-        nrm[r] = s->nmat[r * 3] * v->nrm[0] + s->nmat[r * 3 + 1] * v->nrm[1] + s->nmat[r * 3 + 2] * v->nrm[2];
-    if (s->rescale && !s->normalize) {
-        nrm[0] *= s->nscale; nrm[1] *= s->nscale; nrm[2] *= s->nscale;
-    }
-    if (s->normalize) {
-        float l2 = nrm[0] * nrm[0] + nrm[1] * nrm[1] + nrm[2] * nrm[2];
-        if (l2 > 0.0f) {
-            float inv = 1.0f / sqrtf(l2);
-            nrm[0] *= inv; nrm[1] *= inv; nrm[2] *= inv;
+    if (s->light_object_space) {
+        /* Mesa lights in object space when nothing needs eye coordinates
+         * and the modelview preserves lengths: the normal as given. */
+        memcpy(nrm, v->nrm, 3 * sizeof(float));
+    } else {
+        for (int r = 0; r < 3; r++)
+            nrm[r] = fs_vs_dot3(&s->nmat[r * 3], v->nrm);
+        if (s->rescale && !s->normalize) {
+            nrm[0] *= s->nscale; nrm[1] *= s->nscale; nrm[2] *= s->nscale;
         }
     }
+    if (s->normalize)
+        fs_vs_normalize3(nrm);
 }
 /* texgen.c: the generation's per-draw state (after fs_lighting_setup:
  * it asks for the eye position), and one vertex's texture coordinates
@@ -250,6 +305,10 @@ void fs_vs_material_changed(fs_context *c, const fs_material before[2]);
  * s->separate_specular the specular terms apart into spec (2.14.1). */
 void fs_light_vertex(const fs_vs_setup *s, const float eye[4], const float n[3],
                      const float col[4], float out[2][4], float spec[2][4]);
+/* After fs_lighting_setup, fs_texgen_setup and the modelview's inverse
+ * (s->mv_inv, s->mv_rigid): chooses eye or object space as Mesa does and
+ * puts the directional lights' vectors there. */
+void fs_lighting_spaces(fs_vs_setup *s);
 
 /* vertex_array.c: transformation of a batch of vertices.  s persists from
  * draw to draw (it caches the normal matrix): zero it before its first use. */
@@ -269,6 +328,10 @@ const fs_tile_mask *fs_vs_tile_mask(const fs_context *c, GLenum mode);
 void fs_vs_attributes(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pvert *pv, size_t k);
 /* Whether a window-space box can make fragments in a masked tile. */
 bool fs_vs_box_masked(const fs_tile_mask *t, float x0, float y0, float x1, float y1);
+
+/* point_state.c: the size of a vertex at eye-plane distance d while
+ * s->points_attenuated. */
+float fs_point_derived_size(const fs_vs_setup *s, float d);
 
 /* primitive.c: assembles a primitive from processed vertices.  idx may be
  * NULL (vertices in order).  elements: the draw came as indices (glDrawElements

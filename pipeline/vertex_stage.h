@@ -22,7 +22,12 @@
 #define FS_MAX_LIGHTS 8
 #define FS_MAX_CLIP_PLANES 8 /* GL_MAX_CLIP_PLANES as OSMesa (llvmpipe) reports it */
 
-typedef struct fs_matrix { float m[16]; } fs_matrix; /* column-major, as GL */
+/* Column-major, as GL; flags are Mesa's record of how the matrix was built
+ * (FS_MATF_*, pipeline/matrix.c), which chooses its inversion method. */
+typedef struct fs_matrix {
+    float m[16];
+    unsigned flags;
+} fs_matrix;
 
 typedef struct fs_transform_state {
     GLenum matrix_mode;
@@ -166,6 +171,11 @@ void fs_vertex_stage_free(fs_context *c);
 
 /* Helpers shared with the driver (glGet, glEnable(GL_COLOR_MATERIAL)). */
 const fs_matrix *fs_current_matrix(const fs_context *c, GLenum mode);
+/* Mesa analyses the modelview when a command uses the state (a draw, a
+ * clear, a pixel rectangle): one built by glLoadMatrix or glMultMatrix is
+ * classified by its values then, and later commands add to those flags
+ * (pipeline/matrix_inverse.c). */
+void fs_modelview_analyse(fs_context *c);
 /* The active texture unit (glActiveTexture) and the client one
  * (glClientActiveTexture) as indices 0 .. FS_MAX_TEXTURE_UNITS - 1
  * (pipeline/texture_select.c). */

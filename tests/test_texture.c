@@ -19,7 +19,7 @@
 
 typedef struct tex_case {
     const char *name;
-    int size;              /* texture is size x size (power of two) */
+    int size;              /* texture is size x size */
     int content;           /* 0 checkerboard, 1 random, 2 smooth gradient */
     GLint internal;        /* internal format */
     GLenum format;         /* client format of the image */
@@ -31,6 +31,7 @@ typedef struct tex_case {
     float lo;
     int rotate_z;          /* rotation about z in degrees */
     int no_mipmaps;        /* define only level 0 (incomplete with a MIPMAP filter) */
+    GLenum wrap_t;         /* T's wrap when not 0, else wrap */
 } tex_case;
 
 static uint32_t rng_next(uint32_t *s)
@@ -110,7 +111,7 @@ static void draw_case(fs_context *c, const void *user, int w, int h)
     G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)tc->min_filter);
     G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, (GLint)tc->mag_filter);
     G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, (GLint)tc->wrap);
-    G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, (GLint)tc->wrap);
+    G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, (GLint)(tc->wrap_t ? tc->wrap_t : tc->wrap));
     const float border[4] = {0.9f, 0.5f, 0.1f, 0.7f};
     G(TexParameterfv, GL_TEXTURE_2D, GL_TEXTURE_BORDER_COLOR, border);
     G(TexEnvi, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, (GLint)tc->env);
@@ -166,22 +167,27 @@ static bool nearest_only(const tex_case *tc)
 }
 
 /* Runs cases; NEAREST (no blending of texels anywhere) must be exact, the
- * rest within 1. */
-static void run_cases(check_state *check_st_, const tex_case *cases, int n, int w, int h)
+ * rest within 1, or exact too with all_exact. */
+static void run_cases_tol(check_state *check_st_, const tex_case *cases, int n, int w, int h, bool all_exact)
 {
     long total = 0, differ = 0;
     for (int i = 0; i < n; i++) {
         cmp_result r;
         REQUIRE(render_compare(&cases[i], w, h, &r) == 0);
         CHECK(r.covered > 0);
-        if (nearest_only(&cases[i]) && r.differ != 0)
-            CHECK_FAIL_("%s: NEAREST must be exact, %ld pixels differ", cases[i].name, r.differ);
+        if ((all_exact || nearest_only(&cases[i])) && r.differ != 0)
+            CHECK_FAIL_("%s: must be exact, %ld pixels differ", cases[i].name, r.differ);
         if (r.differ_gt1 != 0)
             CHECK_FAIL_("%s: %ld pixels differ by more than 1", cases[i].name, r.differ_gt1);
         total += (long)w * h;
         differ += r.differ;
     }
     printf("  all: %ld of %ld pixels differ\n", differ, total);
+}
+
+static void run_cases(check_state *check_st_, const tex_case *cases, int n, int w, int h)
+{
+    run_cases_tol(check_st_, cases, n, w, h, false);
 }
 
 #define W 160
@@ -191,11 +197,11 @@ static void run_cases(check_state *check_st_, const tex_case *cases, int n, int 
 TEST(filters_magnified)
 {
     static const tex_case cases[] = {
-        {"mag_nearest_checker8", 8, 0, GL_RGBA, GL_RGBA, GL_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.5f, 0, 1, 0, 0, 1},
-        {"mag_nearest_random16_rot", 16, 1, GL_RGBA, GL_RGBA, GL_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.5f, 0, 1, 0, 17, 1},
-        {"mag_linear_checker8", 8, 0, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 0, 1, 0, 0, 1},
-        {"mag_linear_random16_rot", 16, 1, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 0, 1, 0, 17, 1},
-        {"mag_linear_gradient4_tilt", 4, 2, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 50, 1, 0, 0, 1},
+        {"mag_nearest_checker8", 8, 0, GL_RGBA, GL_RGBA, GL_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.5f, 0, 1, 0, 0, 1, 0},
+        {"mag_nearest_random16_rot", 16, 1, GL_RGBA, GL_RGBA, GL_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.5f, 0, 1, 0, 17, 1, 0},
+        {"mag_linear_checker8", 8, 0, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 0, 1, 0, 0, 1, 0},
+        {"mag_linear_random16_rot", 16, 1, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 0, 1, 0, 17, 1, 0},
+        {"mag_linear_gradient4_tilt", 4, 2, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 50, 1, 0, 0, 1, 0},
     };
     run_cases(check_st_, cases, (int)(sizeof cases / sizeof cases[0]), W, H);
 }
@@ -203,16 +209,16 @@ TEST(filters_magnified)
 TEST(filters_minified)
 {
     static const tex_case cases[] = {
-        {"min_nearest_random64", 64, 1, GL_RGBA, GL_RGBA, GL_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.0f, 0, 4, 0, 0, 1},
-        {"min_linear_random64", 64, 1, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.0f, 0, 4, 0, 0, 1},
-        {"min_nmn_random64_tilt", 64, 1, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.5f, 70, 4, 0, 0, 0},
-        {"min_lmn_random64_tilt", 64, 1, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 70, 4, 0, 0, 0},
-        {"min_nml_random64_tilt", 64, 1, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_LINEAR, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.5f, 70, 4, 0, 0, 0},
-        {"min_lml_random64_tilt", 64, 1, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 70, 4, 0, 0, 0},
-        {"min_lml_checker256_tilt", 256, 0, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 75, 8, 0, 0, 0},
-        {"min_nml_gradient128_rot", 128, 2, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.0f, 30, 3, 0, 33, 0},
-        {"min_lml_random256_flat", 256, 1, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 0.7f, 0, 2, 0, 10, 0},
-        {"min_nmn_mag_linear_tilt", 32, 1, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 70, 1, 0, 0, 0},
+        {"min_nearest_random64", 64, 1, GL_RGBA, GL_RGBA, GL_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.0f, 0, 4, 0, 0, 1, 0},
+        {"min_linear_random64", 64, 1, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.0f, 0, 4, 0, 0, 1, 0},
+        {"min_nmn_random64_tilt", 64, 1, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.5f, 70, 4, 0, 0, 0, 0},
+        {"min_lmn_random64_tilt", 64, 1, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 70, 4, 0, 0, 0, 0},
+        {"min_nml_random64_tilt", 64, 1, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_LINEAR, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.5f, 70, 4, 0, 0, 0, 0},
+        {"min_lml_random64_tilt", 64, 1, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 70, 4, 0, 0, 0, 0},
+        {"min_lml_checker256_tilt", 256, 0, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 75, 8, 0, 0, 0, 0},
+        {"min_nml_gradient128_rot", 128, 2, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.0f, 30, 3, 0, 33, 0, 0},
+        {"min_lml_random256_flat", 256, 1, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 0.7f, 0, 2, 0, 10, 0, 0},
+        {"min_nmn_mag_linear_tilt", 32, 1, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_NEAREST, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 70, 1, 0, 0, 0, 0},
     };
     run_cases(check_st_, cases, (int)(sizeof cases / sizeof cases[0]), W, H);
 }
@@ -220,15 +226,34 @@ TEST(filters_minified)
 TEST(wrap_modes)
 {
     static const tex_case cases[] = {
-        {"wrap_repeat_nearest", 8, 1, GL_RGBA, GL_RGBA, GL_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.5f, 20, 1.5f, 0.5f, 0, 1},
-        {"wrap_clamp_nearest", 8, 1, GL_RGBA, GL_RGBA, GL_NEAREST, GL_NEAREST, GL_CLAMP, GL_REPLACE, 1.5f, 20, 1.5f, 0.5f, 0, 1},
-        {"wrap_edge_nearest", 8, 1, GL_RGBA, GL_RGBA, GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, GL_REPLACE, 1.5f, 20, 1.5f, 0.5f, 0, 1},
-        {"wrap_repeat_linear", 8, 1, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 20, 1.5f, 0.5f, 0, 1},
-        {"wrap_clamp_linear", 8, 1, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_CLAMP, GL_REPLACE, 1.5f, 20, 1.5f, 0.5f, 0, 1},
-        {"wrap_edge_linear", 8, 1, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_REPLACE, 1.5f, 20, 1.5f, 0.5f, 0, 1},
-        {"wrap_clamp_lml_tilt", 64, 1, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_CLAMP, GL_REPLACE, 1.5f, 70, 1.5f, 0.5f, 0, 0},
+        {"wrap_repeat_nearest", 8, 1, GL_RGBA, GL_RGBA, GL_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.5f, 20, 1.5f, 0.5f, 0, 1, 0},
+        {"wrap_clamp_nearest", 8, 1, GL_RGBA, GL_RGBA, GL_NEAREST, GL_NEAREST, GL_CLAMP, GL_REPLACE, 1.5f, 20, 1.5f, 0.5f, 0, 1, 0},
+        {"wrap_edge_nearest", 8, 1, GL_RGBA, GL_RGBA, GL_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, GL_REPLACE, 1.5f, 20, 1.5f, 0.5f, 0, 1, 0},
+        {"wrap_repeat_linear", 8, 1, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 20, 1.5f, 0.5f, 0, 1, 0},
+        {"wrap_clamp_linear", 8, 1, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_CLAMP, GL_REPLACE, 1.5f, 20, 1.5f, 0.5f, 0, 1, 0},
+        {"wrap_edge_linear", 8, 1, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_REPLACE, 1.5f, 20, 1.5f, 0.5f, 0, 1, 0},
+        {"wrap_clamp_lml_tilt", 64, 1, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_CLAMP, GL_REPLACE, 1.5f, 70, 1.5f, 0.5f, 0, 0, 0},
     };
     run_cases(check_st_, cases, (int)(sizeof cases / sizeof cases[0]), W, H);
+}
+
+/* ARB_texture_non_power_of_two (Mesa exposes it on every context, and
+ * captured programs upload such images): REPEAT on an axis whose size is
+ * not a power of two wraps the fraction of s (gallivm), in the 8-bit path
+ * (REPEAT, CLAMP_TO_EDGE) and in the float one (another wrap on the other
+ * axis); MIPmaps halve with the floor (3.8.10). */
+TEST(non_power_of_two)
+{
+    static const tex_case cases[] = {
+        {"npot13_repeat_nearest", 13, 1, GL_RGBA, GL_RGBA, GL_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.5f, 20, 2.5f, 1.5f, 7, 1, 0},
+        {"npot13_repeat_linear", 13, 1, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 20, 2.5f, 1.5f, 7, 1, 0},
+        {"npot24_repeat_lml_tilt", 24, 1, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_MODULATE, 1.5f, 70, 6, 0.3f, 10, 0, 0},
+        {"npot100_edge_nmn_tilt", 100, 1, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, GL_CLAMP_TO_EDGE, GL_REPLACE, 1.5f, 70, 4, 0, 0, 0, 0},
+        {"npot13_float_repeat_nearest", 13, 1, GL_RGBA, GL_RGBA, GL_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.5f, 20, 2.5f, 1.5f, 7, 1, GL_CLAMP},
+        {"npot13_float_repeat_linear", 13, 1, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.5f, 20, 2.5f, 1.5f, 7, 1, GL_MIRRORED_REPEAT},
+        {"npot5_clamp_linear", 5, 2, GL_RGBA, GL_RGBA, GL_LINEAR, GL_LINEAR, GL_CLAMP, GL_REPLACE, 1.5f, 20, 1.5f, 0.5f, 0, 1, 0},
+    };
+    run_cases_tol(check_st_, cases, (int)(sizeof cases / sizeof cases[0]), W, H, true);
 }
 
 TEST(env_modes_and_formats)
@@ -248,7 +273,7 @@ TEST(env_modes_and_formats)
         for (int f = 0; f < 11; f++) {
             snprintf(names[n], sizeof names[n], "env_%s_%s", env_names[e], fmts[f].name);
             tex_case tc = {names[n], 16, 1, fmts[f].internal, fmts[f].format, GL_LINEAR, GL_LINEAR, GL_REPEAT, envs[e],
-                           1.5f, 30, 1, 0, 0, 1};
+                           1.5f, 30, 1, 0, 0, 1, 0};
             cases[n++] = tc;
         }
     run_cases(check_st_, cases, n, W, H);
@@ -262,7 +287,7 @@ TEST(sizes)
     for (int l = 0; l <= 8; l++) {
         snprintf(names[l], sizeof names[l], "size_%d_lml_tilt", 1 << l);
         tex_case tc = {names[l], 1 << l, 1, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_MODULATE,
-                       1.5f, 65, 2, 0, 10, 0};
+                       1.5f, 65, 2, 0, 10, 0, 0};
         cases[n++] = tc;
         tc.min_filter = GL_NEAREST_MIPMAP_NEAREST;
         tc.mag_filter = GL_NEAREST;
@@ -278,7 +303,7 @@ TEST(incomplete_texture)
     /* Level 0 only with a MIPMAP min filter: incomplete (GL 1.5 spec
      * 3.8.10), so texturing is off for the unit. */
     static const tex_case cases[] = {
-        {"incomplete_mipmap", 16, 1, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_MODULATE, 1.5f, 30, 1, 0, 0, 1},
+        {"incomplete_mipmap", 16, 1, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_MODULATE, 1.5f, 30, 1, 0, 0, 1, 0},
     };
     run_cases(check_st_, cases, 1, W, H);
 }
@@ -307,8 +332,11 @@ TEST(errors)
     CHECK_EQ_INT(err(c), GL_INVALID_VALUE);
     fsglTexImage2D(c, GL_TEXTURE_2D, 0, GL_RGBA, -4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
     CHECK_EQ_INT(err(c), GL_INVALID_VALUE);
+    /* ARB_texture_non_power_of_two: any size is an image. */
     fsglTexImage2D(c, GL_TEXTURE_2D, 0, GL_RGBA, 3, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
-    CHECK_EQ_INT(err(c), GL_INVALID_VALUE);
+    CHECK_EQ_INT(err(c), GL_NO_ERROR);
+    fsglTexImage2D(c, GL_TEXTURE_2D, 0, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
+    CHECK_EQ_INT(err(c), GL_NO_ERROR);
     fsglTexImage2D(c, GL_TEXTURE_2D, -1, GL_RGBA, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
     CHECK_EQ_INT(err(c), GL_INVALID_VALUE);
     fsglTexImage2D(c, GL_TEXTURE_2D, FS_TEX_MAX_LEVELS, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
@@ -761,11 +789,11 @@ TEST(odd_framebuffer_sizes)
      * llvmpipe's (y-down raster) also when the window height is odd. */
     static const struct { int w, h; } sizes[] = {{63, 37}, {101, 99}, {1, 1}, {2, 3}, {3, 2}, {17, 64}};
     static const tex_case base[] = {
-        {"odd_lml_tilt", 64, 1, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_MODULATE, 1.5f, 70, 4, 0, 10, 0},
-        {"odd_nmn_tilt", 64, 1, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.5f, 70, 4, 0, 10, 0},
-        {"odd_nml_rot", 128, 2, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.0f, 30, 3, 0, 33, 0},
-        {"odd_lmn_checker", 256, 0, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_DECAL, 1.5f, 75, 8, 0, 0, 0},
-        {"odd_nmn_small", 16, 1, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 0.3f, 40, 9, 0, 5, 0},
+        {"odd_lml_tilt", 64, 1, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_MODULATE, 1.5f, 70, 4, 0, 10, 0, 0},
+        {"odd_nmn_tilt", 64, 1, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 1.5f, 70, 4, 0, 10, 0, 0},
+        {"odd_nml_rot", 128, 2, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_LINEAR, GL_LINEAR, GL_REPEAT, GL_REPLACE, 1.0f, 30, 3, 0, 33, 0, 0},
+        {"odd_lmn_checker", 256, 0, GL_RGBA, GL_RGBA, GL_LINEAR_MIPMAP_NEAREST, GL_LINEAR, GL_CLAMP_TO_EDGE, GL_DECAL, 1.5f, 75, 8, 0, 0, 0, 0},
+        {"odd_nmn_small", 16, 1, GL_RGBA, GL_RGBA, GL_NEAREST_MIPMAP_NEAREST, GL_NEAREST, GL_REPEAT, GL_REPLACE, 0.3f, 40, 9, 0, 5, 0, 0},
     };
     for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++) {
         printf("  %dx%d:\n", sizes[i].w, sizes[i].h);
@@ -932,6 +960,7 @@ TEST_LIST = {
     TEST_ENTRY(filters_magnified),
     TEST_ENTRY(filters_minified),
     TEST_ENTRY(wrap_modes),
+    TEST_ENTRY(non_power_of_two),
     TEST_ENTRY(env_modes_and_formats),
     TEST_ENTRY(sizes),
     TEST_ENTRY(incomplete_texture),

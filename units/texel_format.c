@@ -72,6 +72,11 @@ int fs_texel_bits(GLint f, GLenum base, enum fs_texel_comp k)
     }
     if (!has)
         return 0;
+    /* The S3TC formats (units/texture_compressed.c) report 4 bits for each
+     * component they have (measured through OSMesa; their texels are kept
+     * decoded at 8 bits). */
+    if (f >= GL_COMPRESSED_RGB_S3TC_DXT1_EXT && f <= GL_COMPRESSED_RGBA_S3TC_DXT5_EXT)
+        return 4;
     int lb[4];
     if (f != GL_RGB10_A2 && low_bits(f, lb)) {
         if (k == FS_TC_ALPHA)

@@ -35,8 +35,10 @@ static void object_defaults(fs_tex_object *t, GLuint name)
 static void object_release(fs_tex_object *t)
 {
     fs_mpgrid_gl_release(t);
-    for (int i = 0; i < FS_TEX_MAX_LEVELS; i++)
+    for (int i = 0; i < FS_TEX_MAX_LEVELS; i++) {
         free(t->level[i].texels);
+        free(t->level[i].compressed);
+    }
 }
 
 int fs_texture_init(fs_context *c)
@@ -457,18 +459,17 @@ static bool keeps_wide_texels(GLint internalformat, GLenum format, GLenum type)
     return unsized && wide;
 }
 
-static bool is_pow2_or_zero(GLsizei v) { return (v & (v - 1)) == 0; }
-
 /* One size of an image of level `level` of a target whose largest image is
- * 2^max_log2 (3.8.1): 2^n + 2 border (GL 1.x has no non-power-of-two
- * textures), at most the largest size >> level; zero is a valid, empty
- * image. */
+ * 2^max_log2 (3.8.1): any size from 0 (a valid, empty image) plus 2 border
+ * (ARB_texture_non_power_of_two, core in GL 2.0, which Mesa exposes on
+ * every context and captured programs use), at most the largest size >>
+ * level. */
 static bool size_ok(GLsizei v, GLint border, int max_log2, GLint level)
 {
     if (v < 0 || v > (1 << max_log2) + 2 * border)
         return false;
     GLsizei inner = v - 2 * border;
-    if (v > 0 && (inner < 0 || !is_pow2_or_zero(inner)))
+    if (v > 0 && inner < 0)
         return false;
     return inner <= ((1 << max_log2) >> level);
 }
@@ -516,6 +517,9 @@ static fs_tex_image *define_level(fs_context *c, fs_tex_object *t, GLint level, 
         }
     }
     free(img->texels);
+    free(img->compressed); /* an uncompressed image replaces a compressed one */
+    img->compressed = NULL;
+    img->compressed_size = 0;
     img->texels = texels;
     img->width = texels ? size[0] : 0;
     img->height = texels ? size[1] : 0;
@@ -644,6 +648,8 @@ void fs_tex_subimage_nd(fs_context *c, int dims, GLenum target, GLint level, con
         fs_error(c, err);
         return;
     }
+    if (fs_tex_compressed_block_bytes(img->internal_format, NULL)) /* llvmpipe compresses into the blocks */
+        fs_unsupported(c, "glTexSubImage into a compressed level (units/texture_compressed.c)");
     if (w > 0 && h > 0 && d > 0 && pixels)
         unpack_image(c, img, dims, off, w, h, d, format, type, pixels);
     fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], level);
@@ -726,6 +732,8 @@ void fs_tex_copy_subimage_nd(fs_context *c, int dims, GLenum target, GLint level
     fs_tex_image *img = subimage_target(c, &ti, level, off, size);
     if (!img)
         return;
+    if (fs_tex_compressed_block_bytes(img->internal_format, NULL))
+        fs_unsupported(c, "glCopyTexSubImage into a compressed level (units/texture_compressed.c)");
     copy_from_framebuffer(c, img, off, x, y, w, h);
     fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], level);
 }
@@ -963,6 +971,27 @@ bool fs_tex_complete(fs_tex_object *t)
 
 /* ---- texture environment (3.8.13) ---- */
 
+/* GL 2.0 spec 3.3: glTexEnv(GL_POINT_SPRITE, GL_COORD_REPLACE, b) sets
+ * the active unit's coordinate replacement (point state, kept with the
+ * rasterizer's: GL_POINT_BIT saves it, table 6.12); a value other than
+ * GL_TRUE or GL_FALSE is INVALID_VALUE, as Mesa answers, after truncating
+ * a float to an integer. */
+static void point_sprite_env(fs_context *c, GLenum pname, float v)
+{
+    if (pname != GL_COORD_REPLACE) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    GLint b = (GLint)v;
+    if (b != GL_TRUE && b != GL_FALSE) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    unsigned bit = 1u << fs_active_unit(c);
+    c->raster.coord_replace = b ? c->raster.coord_replace | bit : c->raster.coord_replace & ~bit;
+    fs_state_mark(c, GL_POINT_BIT);
+}
+
 static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *vals, bool vector)
 {
     fs_tex_env *s = &fs_tex_active(c)->env;
@@ -970,6 +999,10 @@ static void tex_env(fs_context *c, GLenum target, GLenum pname, const float *val
         /* GL 1.4's unit LOD bias (3.8.13; texture_lod.c). */
         if (fs_tex_filter_control(c, pname, vals[0]))
             fs_state_mark(c, GL_TEXTURE_BIT);
+        return;
+    }
+    if (target == GL_POINT_SPRITE) {
+        point_sprite_env(c, pname, vals[0]);
         return;
     }
     if (target != GL_TEXTURE_ENV) {
@@ -1211,7 +1244,7 @@ static bool tex_level_value(const fs_tex_image *img, GLenum pname, GLint *v)
     case GL_TEXTURE_DEPTH: *v = defined ? img->depth : 0; return true;
     case GL_TEXTURE_INTERNAL_FORMAT: *v = defined ? img->internal_format : GL_RGBA; return true;
     case GL_TEXTURE_BORDER: *v = defined ? img->border : 0; return true;
-    case GL_TEXTURE_COMPRESSED: *v = GL_FALSE; return true;
+    case GL_TEXTURE_COMPRESSED: *v = defined && fs_tex_compressed_block_bytes(img->internal_format, NULL); return true;
     default: break;
     }
     static const fs_tex_image undefined;
@@ -1233,6 +1266,14 @@ static bool get_tex_level(fs_context *c, GLenum target, GLint level, GLenum pnam
     }
     const fs_tex_image *img =
         ti.proxy ? &c->texture->proxy[ti.k][level] : &fs_tex_active(c)->bound[ti.k]->level[level];
+    /* Table 6.18; INVALID_OPERATION for a level that is not compressed
+     * and for a proxy (as OSMesa; GL 1.5 leaves it undefined). */
+    if (pname == GL_TEXTURE_COMPRESSED_IMAGE_SIZE) {
+        *v = ti.proxy ? 0 : (GLint)fs_tex_compressed_image_size(img);
+        if (*v == 0)
+            fs_error(c, GL_INVALID_OPERATION);
+        return *v != 0;
+    }
     if (!tex_level_value(img, pname, v)) {
         fs_error(c, GL_INVALID_ENUM);
         return false;
@@ -1257,6 +1298,14 @@ void fs_exec_GetTexLevelParameterfv(fs_context *c, GLenum target, GLint level, G
 static int get_tex_env(fs_context *c, GLenum target, GLenum pname, float v[4])
 {
     const fs_tex_env *s = &fs_tex_active(c)->env;
+    if (target == GL_POINT_SPRITE) {
+        if (pname != GL_COORD_REPLACE) {
+            fs_error(c, GL_INVALID_ENUM);
+            return 0;
+        }
+        v[0] = (c->raster.coord_replace >> fs_active_unit(c)) & 1u ? 1.0f : 0.0f;
+        return 1;
+    }
     if (target != GL_TEXTURE_ENV) {
         fs_error(c, GL_INVALID_ENUM);
         return 0;

@@ -23,6 +23,10 @@ typedef struct fs_tex_image {
      * state is set, border is the one given (images keep none). */
     bool described;
     int border;
+    /* A level given by glCompressedTexImage (3.8.3): its blocks as given,
+     * for glGetCompressedTexImage; NULL otherwise (texture_compressed.c). */
+    uint8_t *compressed;
+    size_t compressed_size;
 } fs_tex_image;
 
 /* The texture targets as indices into a unit's bindings and enables and
@@ -137,6 +141,13 @@ void fs_tex_copy_image_nd(fs_context *c, int dims, GLenum target, GLint level, G
                           GLint y, GLsizei w, GLsizei h, GLint border);
 void fs_tex_copy_subimage_nd(fs_context *c, int dims, GLenum target, GLint level, const GLint off[3], GLint x,
                              GLint y, GLsizei w, GLsizei h);
+
+/* ---- compressed images (texture_compressed.c) ---- */
+/* Bytes of a 4x4 block of a compressed internal format the model decodes
+ * (and its base format in *base when not NULL); 0 for any other. */
+int fs_tex_compressed_block_bytes(GLint internalformat, GLenum *base);
+/* GL_TEXTURE_COMPRESSED_IMAGE_SIZE of a level (0: not compressed). */
+int64_t fs_tex_compressed_image_size(const fs_tex_image *img);
 
 /* ---- level of detail (texture_lod.c) ---- */
 void fs_tex_lod_defaults(fs_tex_object *t);

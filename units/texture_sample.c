@@ -194,6 +194,35 @@ static inline int lerp8(int w, int a, int b)
     return (a + ((w * (b - a) + 128) >> 8)) & 0xff;
 }
 
+/* ARB_texture_non_power_of_two's REPEAT: gallivm wraps a power-of-two
+ * axis by masking the integer coordinate, and any other by the fraction of
+ * s first (it knows which from the base level's size).  NEAREST takes
+ * fract(s) held below 1 (lp_build_fract_safe: s - floor(s) can round to 1
+ * for tiny negative s), times the size, truncated; the clamp of the result
+ * keeps a NaN coordinate inside the image (GL leaves its texel undefined). */
+static inline float fract_safe(float s)
+{
+    float fr = s - floorf(s);
+    return fr < 0x1.fffffep-1f ? fr : 0x1.fffffep-1f; /* a NaN takes the bound too */
+}
+
+static inline int repeat_npot_nearest(float s, int len)
+{
+    int x = to_int_floor(fract_safe(s) * (float)len);
+    return x < 0 ? 0 : x > len - 1 ? len - 1 : x;
+}
+
+/* LINEAR's pair on a repeated non-power-of-two axis: the first texel of a
+ * pair below 0 (after the half-texel shift) is the last one, and the
+ * second of the last is the first (gallivm's selects in place of a
+ * modulo). */
+static inline void repeat_npot_pair(int x0, int len, int *i0, int *i1)
+{
+    x0 = x0 < 0 ? len - 1 : x0 > len - 1 ? len - 1 : x0;
+    *i0 = x0;
+    *i1 = x0 != len - 1 ? x0 + 1 : 0;
+}
+
 static inline int wrap_nearest(int x, int len, GLenum wrap)
 {
     if (wrap == GL_REPEAT)
@@ -219,6 +248,7 @@ typedef struct tex_fetch {
     int pixel;
     int dims;
     GLenum wrap[3];
+    bool pot[3]; /* each axis of the base level a power of two */
 } tex_fetch;
 
 /* An image's size along axis a (0 s, 1 t, 2 r). */
@@ -246,14 +276,25 @@ static void sample_nearest8(tex_fetch *f, const fs_tex_image *img, const float s
     int xyz[3];
     for (int a = 0; a < 3; a++) {
         int len = image_len(img, a);
-        xyz[a] = wrap_nearest(to_int_floor(st[a] * (float)len), len, f->wrap[a]);
+        xyz[a] = f->wrap[a] == GL_REPEAT && !f->pot[a] ? repeat_npot_nearest(st[a], len)
+                                                       : wrap_nearest(to_int_floor(st[a] * (float)len), len, f->wrap[a]);
     }
     uint8_t tmp[4];
     memcpy(out, texel_at(f, img, xyz, tmp), 4);
 }
 
-static void linear_coord8(float s, int len, GLenum wrap, int *i0, int *i1, int *frac)
+static void linear_coord8(float s, int len, GLenum wrap, bool pot, int *i0, int *i1, int *frac)
 {
+    if (wrap == GL_REPEAT && !pot) {
+        /* Not a power of two: fract(s) in 8.8 fixed point, less half a
+         * texel (gallivm lp_build_coord_repeat_npot_linear_int). */
+        float fr = s - floorf(s);
+        int32_t v = to_int_round_even(fr * (float)len * 256.0f);
+        v = (int32_t)((uint32_t)v - 128u);
+        *frac = v & 0xff;
+        repeat_npot_pair((int)(v >> 8), len, i0, i1);
+        return;
+    }
     int32_t v = to_int_round_even(s * (float)(len << 8));
     v = (int32_t)((uint32_t)v - 128u);
     *frac = v & 0xff;
@@ -295,7 +336,7 @@ static void sample_linear8(tex_fetch *f, const fs_tex_image *img, const float st
     linear_taps tp;
     int w[3];
     for (int a = 0; a < 3; a++)
-        linear_coord8(st[a], image_len(img, a), f->wrap[a], &tp.i[a][0], &tp.i[a][1], &w[a]);
+        linear_coord8(st[a], image_len(img, a), f->wrap[a], f->pot[a], &tp.i[a][0], &tp.i[a][1], &w[a]);
     int v0[4];
     bilinear8(f, img, &tp, 0, w, v0);
     if (f->dims == 3) {
@@ -359,12 +400,12 @@ static float mirror_coord(float s)
 
 /* The texel NEAREST takes on one axis in the float path (3.8.7); outside
  * [0, len) for CLAMP_TO_BORDER, which fetch_f answers with the border. */
-static int nearest_coord_f(float s, int len, GLenum wrap)
+static int nearest_coord_f(float s, int len, GLenum wrap, bool pot)
 {
     float lf = (float)len;
     switch (wrap) {
     case GL_REPEAT:
-        return to_int_floor(s * lf) & (len - 1);
+        return pot ? to_int_floor(s * lf) & (len - 1) : repeat_npot_nearest(s, len);
     case GL_MIRRORED_REPEAT: {
         int x = to_int_floor(mirror_coord(s) * lf); /* truncation: the fold is >= 0 */
         return x < len - 1 ? x : len - 1;
@@ -397,7 +438,7 @@ static int nearest_coord_f(float s, int len, GLenum wrap)
 
 /* The texel pair and weight of LINEAR on one axis in the float path
  * (3.8.8, eq. 3.22), by gallivm's rules for each wrap mode. */
-static void linear_coord_f(float s, int len, GLenum wrap, int *i0, int *i1, float *frac)
+static void linear_coord_f(float s, int len, GLenum wrap, bool pot, int *i0, int *i1, float *frac)
 {
     float lf = (float)len;
     float u = s * lf;
@@ -442,6 +483,16 @@ static void linear_coord_f(float s, int len, GLenum wrap, int *i0, int *i1, floa
         *frac = u - fl;
         *i0 = to_int_floor(fl);
         *i1 = *i0 + 1;
+        return;
+    }
+    if (wrap == GL_REPEAT && !pot) {
+        /* fract(s) scaled, less half a texel; a pair below 0 (or a NaN)
+         * starts at the last texel (gallivm's float REPEAT for sizes not
+         * powers of two). */
+        u = (s - floorf(s)) * lf - 0.5f;
+        float fl = floorf(u);
+        *frac = u - fl;
+        repeat_npot_pair(u < 0.0f || u != u ? -1 : to_int_floor(fl), len, i0, i1);
         return;
     }
     if (wrap == GL_REPEAT) {
@@ -511,14 +562,14 @@ static void sample_level_f(tex_fetch *f, int level, GLenum filter, const float s
     if (filter == GL_NEAREST) {
         int xyz[3];
         for (int a = 0; a < 3; a++)
-            xyz[a] = nearest_coord_f(st[a], image_len(img, a), f->wrap[a]);
+            xyz[a] = nearest_coord_f(st[a], image_len(img, a), f->wrap[a], f->pot[a]);
         fetch_f(f, img, xyz, out);
         return;
     }
     linear_taps tp;
     float w[3];
     for (int a = 0; a < 3; a++)
-        linear_coord_f(st[a], image_len(img, a), f->wrap[a], &tp.i[a][0], &tp.i[a][1], &w[a]);
+        linear_coord_f(st[a], image_len(img, a), f->wrap[a], f->pot[a], &tp.i[a][0], &tp.i[a][1], &w[a]);
     linear_taps_f(f, img, &tp, w, out);
 }
 
@@ -533,7 +584,7 @@ static void sample_nearest_via_linear_f(tex_fetch *f, int level, const float st[
     linear_taps tp;
     float w[3];
     for (int a = 0; a < 3; a++) {
-        linear_coord_f(st[a], image_len(img, a), f->wrap[a], &tp.i[a][0], &tp.i[a][1], &w[a]);
+        linear_coord_f(st[a], image_len(img, a), f->wrap[a], f->pot[a], &tp.i[a][0], &tp.i[a][1], &w[a]);
         w[a] = w[a] > 0.5f ? 1.0f : 0.0f;
     }
     linear_taps_f(f, img, &tp, w, out);
@@ -626,8 +677,12 @@ static void tex_mip_view(const fs_tex_object *t, fs_mip_view *v)
 
 static int footprint_wrap(int v, int size, GLenum mode)
 {
-    if (mode == GL_REPEAT)
-        return v & (size - 1); /* sizes are powers of two (GL 1.5 spec 3.8.1) */
+    if (mode == GL_REPEAT) {
+        /* A modulo that is never negative: sizes need not be powers of two
+         * (ARB_texture_non_power_of_two). */
+        int m = v % size;
+        return m < 0 ? m + size : m;
+    }
     return v < 0 ? 0 : v >= size ? size - 1 : v;
 }
 
@@ -811,6 +866,10 @@ static bool sample_unit(fs_context *c, fs_quad *q, int u, const fs_quad_tex *qt,
     fs_tex_reads reads;
     tex_fetch f = {t, t->mpgrid, {0, 0, 0}, c->observer ? &reads : NULL, 0, dims,
                    {t->wrap_s, dims > 1 ? t->wrap_t : GL_REPEAT, dims > 2 ? t->wrap_r : GL_REPEAT}};
+    for (int a = 0; a < 3; a++) {
+        int len = image_len(&t->level[t->first_level], a);
+        f.pot[a] = (len & (len - 1)) == 0;
+    }
     if (c->observer)
         memset(reads.n, 0, sizeof reads.n);
     for (int i = 0; i < 4; i++) {

@@ -114,6 +114,11 @@ GLuint fs_tex_object_name(const struct fs_tex_object *t);
 bool fs_tex_level_size(const struct fs_tex_object *t, int level, int *width, int *height);
 void fs_tex_footprint_texel(const struct fs_tex_object *t, int level, int *x, int *y);
 
+/* The compressed internal formats listed by GL_COMPRESSED_TEXTURE_FORMATS
+ * (units/texture_compressed.c): their count, and the formats written to
+ * formats when it is not NULL. */
+int fs_tex_compressed_formats(GLint *formats);
+
 /* Applies texturing to a quad whose unit[u].tex holds the interpolated
  * (s, t, r, q) of all four pixels for each enabled unit u, unit after unit
  * (3.8.13). */
