@@ -155,6 +155,7 @@ static uint32_t count_u32(int64_t n)
 #define FS_PK_OUB FS_PK_OUT
 #define FS_PK_IP FS_PK_INT
 #define FS_PK_OP FS_PK_OUT
+#define FS_PK_AP(a, v, n) ((a).p = (v), (a).count = count_u32(n), (a).is_data = 0)
 #define FS_PACK(k, kind, name, cnt) FS_PK_##kind(call.a[k], name, cnt);
 
 #define FS_RETURN_V(r)
@@ -289,6 +290,7 @@ void fs_driver_state_free(fs_context *c)
 #define FS_CK_OUB FS_CK_OUT
 #define FS_CK_IP FS_CK_NONE
 #define FS_CK_OP FS_CK_OUT
+#define FS_CK_AP FS_CK_ARR
 #define FS_CHECK(k, kind, name, cnt) FS_CK_##kind(k, name, cnt, FS_ESIZE_##kind)
 
 #define FS_STORE_V(r, e) e
@@ -460,6 +462,19 @@ static int dispatch(fs_context *c, fs_call *call, bool in_bounds)
             fs_render_mode_feedback_buffer(c, (GLsizei)call->a[0].i, (GLenum)call->a[1].i, NULL, replayed);
         return 0;
     }
+    if (call->cmd == FS_CMD_InterleavedArrays && call->a[2].is_data != 0 &&
+        (call->a[2].is_data != FS_ARG_ADDR || !c->arrays.array_buffer)) {
+        /* As the pointer calls: a recorded address with no buffer bound is
+         * the traced program's memory, set as NULL (apitrace writes the
+         * arrays' data as pointer calls before each draw).  Data with the
+         * call (apitrace writes none) would outlive it in four arrays. */
+        if (call->a[2].is_data == FS_ARG_DATA)
+            fs_unsupported(c, "glInterleavedArrays (array data with the call)");
+        fs_call local = *call;
+        local.a[2].p = NULL;
+        local.a[2].is_data = 0;
+        return dispatch_call(c, &local);
+    }
     if (call->cmd == FS_CMD_OcclusionBuffers && call->a[1].is_data != 0) {
         /* glOcclusionBuffers' second argument holds addresses the unit
          * writes to at glRenderMode: data or an address from a trace are no
@@ -524,8 +539,59 @@ static int draw_with_buffers(fs_context *c, const fs_call *call, bool submit)
     return rc;
 }
 
+/* glMultiDrawElements as its glDrawElements calls (GL 1.4 spec 2.8), each
+ * routed as a draw of its own (submit: fs_submit, else fs_dispatch): its
+ * indices an offset into the element array buffer when one is bound, a
+ * display list compiling each draw with the vertices it dereferences, a
+ * capture writing each.  While a list is compiled, Mesa (the oracle)
+ * compiles the draws of a positive count without checking the call, and
+ * each draw's errors are raised when the list runs; executed, a bad
+ * argument draws nothing. */
+static int multi_draw_elements(fs_context *c, const fs_call *call, bool submit)
+{
+    const GLsizei *count = call->a[1].p;
+    const GLvoid *const *indices = call->a[3].p;
+    GLsizei n = (GLsizei)call->a[4].i;
+    if (n > 0 && (!count || !indices || call->a[1].count < (uint32_t)n || call->a[3].count < (uint32_t)n))
+        return -1;
+    bool compiling = submit && fs_dlist_compiling(c);
+    if (!compiling) {
+        if (c->prim.inside_begin) {
+            fs_error(c, GL_INVALID_OPERATION); /* GL 1.5 spec 2.6.3 */
+            return 0;
+        }
+        if (!fs_multidraw_elements_valid(c, (GLenum)call->a[0].i, count, (GLenum)call->a[2].i, n))
+            return 0;
+        /* With client indices, one NULL pointer draws nothing (as OSMesa). */
+        for (GLsizei i = 0; i < n && !c->arrays.element_buffer; i++)
+            if (!indices[i] && call->a[3].is_data != FS_ARG_ADDR)
+                return 0;
+    }
+    int rc = 0;
+    for (GLsizei i = 0; i < n && rc == 0; i++) {
+        if (compiling && count[i] <= 0)
+            continue;
+        fs_call d;
+        memset(&d, 0, sizeof d);
+        d.cmd = FS_CMD_DrawElements;
+        d.nargs = 4;
+        d.flags = call->flags;
+        d.a[0].i = call->a[0].i;
+        d.a[1].i = count[i];
+        d.a[2].i = call->a[2].i;
+        d.a[3].p = indices[i];
+        d.a[3].is_data = call->a[3].is_data == FS_ARG_ADDR ? FS_ARG_ADDR : 0;
+        int64_t bytes = fs_index_bytes(count[i], (GLenum)call->a[2].i);
+        d.a[3].count = d.a[3].is_data == FS_ARG_ADDR ? 0 : count_u32(bytes);
+        rc = submit ? fs_submit(c, &d) : draw_with_buffers(c, &d, false);
+    }
+    return rc;
+}
+
 int fs_dispatch(fs_context *c, fs_call *call)
 {
+    if (call->cmd == FS_CMD_MultiDrawElements)
+        return multi_draw_elements(c, call, false);
     if (call->cmd < FS_CMD_COUNT && (fs_cmd_table[call->cmd].flags & FS_F_DRAW))
         return draw_with_buffers(c, call, false);
     return dispatch(c, call, false);
@@ -592,6 +658,10 @@ static int dispatch_call(fs_context *c, fs_call *call)
 #define FS_VCK_AS FS_VCK_ARR
 #define FS_VCK_AUS FS_VCK_ARR
 #define FS_VCK_BLOB FS_VCK_ARR
+/* The pointers themselves are always there, addresses or not. */
+#define FS_VCK_AP(k, name, cnt) \
+    if ((int64_t)(cnt) > 0 && (name == NULL || (int64_t)call->a[k].count < (int64_t)(cnt))) \
+        return -1 - (k);
 #define FS_VCHECK(k, kind, name, cnt) FS_VCK_##kind(k, name, cnt)
 /* Output counts may need a context; validation never evaluates them. */
 #define fs_readpixels_bytes(c, w, h, f, t) 0
@@ -642,6 +712,8 @@ static int submit_call(fs_context *c, fs_call *call)
 
 int fs_submit(fs_context *c, fs_call *call)
 {
+    if (call->cmd == FS_CMD_MultiDrawElements)
+        return multi_draw_elements(c, call, true); /* each draw captured */
     int rc = (fs_cmd_table[call->cmd].flags & FS_F_DRAW) ? draw_with_buffers(c, call, true) : submit_call(c, call);
     if (c->capture)
         fs_capture_call(c, call);

@@ -23,7 +23,7 @@ typedef struct fs_context fs_context;
     X(F)   X(D)   X(CF)  X(CD)  \
     X(AF)  X(AD)  X(AI)  X(AU)  X(AUB) X(ABY) X(AS)  X(AUS) \
     X(BLOB) X(CPTR) X(OV) X(OF) X(OD) X(OI) X(OU) X(OUS) X(OB) X(OUB) X(STR) \
-    X(IP) X(OP) X(P)
+    X(IP) X(OP) X(P) X(AP)
 
 enum fs_kind {
 #define FS_KIND_ENUM(k) FS_K_##k,
@@ -74,6 +74,14 @@ enum fs_kind {
 #define FS_CT_IP GLintptr
 #define FS_CT_OP GLvoid **
 #define FS_CT_P GLvoid *
+/* glMultiDrawElements' indices: one pointer per draw, each an address of
+ * the caller's memory or, with an element array buffer bound, an offset
+ * into it (GL 1.5 spec 2.9.2).  fs_arg.p holds the array of count
+ * pointers; is_data is FS_ARG_ADDR when they are addresses a trace
+ * recorded (offsets, or the traced program's memory), else 0 (pointers to
+ * indices, or offsets given by the program).  A trace's blobs are checked
+ * against what each draw reads when the call is read (driver/replay.c). */
+#define FS_CT_AP const GLvoid *const *
 
 /* Command flags. */
 #define FS_F_LIST 0x1u   /* compiled into display lists */

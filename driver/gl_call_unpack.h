@@ -46,6 +46,7 @@
 #define FS_UP_OUB FS_UP_OUT
 #define FS_UP_IP FS_UP_INT
 #define FS_UP_OP FS_UP_OUT
+#define FS_UP_AP FS_UP_PTR
 #define FS_LOCAL(k, kind, name, cnt) FS_CT_##kind name = FS_UP_##kind(FS_CT_##kind, call->a[k]);
 
 #define FS_ESIZE_OV 1
@@ -82,6 +83,7 @@
 #define FS_ESIZE_CF 0
 #define FS_ESIZE_CD 0
 #define FS_ESIZE_CPTR 0
+#define FS_ESIZE_AP 0
 #define FS_ANAME(k, kind, name, cnt) , name
 
 /* Drops the leading comma FS_ANAME leaves, for calls without a context. */

@@ -190,6 +190,8 @@ static int osm_getmap_count(GLenum target, GLenum query)
 #define FS_OCK_AS FS_OCK_ARR
 #define FS_OCK_AUS FS_OCK_ARR
 #define FS_OCK_BLOB FS_OCK_ARR
+#define FS_OCK_AP(k, name, cnt) \
+    if ((int64_t)(cnt) > 0 && (name == NULL || (int64_t)call->a[k].count < (int64_t)(cnt))) return -1;
 #define FS_OCK_OV(k, name, cnt) FS_OCK_OUT(k, name, cnt, 1)
 #define FS_OCK_OF(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLfloat))
 #define FS_OCK_OD(k, name, cnt) FS_OCK_OUT(k, name, cnt, sizeof(GLdouble))
@@ -244,15 +246,17 @@ static bool osm_addresses(const fs_call *call, fs_call *local)
 {
     int pk, slot = fs_pointer_slot(call->cmd, &pk);
     int k = call->cmd == FS_CMD_DrawElements ? 3 : call->cmd == FS_CMD_DrawRangeElements ? 5 : -1;
+    if (call->cmd == FS_CMD_MultiDrawElements || call->cmd == FS_CMD_InterleavedArrays)
+        k = call->cmd == FS_CMD_MultiDrawElements ? 3 : 2; /* every draw's indices; the block */
     if (slot >= 0)
         k = pk;
     if (k < 0 || call->a[k].is_data != FS_ARG_ADDR)
         return true;
     GLint bound = 0;
-    glGetIntegerv(slot >= 0 ? GL_ARRAY_BUFFER_BINDING : GL_ELEMENT_ARRAY_BUFFER_BINDING, &bound);
+    glGetIntegerv(slot >= 0 || call->cmd == FS_CMD_InterleavedArrays ? GL_ARRAY_BUFFER_BINDING : GL_ELEMENT_ARRAY_BUFFER_BINDING, &bound);
     if (bound)
         return true;
-    if (slot < 0)
+    if (slot < 0 && call->cmd != FS_CMD_InterleavedArrays)
         return false;
     *local = *call;
     local->a[k].p = NULL;

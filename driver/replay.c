@@ -385,6 +385,56 @@ static int to_array(fs_replayer *r, const fs_tcall *tc, int kind, const fs_tval 
     return 0;
 }
 
+/* glMultiDrawElements' indices (kind AP, gl_call.h): apitrace records one
+ * value per draw, a blob of its indices or, while an element array buffer
+ * is bound, a pointer value (an offset, GL 1.5 spec 2.9.2; NULL is offset
+ * 0).  Into the arena as an array of pointers; each blob must hold what
+ * its draw reads (count[i] indices of the call's type, arguments k - 2 and
+ * k - 1, already converted); blobs and addresses do not mix. */
+static int to_pointers(fs_replayer *r, const fs_tcall *tc, fs_call *call, int k, const fs_tval *v)
+{
+    fs_arg *a = &call->a[k];
+    if (v->type == FS_TV_NULL) {
+        a->p = NULL;
+        a->count = 0;
+        return 0;
+    }
+    if (v->type != FS_TV_ARRAY)
+        return fail(r, tc, "%s", "expected an array of pointers");
+    if (v->arr.n > UINT32_MAX / sizeof(void *))
+        return fail(r, tc, "%s", "array of pointers too long");
+    const void **ptrs = arena_alloc(r, v->arr.n * sizeof *ptrs + 1);
+    if (!ptrs)
+        return fail(r, tc, "%s", "out of memory");
+    const GLint *count = call->a[k - 2].p;
+    GLenum type = (GLenum)call->a[k - 1].i;
+    bool blobs = false, addrs = false;
+    for (size_t i = 0; i < v->arr.n; i++) {
+        const fs_tval *e = &v->arr.elems[i];
+        int64_t addr;
+        if (e->type == FS_TV_BLOB || e->type == FS_TV_STRING) {
+            int64_t need = count && i < call->a[k - 2].count ? fs_index_bytes(count[i], type) : 0;
+            if ((int64_t)e->str.len < need)
+                return fail(r, tc, "%s", "indices blob shorter than its draw reads");
+            ptrs[i] = e->str.ptr;
+            blobs = true;
+        } else if (e->type == FS_TV_NULL) {
+            ptrs[i] = NULL;
+        } else if (tv_int(e, &addr)) {
+            ptrs[i] = (const void *)(uintptr_t)addr;
+            addrs = true;
+        } else {
+            return fail(r, tc, "%s", "non-pointer element in an array of pointers");
+        }
+    }
+    if (blobs && addrs)
+        return fail(r, tc, "%s", "indices mix blobs and addresses");
+    a->p = ptrs;
+    a->count = (uint32_t)v->arr.n;
+    a->is_data = addrs ? FS_ARG_ADDR : 0;
+    return 0;
+}
+
 /* *call with every argument zero: what convert() and rec_next() fill in. */
 static void call_start(fs_call *call, int cmd, unsigned nargs, uint32_t flags)
 {
@@ -452,6 +502,10 @@ static int convert(fs_replayer *r, const fs_tcall *tc, int cmd, fs_call *call)
             } else if (to_array(r, tc, kind, v, a) != 0) {
                 return -1;
             }
+            break;
+        case FS_K_AP:
+            if (to_pointers(r, tc, call, k, v) != 0)
+                return -1;
             break;
         case FS_K_OV: case FS_K_OF: case FS_K_OD: case FS_K_OI: case FS_K_OU: case FS_K_OUS: case FS_K_OB: case FS_K_OUB: case FS_K_OP:
             a->out = NULL; /* the dispatcher provides scratch space */
@@ -668,10 +722,66 @@ static void rec_free(fs_replayer *r)
 
 /* Bytes of the data argument k of `call` points to, or -1 when it points
  * at none (a scalar, an output, an address in the traced program). */
+static int64_t rec_payload(const fs_call *call, int k);
+_Static_assert(sizeof(void *) == 8, "a recorded pointer takes 8 bytes");
+
+/* An array of index pointers (AP, glMultiDrawElements) in the record: a
+ * table of 8 bytes per draw, then each draw's indices.  The table holds
+ * recorded addresses as they are, else for each draw the offset of its
+ * indices from the table's start (0: NULL), which rec_next turns back into
+ * pointers.  ptrs: the pointers, or the table of offsets (either way
+ * nonzero for the same draws). */
+/* Bytes of draw i's indices (as to_pointers checked them): none without
+ * a count for it. */
+static size_t rec_ap_draw_bytes(const fs_call *call, int k, uint32_t i)
+{
+    const GLint *count = call->a[k - 2].p;
+    if (!count || i >= call->a[k - 2].count)
+        return 0;
+    return (size_t)fs_index_bytes(count[i], (GLenum)call->a[k - 1].i);
+}
+
+static int64_t rec_ap_payload(const fs_call *call, int k)
+{
+    const fs_arg *a = &call->a[k];
+    int64_t n = 8 * (int64_t)a->count;
+    if (a->is_data == FS_ARG_ADDR)
+        return n;
+    for (uint32_t i = 0; i < a->count; i++) {
+        uint64_t v;
+        memcpy(&v, (const unsigned char *)a->p + 8 * (size_t)i, 8);
+        if (v)
+            n += (int64_t)REC_ALIGN(rec_ap_draw_bytes(call, k, i));
+    }
+    return n;
+}
+
+static void rec_ap_write(const fs_call *call, int k, unsigned char *out)
+{
+    const fs_arg *a = &call->a[k];
+    if (a->is_data == FS_ARG_ADDR) {
+        memcpy(out, a->p, 8 * (size_t)a->count);
+        return;
+    }
+    const void *const *ptrs = a->p;
+    size_t at = 8 * (size_t)a->count;
+    for (uint32_t i = 0; i < a->count; i++) {
+        uint64_t off = ptrs[i] ? at : 0;
+        memcpy(out + 8 * (size_t)i, &off, 8);
+        if (!ptrs[i])
+            continue;
+        size_t n = rec_ap_draw_bytes(call, k, i);
+        memcpy(out + at, ptrs[i], n);
+        at += REC_ALIGN(n);
+    }
+}
+
 static int64_t rec_payload(const fs_call *call, int k)
 {
     const fs_arg *a = &call->a[k];
     int kind = fs_cmd_table[call->cmd].kinds[k];
+    if (kind == FS_K_AP)
+        return a->p ? rec_ap_payload(call, k) : -1;
     if (!a->p || a->is_data == FS_ARG_ADDR)
         return -1;
     if (kind == FS_K_CPTR)
@@ -731,7 +841,10 @@ static void rec_add(fs_replayer *r, const char *name, const fs_call *call, bool 
         h->data |= (uint16_t)(1u << k);
         memcpy(slot, &a->count, 4);
         memcpy(slot + 4, &a->is_data, 4);
-        memcpy(data, a->p, (size_t)n);
+        if (fs_cmd_table[call->cmd].kinds[k] == FS_K_AP)
+            rec_ap_write(call, k, data);
+        else
+            memcpy(data, a->p, (size_t)n);
         data[n] = 0;
         data += REC_ALIGN((size_t)n + 1);
     }
@@ -778,6 +891,21 @@ static int rec_next(fs_replayer *r, fs_call *call, const struct name_info **ni, 
         memcpy(&a->count, slot, 4);
         memcpy(&a->is_data, slot + 4, 4);
         a->p = data;
+        if (fs_cmd_table[h->cmd].kinds[k] == FS_K_AP && a->is_data != FS_ARG_ADDR) {
+            /* the table's offsets back into pointers (rec_ap_write) */
+            arena_reset(r);
+            const void **ptrs = arena_alloc(r, 8 * (size_t)a->count + 1);
+            if (!ptrs) {
+                snprintf(r->err, sizeof r->err, "%s: out of memory", r->path);
+                return -1;
+            }
+            for (uint32_t i = 0; i < a->count; i++) {
+                uint64_t off;
+                memcpy(&off, data + 8 * (size_t)i, 8);
+                ptrs[i] = off ? data + off : NULL;
+            }
+            a->p = ptrs;
+        }
         data += REC_ALIGN((size_t)rec_payload(call, k) + 1);
     }
     return 1;

@@ -199,6 +199,78 @@ void fs_exec_GetPointerv(fs_context *c, GLenum pname, GLvoid **params)
 void fs_exec_EnableClientState(fs_context *c, GLenum array) { client_state(c, array, true); }
 void fs_exec_DisableClientState(fs_context *c, GLenum array) { client_state(c, array, false); }
 
+/* ---- glInterleavedArrays (GL 1.5 spec 2.8, table 2.5) ----
+ * One row per format: the flags et, ec, en, the sizes st, sc, sv, the
+ * colour type tc and the offsets pc, pn, pv and the whole size s, in
+ * bytes, with f = sizeof(float) and c = 4 unsigned bytes rounded up to a
+ * multiple of f (4 bytes). */
+typedef struct interleaved_row {
+    GLenum format;
+    bool et, ec, en;
+    GLint st, sc, sv;
+    GLenum tc;
+    int pc, pn, pv, s;
+} interleaved_row;
+
+#define F_ 4
+#define C_ 4
+static const interleaved_row interleaved_rows[14] = {
+    {GL_V2F, false, false, false, 0, 0, 2, 0, 0, 0, 0, 2 * F_},
+    {GL_V3F, false, false, false, 0, 0, 3, 0, 0, 0, 0, 3 * F_},
+    {GL_C4UB_V2F, false, true, false, 0, 4, 2, GL_UNSIGNED_BYTE, 0, 0, C_, C_ + 2 * F_},
+    {GL_C4UB_V3F, false, true, false, 0, 4, 3, GL_UNSIGNED_BYTE, 0, 0, C_, C_ + 3 * F_},
+    {GL_C3F_V3F, false, true, false, 0, 3, 3, GL_FLOAT, 0, 0, 3 * F_, 6 * F_},
+    {GL_N3F_V3F, false, false, true, 0, 0, 3, 0, 0, 0, 3 * F_, 6 * F_},
+    {GL_C4F_N3F_V3F, false, true, true, 0, 4, 3, GL_FLOAT, 0, 4 * F_, 7 * F_, 10 * F_},
+    {GL_T2F_V3F, true, false, false, 2, 0, 3, 0, 0, 0, 2 * F_, 5 * F_},
+    {GL_T4F_V4F, true, false, false, 4, 0, 4, 0, 0, 0, 4 * F_, 8 * F_},
+    {GL_T2F_C4UB_V3F, true, true, false, 2, 4, 3, GL_UNSIGNED_BYTE, 2 * F_, 0, C_ + 2 * F_, C_ + 5 * F_},
+    {GL_T2F_C3F_V3F, true, true, false, 2, 3, 3, GL_FLOAT, 2 * F_, 0, 5 * F_, 8 * F_},
+    {GL_T2F_N3F_V3F, true, false, true, 2, 0, 3, 0, 0, 2 * F_, 5 * F_, 8 * F_},
+    {GL_T2F_C4F_N3F_V3F, true, true, true, 2, 4, 3, GL_FLOAT, 2 * F_, 6 * F_, 9 * F_, 12 * F_},
+    {GL_T4F_C4F_N3F_V4F, true, true, true, 4, 4, 4, GL_FLOAT, 4 * F_, 8 * F_, 11 * F_, 15 * F_},
+};
+#undef F_
+#undef C_
+
+/* The offset o from pointer p: an address, or with a buffer bound an
+ * offset into it (2.9.1), either way p + o as an integer. */
+static const void *offset_by(const void *p, int o) { return (const void *)((uintptr_t)p + (uintptr_t)o); }
+
+/* The spec's sequence of calls: a zero stride becomes s; the edge flag
+ * and index arrays are disabled; the texture coordinate, colour and normal
+ * arrays enabled and set or disabled as the format says (the texture
+ * coordinates of the client active unit, 2.8: glTexCoordPointer's); the
+ * vertex array enabled and set.  Each pointer takes the GL_ARRAY_BUFFER
+ * binding, as glXxxPointer does.  GL 1.5's version of the sequence also
+ * disables the secondary colour and fog coordinate arrays; OSMesa (the
+ * oracle) leaves them as they were, and so does fragsim
+ * (tests/test_array_draws.c, interleaved_state_vs_osmesa). */
+void fs_exec_InterleavedArrays(fs_context *c, GLenum format, GLsizei stride, const GLvoid *pointer)
+{
+    const interleaved_row *r = NULL;
+    for (int i = 0; i < 14; i++)
+        if (interleaved_rows[i].format == format)
+            r = &interleaved_rows[i];
+    if (stride < 0) { fs_error(c, GL_INVALID_VALUE); return; }
+    if (!r) { fs_error(c, GL_INVALID_ENUM); return; }
+    GLsizei str = stride ? stride : r->s;
+    fs_client_array *tex = &c->arrays.texcoord[fs_client_active_unit(c)];
+    c->arrays.edge_flag.enabled = false;
+    c->arrays.index.enabled = false;
+    tex->enabled = r->et;
+    if (r->et)
+        set_array(c, tex, r->st, GL_FLOAT, str, pointer);
+    c->arrays.color.enabled = r->ec;
+    if (r->ec)
+        set_array(c, &c->arrays.color, r->sc, r->tc, str, offset_by(pointer, r->pc));
+    c->arrays.normal.enabled = r->en;
+    if (r->en)
+        set_array(c, &c->arrays.normal, 3, GL_FLOAT, str, offset_by(pointer, r->pn));
+    c->arrays.vertex.enabled = true;
+    set_array(c, &c->arrays.vertex, r->sv, GL_FLOAT, str, offset_by(pointer, r->pv));
+}
+
 /* ---- fetch ---- */
 /* How integer components become floats: not at all (positions, texture
  * coordinates), as the colour conversions of table 2.9 (glArrayElement,
@@ -1030,6 +1102,41 @@ void fs_exec_DrawElements(fs_context *c, GLenum mode, GLsizei count, GLenum type
     if (!fs_prim_mode_valid(mode) || !index_type_valid(type)) { fs_error(c, GL_INVALID_ENUM); return; }
     if (count < 0) { fs_error(c, GL_INVALID_VALUE); return; }
     draw_elements(c, mode, count, type, indices);
+}
+
+/* GL 1.4 spec 2.8: glMultiDrawElements is a glDrawElements per draw, in
+ * order.  Its errors as OSMesa raises them, before any draw, in this
+ * order: a negative drawcount GL_INVALID_VALUE, a bad mode or type
+ * GL_INVALID_ENUM, a negative count GL_INVALID_VALUE
+ * (tests/test_array_draws.c, multidraw_elements_errors_vs_osmesa). */
+bool fs_multidraw_elements_valid(fs_context *c, GLenum mode, const GLsizei *count, GLenum type, GLsizei drawcount)
+{
+    GLenum err = GL_NO_ERROR;
+    if (drawcount < 0)
+        err = GL_INVALID_VALUE;
+    else if (!fs_prim_mode_valid(mode) || !index_type_valid(type))
+        err = GL_INVALID_ENUM;
+    for (GLsizei i = 0; err == GL_NO_ERROR && i < drawcount; i++)
+        if (count[i] < 0)
+            err = GL_INVALID_VALUE;
+    if (err != GL_NO_ERROR)
+        fs_error(c, err);
+    return err == GL_NO_ERROR;
+}
+
+/* The driver runs the draws itself (driver/dispatch.c: each one's indices
+ * may be an offset into the element array buffer); this is the call on
+ * client memory alone. */
+void fs_exec_MultiDrawElements(fs_context *c, GLenum mode, const GLsizei *count, GLenum type,
+                               const GLvoid *const *indices, GLsizei drawcount)
+{
+    if (!fs_multidraw_elements_valid(c, mode, count, type, drawcount))
+        return;
+    for (GLsizei i = 0; i < drawcount; i++)
+        if (!indices[i])
+            return; /* as OSMesa: with client indices, one NULL draws nothing */
+    for (GLsizei i = 0; i < drawcount; i++)
+        draw_elements(c, mode, count[i], type, indices[i]);
 }
 
 void fs_exec_DrawRangeElements(fs_context *c, GLenum mode, GLuint start, GLuint end, GLsizei count,

@@ -190,4 +190,8 @@ void fs_color_material_update(fs_context *c);
  * queries excepted. */
 void fs_vs_attrib_given(fs_context *c, unsigned attribs);
 void fs_vs_format_reset(fs_context *c);
+/* glMultiDrawElements' arguments (GL 1.4 spec 2.8): false, with the GL
+ * error raised, when it draws nothing for a bad one (the driver then runs
+ * its draws as glDrawElements calls, driver/dispatch.c). */
+bool fs_multidraw_elements_valid(fs_context *c, GLenum mode, const GLsizei *count, GLenum type, GLsizei drawcount);
 #endif

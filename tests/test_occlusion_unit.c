@@ -771,7 +771,7 @@ TEST(gen_queries_from_trace_huge_count_allocates_nothing)
 
 /* The dispatcher gives a pointer argument's trace data a meaning for the
  * client-array pointer calls (copied into the context) and drops it for
- * glOcclusionBuffers (above).  A new command with a pointer argument must
+ * glOcclusionBuffers (above) and glInterleavedArrays (counted unsupported).  A new command with a pointer argument must
  * be added there too, or its trace data would be taken for addresses. */
 TEST(every_pointer_argument_has_a_rule_for_trace_data)
 {
@@ -781,7 +781,8 @@ TEST(every_pointer_argument_has_a_rule_for_trace_data)
         for (int k = 0; k < info->nargs; k++) {
             if (info->kinds[k] != FS_K_CPTR)
                 continue;
-            bool ruled = (slot >= 0 && k == pk) || (cmd == FS_CMD_OcclusionBuffers && k == 1);
+            bool ruled = (slot >= 0 && k == pk) || (cmd == FS_CMD_OcclusionBuffers && k == 1) ||
+                         (cmd == FS_CMD_InterleavedArrays && k == 2);
             if (!ruled)
                 fprintf(stderr, "  %s argument %d (%s): no rule for trace data\n", info->name, k,
                         info->argnames[k]);
