@@ -124,6 +124,10 @@ static inline unsigned route_edges(const prim_ctx *p, size_t a, size_t b, size_t
 static void tri_e(const prim_ctx *p, size_t a, size_t b, size_t cc, unsigned bound)
 {
     fs_context *c = p->c;
+    /* The line stipple counter restarts at a triangle the draw module
+     * marks (FS_EDGES_RESET; polygon_mode.c). */
+    c->raster.stipple_reset = (bound & FS_EDGES_RESET) != 0;
+    bound &= FS_EDGES_ALL;
     const fs_pvert *v0 = V(p, a), *v1 = V(p, b), *v2 = V(p, cc);
     c->stats.triangles_in++;
     unsigned any = v0->mask | v1->mask | v2->mask, all = v0->mask & v1->mask & v2->mask;
@@ -156,10 +160,16 @@ static void tri_e(const prim_ctx *p, size_t a, size_t b, size_t cc, unsigned bou
     }
 }
 
-static inline void tri(const prim_ctx *p, size_t a, size_t b, size_t cc) { tri_e(p, a, b, cc, FS_EDGES_ALL); }
-
-static void line(const prim_ctx *p, size_t a, size_t b)
+static inline void tri(const prim_ctx *p, size_t a, size_t b, size_t cc)
 {
+    tri_e(p, a, b, cc, FS_EDGES_ALL | FS_EDGES_RESET);
+}
+
+/* reset: the segment starts a primitive, which sets the line stipple
+ * counter to 0 if the segment reaches the stipple (rasterize_line.c). */
+static void line(const prim_ctx *p, size_t a, size_t b, bool reset)
+{
+    p->c->raster.stipple_reset = reset;
     fs_clip_line(p->c, p->s, V(p, a), V(p, b));
 }
 
@@ -208,16 +218,16 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
         break;
     case GL_LINES:
         for (i = 0; i + 1 < count; i += 2)
-            line(&p, i, i + 1);
+            line(&p, i, i + 1, true);
         break;
     case GL_LINE_STRIP:
     case GL_LINE_LOOP:
         if (count < 2)
             break;
         for (i = 1; i < count; i++)
-            line(&p, i - 1, i);
+            line(&p, i - 1, i, i == 1);
         if (mode == GL_LINE_LOOP)
-            line(&p, count - 1, 0);
+            line(&p, count - 1, 0, false);
         break;
     case GL_TRIANGLES:
         for (i = 0; i + 2 < count; i += 3)
@@ -241,7 +251,7 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
                 tri(&p, i - 3, i - 2, i - 1);
                 tri(&p, i - 3, i - 1, i);
             } else {
-                tri_e(&p, i - 3, i - 2, i, 5u);
+                tri_e(&p, i - 3, i - 2, i, 5u | FS_EDGES_RESET);
                 tri_e(&p, i - 2, i - 1, i, 3u);
             }
         }
@@ -252,7 +262,7 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
                 tri(&p, i - 3, i - 2, i);
                 tri(&p, i - 1, i - 3, i);
             } else {
-                tri_e(&p, i - 1, i - 3, i, 5u);
+                tri_e(&p, i - 1, i - 3, i, 5u | FS_EDGES_RESET);
                 tri_e(&p, i - 3, i - 2, i, 3u);
             }
         }
@@ -261,7 +271,7 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
         /* Fan (i-1, i, 0): edge 0 is always outer, edge 1 (i -> 0) only
          * in the last triangle, edge 2 (0 -> 1) only in the first. */
         for (i = 2; i < count; i++)
-            tri_e(&p, i - 1, i, 0, 1u | (i + 1 == count ? 2u : 0u) | (i == 2 ? 4u : 0u));
+            tri_e(&p, i - 1, i, 0, 1u | (i + 1 == count ? 2u : 0u) | (i == 2 ? 4u | FS_EDGES_RESET : 0u));
         break;
     default:
         break;
