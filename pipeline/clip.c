@@ -337,7 +337,7 @@ void fs_emit_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
     cvert a, b;
     from_pvert(s, &a, v0);
     from_pvert(s, &b, v1);
-    emit_line2(c, s, &a, &b, s->flat ? v1 : NULL);
+    emit_line2(c, s, &a, &b, s->flat ? (s->flat_first ? v0 : v1) : NULL);
 }
 
 void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1)
@@ -389,7 +389,7 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
     }
     if (!(pa->clip[3] > 0.0f) || !(pb->clip[3] > 0.0f))
         return;
-    emit_line2(c, s, pa, pb, s->flat ? v1 : NULL);
+    emit_line2(c, s, pa, pb, s->flat ? (s->flat_first ? v0 : v1) : NULL);
 }
 
 void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)

@@ -16,7 +16,12 @@
  *    decomposition, quads (0,1,3),(1,2,3), quad strips (2,0,3),(0,1,3),
  *    polygons (i+1,i+2,0), and triangles needing it are clipped (clip.c).
  * Provoking vertex (2.14.7): the last vertex of each primitive, the first
- * of a polygon; in every split above it lands last in the triangle.
+ * of a polygon; in every split above it lands last in the triangle.  With
+ * glProvokingVertex(GL_FIRST_VERTEX_CONVENTION) (ARB_provoking_vertex's
+ * table) lines, triangles, strips and fans take their first vertex's
+ * colour instead (a fan's vertex i + 1), which llvmpipe emits first;
+ * quads and quad strips keep the last (GL_QUADS_FOLLOW_PROVOKING_VERTEX_
+ * CONVENTION is false on llvmpipe), polygons the first.
  */
 #include <math.h>
 #include "vertex_internal.h"
@@ -33,6 +38,7 @@ typedef struct prim_ctx {
     fs_ivert *iv;        /* lazy attributes: the inputs, else NULL */
     const uint32_t *idx;
     int prov;            /* provoking position in each triangle, -1 smooth */
+    bool first;          /* GL_FIRST_VERTEX_CONVENTION (flat only) */
     bool masked;         /* the observer's tile mask is on for this draw */
     bool drop;           /* ... and a triangle outside it may skip the rasterizer */
     bool quiet;          /* a quiet draw (observer.h): a triangle outside the
@@ -188,7 +194,7 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
                   const uint32_t *idx, size_t count, bool elements)
 {
     const fs_tile_mask *m = fs_vs_tile_mask(c, mode);
-    prim_ctx p = {c, s, pv, iv, idx, s->flat ? 2 : -1, m != NULL, m && !c->raster.reference_path && !fs_vs(c)->tri_hook,
+    prim_ctx p = {c, s, pv, iv, idx, s->flat ? 2 : -1, s->flat_first, m != NULL, m && !c->raster.reference_path && !fs_vs(c)->tri_hook,
                   m && m->quiet, draw_module_route(c, s)};
     /* Only quads and quad strips split by the route (see the top); the
      * draw module's stages take every triangle through its pipeline.
@@ -230,20 +236,40 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
             line(&p, count - 1, 0, false);
         break;
     case GL_TRIANGLES:
-        for (i = 0; i + 2 < count; i += 3)
-            tri(&p, i, i + 1, i + 2);
-        break;
     case GL_TRIANGLE_STRIP:
-        for (i = 2; i < count; i++) {
-            if (i & 1)
-                tri(&p, i - 1, i - 2, i);
-            else
-                tri(&p, i - 2, i - 1, i);
-        }
-        break;
     case GL_TRIANGLE_FAN:
-        for (i = 2; i < count; i++)
-            tri(&p, 0, i - 1, i);
+        if (p.first) {
+            /* GL_FIRST_VERTEX_CONVENTION (ARB_provoking_vertex's table):
+             * the triangle's first vertex, strip vertex i, fan vertex
+             * i + 1; llvmpipe then emits that vertex first (its setup's
+             * and draw module's flatshade_first orders). */
+            p.prov = 0;
+            for (i = 2; i < count; i++) {
+                if (mode == GL_TRIANGLES && i % 3 != 2)
+                    continue;
+                if (mode == GL_TRIANGLE_FAN)
+                    tri(&p, i - 1, i, 0);
+                else if (mode == GL_TRIANGLE_STRIP && (i & 1))
+                    tri(&p, i - 2, i, i - 1);
+                else
+                    tri(&p, i - 2, i - 1, i);
+            }
+            break;
+        }
+        if (mode == GL_TRIANGLES) {
+            for (i = 0; i + 2 < count; i += 3)
+                tri(&p, i, i + 1, i + 2);
+        } else if (mode == GL_TRIANGLE_STRIP) {
+            for (i = 2; i < count; i++) {
+                if (i & 1)
+                    tri(&p, i - 1, i - 2, i);
+                else
+                    tri(&p, i - 2, i - 1, i);
+            }
+        } else {
+            for (i = 2; i < count; i++)
+                tri(&p, 0, i - 1, i);
+        }
         break;
     case GL_QUADS:
         for (i = 3; i < count; i += 4) {
