@@ -213,6 +213,9 @@ static void emit_clipped(fs_context *c, const fs_vs_setup *s, cvert *const *in, 
     for (unsigned i = 2; i < n; i++) {
         unsigned e = (bound[i - 1] ? 1u : 0u) | (i == n - 1 && bound[n - 1] ? 2u : 0u) | (i == 2 && bound[0] ? 4u : 0u);
         unsigned v = (in[i - 1]->edge ? 1u : 0u) | (in[i]->edge ? 2u : 0u) | (in[0]->edge ? 4u : 0u);
+        /* Mesa's clipper marks the first triangle of the fan as starting
+         * a primitive for the line stipple, whatever the original was. */
+        c->raster.stipple_reset = i == 2;
         emit_cverts(c, s, in[i - 1], in[i], in[0], flat, flat2, (e & v) | route);
     }
 }
@@ -343,7 +346,7 @@ void fs_emit_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
     cvert a, b;
     from_pvert(s, &a, v0);
     from_pvert(s, &b, v1);
-    emit_line2(c, s, &a, &b, s->flat ? v1 : NULL);
+    emit_line2(c, s, &a, &b, s->flat ? (s->flat_first ? v0 : v1) : NULL);
 }
 
 void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const fs_pvert *v1)
@@ -395,7 +398,7 @@ void fs_clip_line(fs_context *c, const fs_vs_setup *s, const fs_pvert *v0, const
     }
     if (!(pa->clip[3] > 0.0f) || !(pb->clip[3] > 0.0f))
         return;
-    emit_line2(c, s, pa, pb, s->flat ? v1 : NULL);
+    emit_line2(c, s, pa, pb, s->flat ? (s->flat_first ? v0 : v1) : NULL);
 }
 
 void fs_emit_point(fs_context *c, const fs_vs_setup *s, const fs_pvert *v)

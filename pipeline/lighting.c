@@ -338,6 +338,16 @@ void fs_exec_ShadeModel(fs_context *c, GLenum mode)
     c->lighting.shade_model = mode;
 }
 
+void fs_exec_ProvokingVertex(fs_context *c, GLenum mode)
+{
+    /* ARB_provoking_vertex: any other mode is INVALID_ENUM. */
+    if (mode != GL_FIRST_VERTEX_CONVENTION && mode != GL_LAST_VERTEX_CONVENTION) {
+        fs_error(c, GL_INVALID_ENUM);
+        return;
+    }
+    c->lighting.provoking_vertex = mode;
+}
+
 static void apply_color_material(fs_material *m, GLenum mode, const float col[4])
 {
     switch (mode) {

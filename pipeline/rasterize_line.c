@@ -63,7 +63,8 @@ static void line_color_planes(fs_plane *p, int n, const line_info *li, const flo
     }
 }
 
-void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
+/* One segment, as llvmpipe's line setup draws it. */
+static void raster_segment(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
 {
     const fs_raster_state *r = &c->raster;
     const int W = c->fb.width, H = c->fb.height;
@@ -288,4 +289,122 @@ void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
             }
     }
     fs_raster_planes(c, &s, &e);
+}
+
+/*
+ * Line stipple (GL 1.5 spec 3.4.2) as llvmpipe does it: its draw module's
+ * stipple stage (draw_pipe_stipple.c, Mesa 22.3, read for the rule) runs
+ * after clipping and polygon mode and before the antialiased-line stage,
+ * and cuts each segment into the pieces whose pixels the pattern keeps,
+ * which the line setup then draws as ordinary segments (their ends by the
+ * diamond-exit rule, their width, their smoothing):
+ *  - the segment's length l is max(|dx|, |dy|) in window coordinates (the
+ *    major axis, as the spec counts), the Euclidean length for smooth
+ *    lines; n = ceil(l) pixels, none when l is not finite;
+ *  - pixel i (0 <= i < n) is on when bit ((s + i) / r) mod 16 of the
+ *    pattern is 1, with s the stipple counter and r the repeat;
+ *  - each run of on pixels from i0 to i1 (exclusive) becomes the piece
+ *    from parameter i0 / l to i1 / l (to 1 for a run that reaches the
+ *    end), its vertices interpolated linearly in window space (positions,
+ *    1/w, colours, texture coordinates, fog alike); an end at parameter 0
+ *    or 1 is the segment's own vertex;
+ *  - then s += n.
+ * The counter is set to 0 where a primitive starts (fs_raster_state.
+ * stipple_reset): each segment of GL_LINES, the first of a strip or loop
+ * (so a loop's closing segment goes on counting), and for polygon edges
+ * each triangle the draw module marks (every triangle of GL_TRIANGLES,
+ * strips and fans, the first of each quad, the first of a polygon, the
+ * first of each clipped triangle's fan; polygon_mode.c).  A segment
+ * wholly outside the view volume never reaches the stage: its mark is
+ * lost and the counter runs on from the previous draw.
+ * Mesa enables the stage only when the pattern is not all ones.
+ */
+static inline bool stipple_on(unsigned counter, unsigned pattern, unsigned repeat)
+{
+    return (pattern >> ((counter / repeat) & 0xfu)) & 1u;
+}
+
+bool fs_raster_line_stippled(const fs_context *c)
+{
+    return c->raster.line_stipple && (c->st.line_stipple_pattern & 0xffffu) != 0xffffu;
+}
+
+/* The vertex at parameter t from a to b (draw_pipe_stipple.c's
+ * screen_interp); y_raster is llvmpipe's y-down window y. */
+static void stipple_vertex(fs_rvertex *d, float t, const fs_rvertex *a, const fs_rvertex *b, int units)
+{
+#define L(f) d->f = a->f + t * (b->f - a->f)
+    *d = *a;
+    L(x);
+    L(y);
+    L(y_raster);
+    L(z);
+    L(inv_w);
+    L(fog);
+    for (int k = 0; k < 4; k++) {
+        L(color[k]);
+        L(color2[k]);
+        for (int u = 0; u < units; u++)
+            L(tex[u][k]);
+    }
+#undef L
+}
+
+static void stipple_piece(fs_context *c, const fs_rvertex *a, const fs_rvertex *b, float t0, float t1)
+{
+    fs_rvertex p0, p1;
+    const int units = c->raster.tex_units;
+    if (t0 > 0.0f)
+        stipple_vertex(&p0, t0, a, b, units);
+    if (t1 < 1.0f)
+        stipple_vertex(&p1, t1, a, b, units);
+    raster_segment(c, t0 > 0.0f ? &p0 : a, t1 < 1.0f ? &p1 : b);
+}
+
+void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
+{
+    fs_raster_state *r = &c->raster;
+    if (!fs_raster_line_stippled(c)) {
+        raster_segment(c, va, vb);
+        return;
+    }
+    if (r->stipple_reset)
+        r->stipple_counter = 0;
+    r->stipple_reset = false;
+    /* Positions in llvmpipe's frame, which the pieces are cut in. */
+    const int H = c->fb.height;
+    fs_rvertex a = *va, b = *vb;
+    if (!r->use_y_raster) {
+        a.y_raster = fs_raster_y(H, va->y);
+        b.y_raster = fs_raster_y(H, vb->y);
+    }
+    float length;
+    if (r->line_smooth) {
+        float dx = b.x - a.x, dy = b.y_raster - a.y_raster;
+        length = sqrtf(dx * dx + dy * dy);
+    } else {
+        float dx = a.x > b.x ? a.x - b.x : b.x - a.x;
+        float dy = a.y_raster > b.y_raster ? a.y_raster - b.y_raster : b.y_raster - a.y_raster;
+        length = dx > dy ? dx : dy;
+    }
+    int n = isfinite(length) ? (int)ceilf(length) : 0;
+    const unsigned pattern = c->st.line_stipple_pattern, repeat = (unsigned)c->st.line_stipple_repeat;
+    const bool saved_yr = r->use_y_raster;
+    r->use_y_raster = true;
+    bool on = false;
+    int start = 0;
+    for (int i = 0; i < n; i++) {
+        bool bit = stipple_on(r->stipple_counter + (unsigned)i, pattern, repeat);
+        if (bit == on)
+            continue;
+        if (on)
+            stipple_piece(c, &a, &b, (float)start / length, (float)i / length);
+        else
+            start = i;
+        on = bit;
+    }
+    if (on && (float)start < length)
+        stipple_piece(c, &a, &b, (float)start / length, 1.0f);
+    r->use_y_raster = saved_yr;
+    r->stipple_counter += (unsigned)n;
 }

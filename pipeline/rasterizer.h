@@ -125,6 +125,16 @@ typedef struct fs_raster_state {
     /* GL_LINE_SMOOTH and GL_POINT_SMOOTH (3.4.4, 3.3.1): llvmpipe's
      * coverage (line_smooth.c, rasterize_point.c). */
     bool line_smooth, point_smooth;
+    /* GL_LINE_STIPPLE (3.4.2; pattern and repeat in fs_stored_state) and
+     * the stipple counter s, as llvmpipe's draw module keeps it
+     * (rasterize_line.c): whole pixels counted along each segment's major
+     * axis, kept across segments and draws, and set to 0 only when a
+     * primitive that starts a new stipple reaches the stipple stage:
+     * stipple_reset is that mark, set by primitive assembly (primitive.c,
+     * clip.c) for the line or triangle it hands on next. */
+    bool line_stipple;
+    bool stipple_reset;
+    unsigned stipple_counter;
     /* GL_POLYGON_SMOOTH (3.5.6): stored only; llvmpipe draws polygons the
      * same with it (measured on OSMesa, blending on and off: identical
      * bytes), having no antialiased-triangle stage. */
@@ -233,6 +243,12 @@ static inline bool fs_raster_draw_pipeline(const fs_raster_state *r)
 /* Set in the edges the vertex stage hands on (clip.c) when the triangle
  * takes the draw module's route to fs_raster_polygon. */
 #define FS_EDGES_ROUTE 0x40u
+/* In what primitive assembly hands on (primitive.c, never to the
+ * rasterizer): the triangle starts a primitive, as the draw module's
+ * decomposition marks one for the line stipple (DRAW_PIPE_RESET_STIPPLE):
+ * each triangle of GL_TRIANGLES, strips and fans, the first of each quad
+ * and of a polygon. */
+#define FS_EDGES_RESET 0x80u
 /* The draw module's post-clip stages for one triangle (polygon_mode.c):
  * facing and culling, polygon offset, then the face's polygon mode:
  * filled, its flagged edges as lines, or its flagged vertices as points. */
@@ -248,6 +264,8 @@ void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v
  * llvmpipe's frame (fs_rvertex.y_raster). */
 void fs_raster_triangle_dropped(fs_context *c, const float x[3], const float y_raster[3]);
 void fs_raster_line(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1);
+/* Whether GL_LINE_STIPPLE cuts lines (rasterize_line.c). */
+bool fs_raster_line_stippled(const fs_context *c);
 void fs_raster_point(fs_context *c, const fs_rvertex *v);
 /* The same with the point's size given (fs_raster_point takes
  * fs_point_size's): a size the vertex stage derived (point_state.c). */

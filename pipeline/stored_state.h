@@ -28,8 +28,8 @@ typedef struct fs_fog_state {
 
 typedef struct fs_stored_state {
     fs_fog_state fog;
-    /* 3.4.2, table 6.13 (pipeline/polygon_state.c): enabling
-     * GL_LINE_STIPPLE is counted as unsupported. */
+    /* 3.4.2, table 6.13 (pipeline/polygon_state.c), read by the line
+     * stipple (pipeline/rasterize_line.c). */
     GLuint line_stipple_pattern; /* 0xffff */
     GLint line_stipple_repeat;   /* 1, clamped to [1, 256] */
     /* 3.6.4, table 6.23 (pipeline/pixel_state.c): glDrawPixels and

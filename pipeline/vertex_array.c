@@ -526,6 +526,7 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     s->yr_trans = (float)c->fb.height - s->vp_trans[1];
     c->raster.use_y_raster = true; /* every fs_rvertex from here carries it */
     s->flat = c->lighting.shade_model == GL_FLAT;
+    s->flat_first = s->flat && c->lighting.provoking_vertex == GL_FIRST_VERTEX_CONVENTION;
     c->raster.flat_color = s->flat;
     c->raster.const_attribs = 0; /* interpolate all unless the draw says (fs_vs_constant_attribs) */
     s->fog = c->st.fog.enabled;

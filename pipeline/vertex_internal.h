@@ -120,6 +120,10 @@ typedef struct fs_vs_setup {
     int cm_face_mask;   /* bit 0 front, bit 1 back: faces tracking the colour */
     GLenum cm_mode;
     bool flat;
+    /* Flat shading with GL_FIRST_VERTEX_CONVENTION (glProvokingVertex):
+     * lines, triangles, strips and fans take the first vertex's colour
+     * (primitive.c, clip.c). */
+    bool flat_first;
     /* Fog (3.10): GL_FOG is enabled, so each vertex gets its fog
      * coordinate (fs_pvert.fog). */
     bool fog;

@@ -75,6 +75,9 @@ typedef struct fs_lighting_state {
     bool color_material;     /* GL_COLOR_MATERIAL */
     GLenum color_material_face, color_material_mode;
     GLenum shade_model;      /* GL_SMOOTH */
+    /* glProvokingVertex (EXT/ARB_provoking_vertex, GL 3.2 2.19): which
+     * vertex a flat-shaded line or triangle takes its colour from. */
+    GLenum provoking_vertex; /* GL_LAST_VERTEX_CONVENTION */
 } fs_lighting_state;
 
 typedef struct fs_current_state {

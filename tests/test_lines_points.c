@@ -21,7 +21,22 @@ typedef struct scene {
     float max_width;
     bool polygons;  /* GL_LINE polygons instead of line primitives */
     bool clipped;   /* end points beyond the view volume, perspective */
+    bool stipple;   /* GL_LINE_STIPPLE: random pattern and repeat per draw */
 } scene;
+
+/* A random stipple for the next draw (GL 1.5 spec 3.4.2): repeat 1 to 4,
+ * now and then a bigger one or the all-ones pattern (which Mesa treats as
+ * no stipple). */
+static void random_stipple(fs_context *c, rng *r)
+{
+    GLint repeat = 1 + (GLint)(rnd(r) % 4);
+    if (rnd(r) % 8 == 0)
+        repeat = 5 + (GLint)(rnd(r) % 12);
+    GLushort pattern = (GLushort)rnd(r);
+    if (rnd(r) % 10 == 0)
+        pattern = 0xffff;
+    G(LineStipple, repeat, pattern);
+}
 
 static void draw_scene(fs_context *c, const void *user, int w, int h)
 {
@@ -36,7 +51,11 @@ static void draw_scene(fs_context *c, const void *user, int w, int h)
      * centres and corners are draw_ends_scene's); the clipped scenes clip
      * by the near and far planes only. */
     float extent = 0.9f;
+    if (sc->stipple)
+        G(Enable, GL_LINE_STIPPLE);
     for (int draw = 0; draw < 10; draw++) {
+        if (sc->stipple)
+            random_stipple(c, &r);
         /* Whole, half and arbitrary widths (rounding of halves). */
         float wd = rnd_in(&r, 0.3f, sc->max_width);
         if (rnd(&r) % 3 == 0)
@@ -110,21 +129,22 @@ static int smooth_line_runs(check_state *check_st_, smooth_scene sc, unsigned fi
 }
 
 /* Known differences, bounded so that a regression fails (without
- * line_smooth.c every scene differs, in hundreds of pixels): measured 10
- * of 40 2D scenes differ in 1 to 5 pixels (most by one unit, one by 7),
- * not analysed, and 5 of 30 perspective
- * scenes in at most 11 pixels (one pixel by 20); with the depth test on, a
- * strip's or loop's segments overlap where they meet or retrace each
- * other, their depths tie, and 12 of 40 scenes differ in up to 57 pixels
- * (a pixel passes GL_LESS here and not there).  The rest are exact. */
-TEST(smooth_lines_vs_osmesa) { CHECK(smooth_line_runs(check_st_, (smooth_scene){0, false, false}, 1, 40) <= 10); }
+ * line_smooth.c every scene differs, in hundreds of pixels): measured 7
+ * of 40 2D scenes differ in 1 pixel by one unit, not analysed, and 2 of
+ * 30 perspective scenes in 1 pixel by one unit (before the short-segment
+ * rule of line_smooth.c 10 and 5, some by up to 40); with the depth test
+ * on, a strip's or loop's segments overlap where they meet or retrace
+ * each other, their depths tie, and 10 of 40 scenes differ in up to 52
+ * pixels (a pixel passes GL_LESS here and not there).  The rest are
+ * exact. */
+TEST(smooth_lines_vs_osmesa) { CHECK(smooth_line_runs(check_st_, (smooth_scene){0, false, false}, 1, 40) <= 7); }
 
 TEST(smooth_lines_perspective_vs_osmesa)
 {
-    CHECK(smooth_line_runs(check_st_, (smooth_scene){0, true, false}, 100, 30) <= 5);
+    CHECK(smooth_line_runs(check_st_, (smooth_scene){0, true, false}, 100, 30) <= 2);
 }
 
-TEST(smooth_lines_depth_vs_osmesa) { CHECK(smooth_line_runs(check_st_, (smooth_scene){0, false, true}, 1, 40) <= 12); }
+TEST(smooth_lines_depth_vs_osmesa) { CHECK(smooth_line_runs(check_st_, (smooth_scene){0, false, true}, 1, 40) <= 10); }
 
 /* GL_POINT_SMOOTH (3.3.1): points of random sizes 0.5 to 20 (fractional
  * ones included) at random positions, some partly off the window, blended,
@@ -223,7 +243,11 @@ static void draw_ends_scene(fs_context *c, const void *user, int w, int h)
     G(MatrixMode, GL_PROJECTION);
     G(Ortho, 0, w, 0, h, -1, 1);
     G(MatrixMode, GL_MODELVIEW);
+    if (sc->stipple)
+        G(Enable, GL_LINE_STIPPLE);
     for (int draw = 0; draw < 12; draw++) {
+        if (sc->stipple)
+            random_stipple(c, &r);
         G(LineWidth, draw % 3 ? 1.0f : (float)(1 + rnd(&r) % 7));
         G(ShadeModel, rnd(&r) & 1 ? GL_FLAT : GL_SMOOTH);
         int place = (int)(rnd(&r) % 3); /* centres, corners, anywhere */
@@ -270,7 +294,103 @@ TEST(lines_beyond_window_vs_osmesa)
 
 TEST(wide_polygon_edges_vs_osmesa) { check_scenes(check_st_, (scene){0, 6.0f, true, true}, 200, 30); }
 
+/* GL_LINE_STIPPLE (3.4.2) against OSMesa: the counter counted in pixels
+ * along the major axis and not reset between a strip's or loop's
+ * segments, reset for each segment of GL_LINES; widths up to 3; lines
+ * clipped by the near and far planes (perspective) and by the window's
+ * edges (the counter starts where the clipped line does); the edges of
+ * GL_LINE triangles, quads and polygons (the counter restarts per
+ * triangle of GL_TRIANGLES, per quad, per polygon and per clipped
+ * triangle). */
+TEST(stippled_lines_vs_osmesa) { check_scenes(check_st_, (scene){0, 3.0f, false, false, true}, 300, 40); }
+
+TEST(stippled_lines_clipped_vs_osmesa) { check_scenes(check_st_, (scene){0, 3.0f, false, true, true}, 400, 30); }
+
+TEST(stippled_polygon_edges_vs_osmesa) { check_scenes(check_st_, (scene){0, 3.0f, true, true, true}, 500, 30); }
+
+TEST(stippled_lines_beyond_window_vs_osmesa)
+{
+    scene base = {0, 0, false, true, true};
+    seeded_run r = {draw_ends_scene, &base, &base.seed, 40, 32, 7, 5, "stipple_clip"};
+    check_seeded_runs(check_st_, &r, 600, 60);
+}
+
+/* Smooth stippled lines: the stage cuts them by their Euclidean length
+ * before the antialiasing stage draws each piece. */
+static void draw_smooth_stippled(fs_context *c, const void *user, int w, int h)
+{
+    const smooth_scene *sc = user;
+    rng r = {sc->seed * 2654435761u + 19};
+    scene_view(c, w, h, sc->perspective);
+    G(Disable, GL_DEPTH_TEST);
+    G(Enable, GL_LINE_SMOOTH);
+    G(Enable, GL_LINE_STIPPLE);
+    G(Enable, GL_BLEND);
+    G(BlendFunc, GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    const GLenum prims[3] = {GL_LINES, GL_LINE_STRIP, GL_LINE_LOOP};
+    for (int draw = 0; draw < 8; draw++) {
+        random_stipple(c, &r);
+        G(LineWidth, rnd_in(&r, 0.5f, 3.0f));
+        GLenum prim = prims[rnd(&r) % 3];
+        int n = 2 + (int)(rnd(&r) % 7);
+        G(Begin, prim);
+        for (int i = 0; i < n; i++) {
+            G(Color4f, rndf(&r), rndf(&r), rndf(&r), 1);
+            G(Vertex3f, rnd_in(&r, -0.9f, 0.9f), rnd_in(&r, -0.9f, 0.9f), rnd_in(&r, -0.9f, 0.9f));
+        }
+        G0(End);
+    }
+    G0(Finish);
+}
+
+/* Known difference: 1 of 30 scenes differs in one pixel by one unit, of
+ * the kind smooth_lines_vs_osmesa has (without the stipple all 30 differ,
+ * without line_smooth.c's short-segment rule 29 of 30). */
+TEST(stippled_smooth_lines_vs_osmesa)
+{
+    smooth_scene sc = {0, false, false};
+    seeded_run r = {draw_smooth_stippled, &sc, &sc.seed, 61, 47, 6, 6, "stipple_smooth"};
+    long lit = 0;
+    int bad = seeded_runs(&r, 700, 30, &lit);
+    REQUIRE(bad >= 0);
+    CHECK(lit > 0);
+    CHECK(bad <= 1);
+}
+
+/* glEnable(GL_LINE_STIPPLE) is modelled: not counted as unsupported;
+ * glGet and glIsEnabled answer, glPushAttrib(GL_LINE_BIT) saves it. */
+TEST(line_stipple_state)
+{
+    fs_context *c = fs_context_create(NULL, 16, 16);
+    REQUIRE(c);
+    fsglLineStipple(c, 300, 0x1234);
+    fsglPushAttrib(c, GL_LINE_BIT);
+    fsglEnable(c, GL_LINE_STIPPLE);
+    fsglLineStipple(c, 0, 0xf0f0);
+    CHECK(fsglIsEnabled(c, GL_LINE_STIPPLE));
+    GLint v = 0;
+    fsglGetIntegerv(c, GL_LINE_STIPPLE_REPEAT, &v);
+    CHECK_EQ_INT(v, 1);
+    fsglGetIntegerv(c, GL_LINE_STIPPLE_PATTERN, &v);
+    CHECK_EQ_INT(v, 0xf0f0);
+    fsglPopAttrib(c);
+    CHECK(!fsglIsEnabled(c, GL_LINE_STIPPLE));
+    fsglGetIntegerv(c, GL_LINE_STIPPLE_REPEAT, &v);
+    CHECK_EQ_INT(v, 256);
+    fsglGetIntegerv(c, GL_LINE_STIPPLE_PATTERN, &v);
+    CHECK_EQ_INT(v, 0x1234);
+    CHECK_EQ_UINT(c->stats.unsupported_calls, 0);
+    CHECK_EQ_UINT(fsglGetError(c), GL_NO_ERROR);
+    fs_context_destroy(c);
+}
+
 TEST_LIST = {
+    TEST_ENTRY(stippled_lines_vs_osmesa),
+    TEST_ENTRY(stippled_lines_clipped_vs_osmesa),
+    TEST_ENTRY(stippled_polygon_edges_vs_osmesa),
+    TEST_ENTRY(stippled_lines_beyond_window_vs_osmesa),
+    TEST_ENTRY(stippled_smooth_lines_vs_osmesa),
+    TEST_ENTRY(line_stipple_state),
     TEST_ENTRY(wide_lines_vs_osmesa),
     TEST_ENTRY(wide_lines_clipped_vs_osmesa),
     TEST_ENTRY(wide_polygon_edges_vs_osmesa),
