@@ -238,7 +238,7 @@ static uint32_t load(const uint8_t *p, int bytes, bool swap)
     return v;
 }
 
-static void store(uint8_t *p, int bytes, bool swap, uint32_t v)
+void fs_pixel_store_elem(uint8_t *p, int bytes, bool swap, uint32_t v)
 {
     uint8_t b[4];
     if (bytes == 1) {
@@ -590,13 +590,13 @@ void fs_pixel_pack_rgba8(const fs_pixel_layout *l, void *pixels, int64_t y, int6
                           px[3] * (1.0f / 255.0f)};
             f[0] = f[0] < 1.0f ? f[0] : 1.0f;
             for (int k = 0; k < nc; k++)
-                store(out + k * l->elem_bytes, l->elem_bytes, l->swap_bytes, elem_from_float(f[k], l->type));
+                fs_pixel_store_elem(out + k * l->elem_bytes, l->elem_bytes, l->swap_bytes, elem_from_float(f[k], l->type));
             continue;
         }
         if (lum_float) {
             float f[2] = {px[0] * (1.0f / 255.0f), px[3] * (1.0f / 255.0f)};
             for (int k = 0; k < nc; k++)
-                store(out + k * l->elem_bytes, l->elem_bytes, l->swap_bytes, elem_from_float(f[k], l->type));
+                fs_pixel_store_elem(out + k * l->elem_bytes, l->elem_bytes, l->swap_bytes, elem_from_float(f[k], l->type));
             continue;
         }
         if (p.bytes) {
@@ -610,11 +610,11 @@ void fs_pixel_pack_rgba8(const fs_pixel_layout *l, void *pixels, int64_t y, int6
                 if (p.rev)
                     shift += b;
             }
-            store(out, p.bytes, l->swap_bytes, w);
+            fs_pixel_store_elem(out, p.bytes, l->swap_bytes, w);
             continue;
         }
         for (int k = 0; k < nc; k++)
-            store(out + k * l->elem_bytes, l->elem_bytes, l->swap_bytes, elem_from_8(px[idx[k]], l->type));
+            fs_pixel_store_elem(out + k * l->elem_bytes, l->elem_bytes, l->swap_bytes, elem_from_8(px[idx[k]], l->type));
     }
 }
 
@@ -658,7 +658,7 @@ void fs_pixel_pack_depth(const fs_pixel_layout *l, void *pixels, int64_t y, int6
         case GL_INT: v = (uint32_t)(int32_t)(2147483647.0 * (double)f); break;
         default: memcpy(&v, &f, 4); break;
         }
-        store(out, l->elem_bytes, l->swap_bytes, v);
+        fs_pixel_store_elem(out, l->elem_bytes, l->swap_bytes, v);
     }
 }
 
@@ -692,6 +692,6 @@ void fs_pixel_pack_stencil(const fs_pixel_layout *l, void *pixels, int64_t y, in
             float f = (float)stencil[i];
             memcpy(&v, &f, 4);
         }
-        store(out, l->elem_bytes, l->swap_bytes, v);
+        fs_pixel_store_elem(out, l->elem_bytes, l->swap_bytes, v);
     }
 }

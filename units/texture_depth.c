@@ -229,26 +229,6 @@ static float texel_for_get(const fs_tex_image *img, uint32_t v)
     return (float)((double)v / (double)((1ull << img->depth_bits) - 1u));
 }
 
-static void store_elem(uint8_t *p, int bytes, bool swap, uint32_t v)
-{
-    uint8_t b[4];
-    if (bytes == 1) {
-        b[0] = (uint8_t)v;
-    } else if (bytes == 2) {
-        uint16_t h = (uint16_t)v;
-        memcpy(b, &h, 2);
-    } else {
-        memcpy(b, &v, 4);
-    }
-    if (swap)
-        for (int i = 0; i < bytes / 2; i++) {
-            uint8_t t = b[i];
-            b[i] = b[bytes - 1 - i];
-            b[bytes - 1 - i] = t;
-        }
-    memcpy(p, b, (size_t)bytes);
-}
-
 void fs_tex_depth_get_image(fs_context *c, const fs_tex_image *img, int dims, GLenum type, void *pixels)
 {
     fs_pixel_store ps = fs_pixel_store_pack(c);
@@ -282,7 +262,7 @@ void fs_tex_depth_get_image(fs_context *c, const fs_tex_image *img, int dims, GL
                     break;
                 }
                 }
-                store_elem(dst, l.elem_bytes, l.swap_bytes, v);
+                fs_pixel_store_elem(dst, l.elem_bytes, l.swap_bytes, v);
             }
         }
 }
