@@ -34,7 +34,11 @@
  *   OSMesa (measured, tests/test_lighting_order.c).  The coefficients are
  *   doubles rounded to float.
  * pow's zero test is an unordered comparison too: a NaN base gives 0.
+ * The vertex code runs with denormals read as zero (measured on OSMesa,
+ * tests/test_vp_pow.c: pow(1e-40, 0.5) is 0, not 2^-66.4), so a denormal
+ * base is a zero one.
  */
+#include <float.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
@@ -122,7 +126,7 @@ static float exp2_approx(float v)
 
 float fs_vp_pow(float x, float y)
 {
-    if (!(x != 0.0f))
-        return 0.0f; /* zero or NaN */
+    if (!(fabsf(x) >= FLT_MIN))
+        return 0.0f; /* zero, denormal or NaN */
     return exp2_approx(log2_approx(x) * y);
 }
