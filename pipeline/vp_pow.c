@@ -19,8 +19,8 @@
  *   log2(x) = t P(z) + (e - 127), P of degree 4 in z (a minimax fit of
  *   log2((1 + sqrt z) / (1 - sqrt z)) / sqrt z).  Edge cases, by unordered
  *   comparisons (so a NaN x takes each of them in turn and ends NaN):
- *   x >= inf gives inf, x == 0 gives -inf, x < 0 gives NaN.  Denormals are
- *   not special: a zero exponent field reads as -127.
+ *   x >= inf gives inf, x == 0 gives -inf, x < 0 gives NaN.  (A denormal
+ *   never gets here: see the end of this comment.)
  * exp2(v): v clamped to [-126.99999, 128] (a NaN stays NaN), split into
  *   floor(v) and the fraction f = v - floor(v); 2^floor(v) is built in the
  *   exponent field ((floor(v) + 127) << 23: 0 for -127, inf for 128) and
@@ -28,11 +28,12 @@
  * The polynomials are evaluated as an even and an odd part in the square
  *   of their argument (c0 + u^2 (c2 + u^2 c4 ...) and c1 + u^2 (c3 ...)),
  *   then odd u + even; every step a multiply-add, emitted as LLVM's
- *   fmuladd, which LLVM fuses into one FMA on a CPU that has it (this one
- *   has, and so does every x86 CPU the tests measured on); with separate
- *   products and sums about a third of the specular values differ from
- *   OSMesa (measured, tests/test_lighting_order.c).  The coefficients are
- *   doubles rounded to float.
+ *   fmuladd, which LLVM fuses into one FMA on a CPU that has it (the
+ *   x86-64 machine measured has); with separate products and sums about a
+ *   third of the specular values differ from OSMesa (measured,
+ *   tests/test_lighting_order.c, tests/test_vp_pow.c).  On a CPU without
+ *   FMA llvmpipe would round the products; the model fuses regardless.
+ *   The coefficients are doubles rounded to float.
  * pow's zero test is an unordered comparison too: a NaN base gives 0.
  * The vertex code runs with denormals read as zero (measured on OSMesa,
  * tests/test_vp_pow.c: pow(1e-40, 0.5) is 0, not 2^-66.4), so a denormal
