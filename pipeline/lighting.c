@@ -8,6 +8,7 @@
 #include <math.h>
 #include <string.h>
 #include "vertex_internal.h"
+#include "vp_pow.h"
 
 int fs_light_param_count(GLenum pname)
 {
@@ -475,12 +476,11 @@ static float clamp01f(float v)
     return v > 0.0f ? (v < 1.0f ? v : 1.0f) : 0.0f; /* NaN becomes 0 */
 }
 
-/* The vertex program's POW (gallivm: 0 for a zero base; its polynomial
- * gives a finite value for a NaN base, so a spot factor of a vertex at
- * the light, 0 * pow(NaN), is 0: measured, gl10-gl-1.0-spot-light). */
+/* The vertex program's POW: gallivm's exp2(log2(x) y), 0 for a zero base
+ * (pipeline/vp_pow.c). */
 static float vp_pow(float x, float y)
 {
-    return x == 0.0f || x != x ? 0.0f : powf(x, y);
+    return fs_vp_pow(x, y);
 }
 
 /* One side of the lighting equation (GL 1.5 spec 2.14.1) in the

@@ -4,7 +4,9 @@
  * in its own order, lights in object space when nothing needs eye
  * coordinates, and transforms normals by an inverse whose method follows
  * the flags the matrix commands left (m_matrix.c); the model does the same
- * (pipeline/lighting.c, pipeline/matrix_inverse.c).  Oracle: the colours
+ * (pipeline/lighting.c, pipeline/matrix_inverse.c), and its POW (specular
+ * and spot exponents) is gallivm's polynomial exp2(log2(x) y)
+ * (pipeline/vp_pow.c).  Oracle: the colours
  * OSMesa returns in GL_FEEDBACK mode (GL_3D_COLOR), the vertex program's
  * outputs, compared at tolerance 0 over 300 seeded vertices per case.
  */
@@ -20,9 +22,9 @@ enum {
     C_SCALE4 = 2,          /* glScalef(4, 4, 4): eye space, not length preserving */
     C_DIRECTIONAL = 4,     /* w = 0: object space under a rigid modelview */
     C_NORMALIZE = 8,       /* GL_NORMALIZE with normals of any length */
-    C_SHININESS = 16,      /* a specular term (POW: a known difference) */
+    C_SHININESS = 16,      /* a specular term (POW; exponent cur_shin) */
     C_ATTENUATION = 32,    /* distance attenuation */
-    C_SPOT = 64,           /* a spot light (POW: a known difference) */
+    C_SPOT = 64,           /* a spot light (POW; exponent cur_spot_exp) */
     C_SIERPINSKI = 128,    /* sierpinski3d's modelview: three rotations */
     C_CONST_NORMAL = 256,  /* one normal per triangle, given before glBegin */
     C_AXES = 512,          /* normals (+-1, +-1, +-1) */
@@ -30,9 +32,12 @@ enum {
     C_CLEAR = 2048,        /* a glClear between (Mesa analyses the matrix there) */
     C_RESCALE = 4096,      /* GL_RESCALE_NORMAL */
     C_LOCAL_VIEWER = 8192, /* GL_LIGHT_MODEL_LOCAL_VIEWER (with C_SHININESS) */
+    C_TWO_SIDE = 16384,    /* GL_LIGHT_MODEL_TWO_SIDE, the back with its own shininess 7 */
+    C_SEPARATE = 32768,    /* GL_SEPARATE_SPECULAR_COLOR (colours of GL_3D_COLOR are the primary) */
 };
 
 static int cur_case;
+static float cur_shin = 20.0f, cur_spot_exp = 2.0f;
 static uint32_t rng_state;
 
 static float rnd(void)
@@ -94,9 +99,18 @@ static void lit_feedback(fs_context *c, double *v, int *n)
     G(Lightfv, GL_LIGHT0, GL_AMBIENT, lamb);
     if (k & C_SHININESS) {
         const float sp[4] = {0.5f, 0.6f, 0.7f, 1};
-        G(Materialf, GL_FRONT, GL_SHININESS, 20.0f);
+        G(Materialf, GL_FRONT, GL_SHININESS, cur_shin);
         G(Materialfv, GL_FRONT, GL_SPECULAR, sp);
     }
+    if (k & C_TWO_SIDE) {
+        const float bamb[4] = {0.3f, 0.2f, 0.1f, 1}, bsp[4] = {0.9f, 0.4f, 0.6f, 1};
+        G(LightModeli, GL_LIGHT_MODEL_TWO_SIDE, 1);
+        G(Materialfv, GL_BACK, GL_AMBIENT_AND_DIFFUSE, bamb);
+        G(Materialf, GL_BACK, GL_SHININESS, 7.0f);
+        G(Materialfv, GL_BACK, GL_SPECULAR, bsp);
+    }
+    if (k & C_SEPARATE)
+        G(LightModeli, GL_LIGHT_MODEL_COLOR_CONTROL, GL_SEPARATE_SPECULAR_COLOR);
     if (k & C_LOCAL_VIEWER)
         G(LightModeli, GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
     if (k & C_ATTENUATION) {
@@ -106,7 +120,7 @@ static void lit_feedback(fs_context *c, double *v, int *n)
     if (k & C_SPOT) {
         const float sd[3] = {0.4f, -0.3f, -1.0f};
         G(Lightf, GL_LIGHT0, GL_SPOT_CUTOFF, 80.0f);
-        G(Lightf, GL_LIGHT0, GL_SPOT_EXPONENT, 2.0f);
+        G(Lightf, GL_LIGHT0, GL_SPOT_EXPONENT, cur_spot_exp);
         G(Lightfv, GL_LIGHT0, GL_SPOT_DIRECTION, sd);
     }
     G(FeedbackBuffer, 200000, GL_3D_COLOR, fb);
@@ -163,53 +177,55 @@ static long differ_in(int k, int *count)
     return d;
 }
 
-TEST(diffuse_lighting_exact)
+/* A case: the flags and the two exponents (unused without C_SHININESS,
+ * C_SPOT). */
+typedef struct lcase { int k; float shin, spot; } lcase;
+
+TEST(lighting_exact)
 {
-    static const int cases[] = {
-        0, C_ROTATE, C_SCALE4, C_ROTATE | C_SCALE4, C_DIRECTIONAL, C_DIRECTIONAL | C_ROTATE,
-        C_DIRECTIONAL | C_SCALE4, C_NORMALIZE, C_NORMALIZE | C_ROTATE | C_SCALE4, C_RESCALE | C_SCALE4,
-        C_RESCALE | C_SCALE4 | C_ROTATE, C_DIRECTIONAL | C_NORMALIZE | C_ROTATE, C_ATTENUATION,
-        C_ATTENUATION | C_SCALE4, C_ATTENUATION | C_ROTATE | C_SCALE4, C_ATTENUATION | C_DIRECTIONAL,
-        C_SIERPINSKI, C_SIERPINSKI | C_SCALE4, C_SIERPINSKI | C_SCALE4 | C_NORMALIZE,
-        C_SIERPINSKI | C_SCALE4 | C_NORMALIZE | C_CONST_NORMAL,
-        C_SIERPINSKI | C_SCALE4 | C_NORMALIZE | C_CONST_NORMAL | C_AXES,
-        C_MINUS_ZERO | C_SIERPINSKI | C_SCALE4 | C_NORMALIZE, C_MINUS_ZERO | C_CLEAR | C_SIERPINSKI | C_SCALE4,
-        C_MINUS_ZERO | C_SIERPINSKI | C_SCALE4 | C_NORMALIZE | C_CONST_NORMAL | C_AXES,
+    static const lcase cases[] = {
+        {0, 0, 0}, {C_ROTATE, 0, 0}, {C_SCALE4, 0, 0}, {C_ROTATE | C_SCALE4, 0, 0}, {C_DIRECTIONAL, 0, 0},
+        {C_DIRECTIONAL | C_ROTATE, 0, 0}, {C_DIRECTIONAL | C_SCALE4, 0, 0}, {C_NORMALIZE, 0, 0},
+        {C_NORMALIZE | C_ROTATE | C_SCALE4, 0, 0}, {C_RESCALE | C_SCALE4, 0, 0},
+        {C_RESCALE | C_SCALE4 | C_ROTATE, 0, 0}, {C_DIRECTIONAL | C_NORMALIZE | C_ROTATE, 0, 0},
+        {C_ATTENUATION, 0, 0}, {C_ATTENUATION | C_SCALE4, 0, 0}, {C_ATTENUATION | C_ROTATE | C_SCALE4, 0, 0},
+        {C_ATTENUATION | C_DIRECTIONAL, 0, 0}, {C_SIERPINSKI, 0, 0}, {C_SIERPINSKI | C_SCALE4, 0, 0},
+        {C_SIERPINSKI | C_SCALE4 | C_NORMALIZE, 0, 0}, {C_SIERPINSKI | C_SCALE4 | C_NORMALIZE | C_CONST_NORMAL, 0, 0},
+        {C_SIERPINSKI | C_SCALE4 | C_NORMALIZE | C_CONST_NORMAL | C_AXES, 0, 0},
+        {C_MINUS_ZERO | C_SIERPINSKI | C_SCALE4 | C_NORMALIZE, 0, 0},
+        {C_MINUS_ZERO | C_CLEAR | C_SIERPINSKI | C_SCALE4, 0, 0},
+        {C_MINUS_ZERO | C_SIERPINSKI | C_SCALE4 | C_NORMALIZE | C_CONST_NORMAL | C_AXES, 0, 0},
+        /* POW: the specular factor (LIT) and the spot factor. */
+        {C_SHININESS, 20, 0}, {C_SHININESS, 1, 0}, {C_SHININESS, 5, 0}, {C_SHININESS, 128, 0},
+        {C_SHININESS, 0.5f, 0}, {C_SHININESS, 37.3f, 0},
+        {C_SHININESS | C_DIRECTIONAL | C_ROTATE, 20, 0}, {C_SHININESS | C_LOCAL_VIEWER, 5, 0},
+        {C_SHININESS | C_ATTENUATION | C_SCALE4 | C_NORMALIZE, 20, 0},
+        {C_SHININESS | C_SEPARATE | C_ROTATE, 20, 0}, /* the specular term leaves the primary colour */
+        {C_SPOT, 0, 2}, {C_SPOT, 0, 0.5f}, {C_SPOT, 0, 10}, {C_SPOT, 0, 1}, {C_SPOT, 0, 128},
+        {C_SPOT, 0, 0}, /* exp2(0) is 1 exactly */
+        {C_SPOT | C_DIRECTIONAL, 0, 10}, {C_SPOT | C_ATTENUATION | C_SHININESS, 5, 10},
+        {C_SPOT | C_SHININESS | C_LOCAL_VIEWER | C_ROTATE, 128, 0.5f},
+        {C_TWO_SIDE | C_SHININESS, 20, 0}, {C_TWO_SIDE, 0, 0}, {C_TWO_SIDE | C_SPOT | C_SHININESS | C_ROTATE, 1, 2},
     };
     long total = 0;
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         int count = 0;
-        long d = differ_in(cases[i], &count);
+        cur_shin = cases[i].shin;
+        cur_spot_exp = cases[i].spot;
+        long d = differ_in(cases[i].k, &count);
         if (d < 0)
             SKIP("no OSMesa context");
         CHECK(count >= 900);
         if (d)
-            CHECK_FAIL_("case %d: %ld of %d colour values differ", cases[i], d, count);
+            CHECK_FAIL_("case %d (shininess %g, spot exponent %g): %ld of %d colour values differ", cases[i].k,
+                        (double)cases[i].shin, (double)cases[i].spot, d, count);
         total += count;
     }
     printf("    %zu cases, %ld colour values\n", sizeof cases / sizeof cases[0], total);
 }
 
-/* Known difference: the vertex program's POW (specular exponent, spot
- * exponent) is gallivm's polynomial exp2(log2(x) y), not powf; the model
- * keeps powf.  Fails when the difference goes away: then move the cases
- * to the exact list. */
-TEST(pow_known_difference)
-{
-    static const int cases[] = {C_SHININESS, C_SPOT};
-    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        int count = 0;
-        long d = differ_in(cases[i], &count);
-        if (d < 0)
-            SKIP("no OSMesa context");
-        printf("    case %d: %ld of %d values differ (known: POW)\n", cases[i], d, count);
-        CHECK(d > 0);
-    }
-}
-
 TEST_LIST = {
-    TEST_ENTRY(diffuse_lighting_exact),
-    TEST_ENTRY(pow_known_difference),
+    TEST_ENTRY(lighting_exact),
     TEST_END,
 };
 

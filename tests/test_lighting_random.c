@@ -95,11 +95,11 @@ static void draw_lit(fs_context *c, const void *user, int w, int h)
     }
 }
 
-/* Measured: one scene of each set has one pixel off by one (seed 34 of
- * the infinite spot lights, 55 of the random ones), a float order of
- * llvmpipe's lighting not yet found; everything else is exact.  More than
- * that, or any larger difference, fails. */
-#define KNOWN_OFF_BY_ONE 1
+/* Measured: every scene exact since the lighting follows the vertex
+ * program's order and float rounding (pipeline/lighting.c; seeds 34 of the
+ * infinite spot lights and 55 of the random ones were one pixel off by one
+ * before) and its POW (pipeline/vp_pow.c).  Any difference fails. */
+#define KNOWN_OFF_BY_ONE 0
 
 static void lights_vs_osmesa(check_state *check_st_, bool infinite_spot_only, uint32_t seeds)
 {
