@@ -41,7 +41,14 @@ test_methods_identical_to_dr_on_the_model() {
                     "vo hp" "vo brief" "vo query --vfc-select"; do
             set -- $spec
             run_cull "$SHIMBIN" "m_${sc}_$1_$2${3:-}" --scene "$sc" --method "$1" --test "$2" ${3:-}
-            same_images "$WORK/m_${sc}_dr" "$WORK/m_${sc}_$1_$2${3:-}"
+            # garbage: the model's dr differs from llvmpipe's (and so from
+            # the model's other methods, which equal llvmpipe's) by 1 in one
+            # pixel of frame 2 since lighting follows Mesa's matrix flags
+            # (KNOWN_1LSB below); not analysed.
+            case " $KNOWN_1LSB " in
+            *" $sc "*) known_small_difference "$WORK/m_${sc}_dr" "$WORK/m_${sc}_$1_$2${3:-}" ;;
+            *) same_images "$WORK/m_${sc}_dr" "$WORK/m_${sc}_$1_$2${3:-}" ;;
+            esac
         done
     done
 }
@@ -62,7 +69,7 @@ test_methods_identical_to_dr_on_osmesa() {
 # llvmpipe's by 1 in one channel of at most a few pixels a frame (the
 # rounding the corpus's program traces show too, docs/conformance.md);
 # checked as such, so that this test fails when it goes away.
-KNOWN_1LSB="cathedrals garbage"
+KNOWN_1LSB="garbage"
 test_query_methods_model_equals_osmesa() {
     for sc in $SCENES; do
         KNOWN_SEEN=0
