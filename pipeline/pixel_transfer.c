@@ -216,7 +216,7 @@ static const uint8_t *group_at(const fs_pixel_layout *l, const void *pixels, int
 
 /* ---- element access ---- */
 
-static uint32_t load(const uint8_t *p, int bytes, bool swap)
+uint32_t fs_pixel_load_elem(const uint8_t *p, int bytes, bool swap)
 {
     uint8_t b[4];
     memcpy(b, p, (size_t)bytes);
@@ -382,7 +382,7 @@ static void decode_group(const fs_pixel_layout *l, const packed_type *p, int nc,
                          int bits[4])
 {
     if (p->bytes) {
-        uint32_t w = load(src, p->bytes, l->swap_bytes);
+        uint32_t w = fs_pixel_load_elem(src, p->bytes, l->swap_bytes);
         int shift = p->rev ? 0 : p->bytes * 8;
         for (int k = 0; k < p->n; k++) {
             int b = p->bits[k];
@@ -396,7 +396,7 @@ static void decode_group(const fs_pixel_layout *l, const packed_type *p, int nc,
         return;
     }
     for (int k = 0; k < nc; k++) {
-        raw[k] = load(src + k * l->elem_bytes, l->elem_bytes, l->swap_bytes);
+        raw[k] = fs_pixel_load_elem(src + k * l->elem_bytes, l->elem_bytes, l->swap_bytes);
         bits[k] = 0;
     }
 }
@@ -512,7 +512,7 @@ void fs_pixel_unpack_index(const fs_pixel_layout *l, const void *pixels, int64_t
     }
     const uint8_t *src = group_at(l, pixels, z, y, x0);
     for (int64_t i = 0; i < n; i++, src += l->group_bytes) {
-        uint32_t raw = load(src, l->elem_bytes, l->swap_bytes);
+        uint32_t raw = fs_pixel_load_elem(src, l->elem_bytes, l->swap_bytes);
         switch (l->type) {
         case GL_BYTE: index[i] = (uint32_t)(int32_t)(int8_t)raw; break;
         case GL_SHORT: index[i] = (uint32_t)(int32_t)(int16_t)raw; break;
@@ -537,7 +537,7 @@ void fs_pixel_unpack_depth(const fs_pixel_layout *l, const void *pixels, int64_t
         return;
     const uint8_t *src = group_at(l, pixels, z, y, x0);
     for (int64_t i = 0; i < n; i++, src += l->group_bytes) {
-        uint32_t raw = load(src, l->elem_bytes, l->swap_bytes);
+        uint32_t raw = fs_pixel_load_elem(src, l->elem_bytes, l->swap_bytes);
         double d;
         switch (l->type) {
         case GL_UNSIGNED_BYTE: d = raw / 255.0; break;

@@ -129,6 +129,9 @@ void fs_pixel_unpack_depth(const fs_pixel_layout *l, const void *pixels, int64_t
  * GL_UNSIGNED_INT go through float (24 bits; 1.0 wraps to 0), as Mesa's
  * glGetTexImage converts them, instead of x * 0x01010101. */
 enum { FS_PACK_LUMINANCE_SUM = 1, FS_PACK_ROUND_PACKED = 2, FS_PACK_LUMINANCE_UINT_FLOAT = 4 };
+/* Reads one element of `bytes` bytes (1, 2 or 4) at p, the bytes swapped
+ * with swap (GL_UNPACK_SWAP_BYTES). */
+uint32_t fs_pixel_load_elem(const uint8_t *p, int bytes, bool swap);
 /* Writes one element of `bytes` bytes (1, 2 or 4) holding v at p, the
  * bytes swapped with swap (GL_PACK_SWAP_BYTES). */
 void fs_pixel_store_elem(uint8_t *p, int bytes, bool swap, uint32_t v);

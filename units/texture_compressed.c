@@ -245,6 +245,16 @@ static GLenum check_image(const fs_tex_target_info *ti, GLint level, GLenum inte
     return GL_NO_ERROR;
 }
 
+/* A compressed level was defined or updated: GL_GENERATE_MIPMAP of its
+ * base level is not modelled (llvmpipe recompresses the levels). */
+static void level_changed(fs_context *c, fs_tex_object *t, GLint level)
+{
+    if (t->generate_mipmap && level == t->base_level)
+        fs_unsupported(c, "GL_GENERATE_MIPMAP of a compressed texture (llvmpipe recompresses the levels)");
+    else
+        fs_tex_image_changed(c, t, level);
+}
+
 static void compressed_image(fs_context *c, int dims, GLenum target, GLint level, GLenum internalformat,
                              GLsizei w, GLsizei h, GLsizei d, GLint border, GLsizei imageSize, const GLvoid *data)
 {
@@ -296,10 +306,7 @@ static void compressed_image(fs_context *c, int dims, GLenum target, GLint level
      * blocks here. */
     if (texels)
         store_blocks(img, 0, 0, 0, w, h, 1, data ? data : blocks);
-    if (t->generate_mipmap && level == t->base_level)
-        fs_unsupported(c, "GL_GENERATE_MIPMAP of a compressed texture (llvmpipe recompresses the levels)");
-    else
-        fs_tex_image_changed(c, t, level);
+    level_changed(c, t, level);
 }
 
 void fs_exec_CompressedTexImage1D(fs_context *c, GLenum target, GLint level, GLenum internalformat, GLsizei width,
@@ -373,11 +380,7 @@ static void compressed_subimage(fs_context *c, int dims, GLenum target, GLint le
     fs_tex_target_of(target, &ti);
     if (w > 0 && h > 0 && d > 0 && data)
         store_blocks(img, off[0], off[1], off[2], w, h, d, data);
-    fs_tex_object *t = fs_tex_active(c)->bound[ti.k];
-    if (t->generate_mipmap && level == t->base_level)
-        fs_unsupported(c, "GL_GENERATE_MIPMAP of a compressed texture (llvmpipe recompresses the levels)");
-    else
-        fs_tex_image_changed(c, t, level);
+    level_changed(c, fs_tex_active(c)->bound[ti.k], level);
 }
 
 void fs_exec_CompressedTexSubImage1D(fs_context *c, GLenum target, GLint level, GLint xoffset, GLsizei width,

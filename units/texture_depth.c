@@ -89,33 +89,6 @@ static uint32_t get_texel(const uint8_t *texel)
     return v;
 }
 
-/* One client element of a DEPTH_COMPONENT image, the raw bits (byte
- * swapping applied) and the float of table 2.9 as Mesa computes it. */
-static uint32_t load_elem(const uint8_t *p, int bytes, bool swap)
-{
-    uint8_t b[4] = {0, 0, 0, 0};
-    memcpy(b, p, (size_t)bytes);
-    if (swap)
-        for (int i = 0; i < bytes / 2; i++) {
-            uint8_t t = b[i];
-            b[i] = b[bytes - 1 - i];
-            b[bytes - 1 - i] = t;
-        }
-    switch (bytes) {
-    case 1: return b[0];
-    case 2: {
-        uint16_t v;
-        memcpy(&v, b, 2);
-        return v;
-    }
-    default: {
-        uint32_t v;
-        memcpy(&v, b, 4);
-        return v;
-    }
-    }
-}
-
 /* Table 2.9 in Mesa's float arithmetic; signed and float values may fall
  * outside [0, 1] (*clamp set). */
 static float elem_to_float(uint32_t raw, GLenum type, bool *clamp)
@@ -189,7 +162,7 @@ void fs_tex_depth_unpack(fs_context *c, fs_tex_image *img, int dims, const int o
                                               (size_t)img->width + (size_t)off[0]) * 4;
             for (int x = 0; x < w; x++, src += l.group_bytes)
                 put_texel(dst + 4 * x,
-                          client_to_storage(c, load_elem(src, l.elem_bytes, l.swap_bytes), type, img->depth_bits,
+                          client_to_storage(c, fs_pixel_load_elem(src, l.elem_bytes, l.swap_bytes), type, img->depth_bits,
                                             float_image(img)));
         }
 }
