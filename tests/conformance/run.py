@@ -413,6 +413,9 @@ def main():
             passed += 1
     print('conformance: %d of %d traces bit-exact' % (sum(1 for r in results if r['bit_exact']), len(results)))
     print('%d passed, %d failed' % (passed, failed))
+    if not results:
+        print('FAIL: --only %r matches no trace of %s' % (args.only, ', '.join(KINDS)))
+        return 1
     with open(os.path.join(build, 'conformance', 'results.json'), 'w') as f:
         json.dump(results, f, indent=1, default=str)
     return 1 if failed else 0
