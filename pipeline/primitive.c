@@ -207,6 +207,10 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
     c->raster.offset_latch = -1;
     for (size_t i = 0; i < count && !pipeline && !s->edge && (mode == GL_QUADS || mode == GL_QUAD_STRIP); i++)
         pipeline = V(&p, i)->mask != 0;
+    /* A draw Mesa concatenates onto an earlier one that took the pipeline
+     * route is part of that draw (fs_prim_state.quads_run). */
+    pipeline |= c->prim.quads_force_pipeline && mode == GL_QUADS && !s->edge;
+    c->prim.quads_route = pipeline;
     size_t i;
     switch (mode) {
     case GL_POINTS:

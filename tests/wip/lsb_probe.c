@@ -45,19 +45,24 @@ int main(int argc, char **argv)
     uint64_t target = dash && *dash == '-' ? strtoull(dash + 1, NULL, 10) : start;
     float px = (float)atof(argv[3]) + 0.5f, py = (float)atof(argv[4]) + 0.5f;
     char err[512];
-    fs_replay_opts ro = {0};
+    fs_config cfg;
+    fs_config_defaults(&cfg); /* the window size fragsim check uses */
+    fs_replay_opts ro = {NULL, (int)cfg.framebuffer_width, (int)cfg.framebuffer_height};
     fs_replayer *r = fs_replay_open(argv[1], &ro, err, sizeof err);
     if (!r) { fprintf(stderr, "%s\n", err); return 1; }
     const fs_replay_info *info = fs_replay_info_get(r);
-    fs_context *c = fs_context_create(NULL, info->width, info->height);
-    (void)info->double_buffered; /* OSMesa has one buffer: so has the model here */
+    fs_context *c = fs_context_create(&cfg, info->width, info->height);
+    fs_context_set_double_buffered(c, info->double_buffered); /* as fragsim check does */
     fs_osmesa *o = fs_osmesa_create(info->width, info->height, 24, 8, err, sizeof err);
     if (!c || !o) { fprintf(stderr, "create: %s\n", err); return 1; }
+    if (getenv("PROBE_SAMPLES"))
+        fs_osmesa_samples_begin(o); /* as fragsim check does */
     fs_call call;
     for (;;) {
         fs_replay_event ev = fs_replay_next(r, &call);
         if (ev == FS_REPLAY_EOF || ev == FS_REPLAY_ERROR) break;
-        if (ev != FS_REPLAY_CALL) continue;
+        if (ev != FS_REPLAY_CALL && ev != FS_REPLAY_FRAME_END) continue;
+        bool frame_end = ev == FS_REPLAY_FRAME_END;
         uint64_t no = fs_replay_call_no(r);
         if (no == start) {
             fsglFeedbackBuffer(c, FB, GL_3D_COLOR, fb_m);
@@ -65,21 +70,60 @@ int main(int argc, char **argv)
             glFeedbackBuffer(FB, GL_3D_COLOR, fb_o);
             glRenderMode(GL_FEEDBACK);
         }
-        fs_submit(c, &call);
-        fs_osmesa_dispatch(o, &call);
-        if (first && (fs_replay_call_flags(r) & 0x4u)) {
+        bool skip_call = false;
+        if (getenv("PROBE_SKIP")) { /* experiments: leave out calls A-B on both */
+            const char *sp = getenv("PROBE_SKIP"); /* A-B[,C-D...] */
+            while (sp && *sp) {
+                unsigned long long sa = 0, sb = 0;
+                if (sscanf(sp, "%llu-%llu", &sa, &sb) == 2 && no >= sa && no <= sb)
+                    skip_call = true;
+                sp = strchr(sp, ',');
+                sp = sp ? sp + 1 : NULL;
+            }
+        }
+        if (!frame_end && !skip_call) {
+            fs_submit(c, &call);
+            fs_osmesa_dispatch(o, &call);
+            /* experiments: flush one side after each render call */
+            if ((fs_replay_call_flags(r) & 0x4u) && getenv("PROBE_FLUSH_O")) {
+                unsigned long long fa = 0, fb = ~0ull;
+                sscanf(getenv("PROBE_FLUSH_O"), "%llu-%llu", &fa, &fb);
+                if (no >= fa && no <= fb)
+                    glFinish();
+            }
+            if ((fs_replay_call_flags(r) & 0x4u) && getenv("PROBE_FLUSH_M"))
+                fsglFinish(c);
+            if ((fs_replay_call_flags(r) & 0x4u) && getenv("PROBE_PIXEL")) {
+                /* the model's pixel after each render call that changes it */
+                static uint8_t last[4];
+                int qx = 0, qy = 0;
+                sscanf(getenv("PROBE_PIXEL"), "%d,%d", &qx, &qy);
+                fsglFinish(c);
+                const uint8_t *q = c->fb.color + 4 * ((size_t)qy * info->width + qx);
+                if (memcmp(q, last, 4))
+                    printf("call %llu %s: model pixel (%d, %d) = %d %d %d %d\n", (unsigned long long)no,
+                           fs_replay_call_name(r), qx, qy, q[0], q[1], q[2], q[3]);
+                memcpy(last, q, 4);
+            }
+        }
+        if (first && (frame_end || (!getenv("PROBE_FRAMES") && (fs_replay_call_flags(r) & 0x4u)))) {
             fsglFinish(c);
             const uint8_t *a = c->fb.color, *b = fs_osmesa_color(o);
             long n = (long)info->width * info->height, nd = 0;
             for (long i = 0; i < n; i++)
-                if (memcmp(a + 4 * i, b + 4 * i, 3)) {
+                if (memcmp(a + 4 * i, b + 4 * i, 4)) { /* alpha too, as fragsim check */
                     if (nd < 10)
-                        printf("call %llu %s: pixel (%ld, %ld) model %d %d %d osmesa %d %d %d\n",
-                               (unsigned long long)no, fs_replay_call_name(r), i % info->width, i / info->width,
-                               a[4 * i], a[4 * i + 1], a[4 * i + 2], b[4 * i], b[4 * i + 1], b[4 * i + 2]);
+                        printf("call %llu %s: pixel (%ld, %ld) model %d %d %d %d osmesa %d %d %d %d\n",
+                               (unsigned long long)no, frame_end ? "frame end" : fs_replay_call_name(r), i % info->width, i / info->width,
+                               a[4 * i], a[4 * i + 1], a[4 * i + 2], a[4 * i + 3], b[4 * i], b[4 * i + 1], b[4 * i + 2], b[4 * i + 3]);
                     nd++;
                 }
             if (nd) {
+                long nz = 0;
+                for (long i = 0; i < n; i++) nz += a[4 * i] || a[4 * i + 1] || a[4 * i + 2];
+                printf("model: %ld non-black pixels, %llu fragments generated, %llu written, %llu killed depth, draw 0x%x, error 0x%x\n", nz,
+                       (unsigned long long)c->stats.fragments_generated, (unsigned long long)c->stats.fragments_written, (unsigned long long)c->stats.killed_depth, (unsigned)c->draw_buffer, (unsigned)c->error);
+                printf("clears %llu depth[0] %u\n", (unsigned long long)c->stats.clears, (unsigned)c->fb.depth[0]);
                 printf("%ld pixels differ after call %llu\n", nd, (unsigned long long)no);
                 return 0;
             }
@@ -116,5 +160,7 @@ int main(int argc, char **argv)
             break;
         }
     }
+    if (first)
+        printf("no render call leaves the colour buffers different\n");
     return 0;
 }
