@@ -5,7 +5,24 @@
  * both, with every vertex whose feedback differs.
  *   lsb_probe TRACE CALL X Y
  * With CALL "first": the first call (of those that render) after which
- * the two colour buffers differ, and its differing pixels (up to 10). */
+ * the two colour buffers (RGBA, as fragsim check) differ, and its
+ * differing pixels (up to 10); frame ends are compared too.
+ * Build (the archives whole, else the weak fallback executors of
+ * driver/dispatch.c win and the model draws nothing):
+ *   gcc -O1 -g -Wall -o /tmp/probe tests/wip/lsb_probe.c build/driver/osmesa_ref.o \
+ *     -Wl,--whole-archive build/libfragsim.a -Wl,--no-whole-archive \
+ *     $(pkg-config --libs osmesa snappy zlib inih jansson libgpiod) -lm -lstdc++
+ * Experiments (environment):
+ *   PROBE_FRAMES=1       "first" compares at frame ends only (llvmpipe's
+ *                        result may depend on where it is flushed: the
+ *                        probe's glFinish after each draw ends Mesa's
+ *                        merging of glBegin/glEnd draws, issue 20)
+ *   PROBE_FLUSH_O=A-B    glFinish on OSMesa after each render call in A..B
+ *   PROBE_FLUSH_M=1      fsglFinish on the model after each render call
+ *   PROBE_SKIP=A-B[,C-D] leave those calls out on both
+ *   PROBE_PIXEL=X,Y      print the model's pixel after each call changing it
+ *   PROBE_SAMPLES=1      run OSMesa's GL_SAMPLES_PASSED query as check does
+ *   PROBE_NOALPHA=1      feedback: compare positions and RGB only */
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/osmesa.h>
 #include <stdio.h>
@@ -142,7 +159,7 @@ int main(int argc, char **argv)
                 const float *vm = fb_m + i + 2 - pt, *vo = fb_o + j + 2 - pt;
                 int hit = n == n2 && inside(vo, n, px, py);
                 for (int k = 0; k < n && k < n2; k++) {
-                    int d = memcmp(vm + 7 * k, vo + 7 * k, 7 * sizeof(float)) != 0;
+                    int d = memcmp(vm + 7 * k, vo + 7 * k, (getenv("PROBE_NOALPHA") ? 6 : 7) * sizeof(float)) != 0;
                     ndiff += d;
                     if (hit || (d && ndiff < 20)) {
                         printf("prim %d v%d %s\n  model ", prim, k, hit ? "COVERS" : "");
