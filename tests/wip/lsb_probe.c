@@ -22,7 +22,8 @@
  *   PROBE_SKIP=A-B[,C-D] leave those calls out on both
  *   PROBE_PIXEL=X,Y      print the model's pixel after each call changing it
  *   PROBE_SAMPLES=1      run OSMesa's GL_SAMPLES_PASSED query as check does
- *   PROBE_NOALPHA=1      feedback: compare positions and RGB only */
+ *   PROBE_NOALPHA=1      feedback: compare positions and RGB only
+ *   PROBE_ALPHA_ONE=1    glMaterialfv's alpha set to 1 on both */
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/osmesa.h>
 #include <stdio.h>
@@ -96,6 +97,16 @@ int main(int argc, char **argv)
                     skip_call = true;
                 sp = strchr(sp, ',');
                 sp = sp ? sp + 1 : NULL;
+            }
+        }
+        if (!frame_end && call.cmd == FS_CMD_Materialfv && getenv("PROBE_ALPHA_ONE")) {
+            /* experiment: material alphas of 1 instead of the trace's */
+            static float pm[4];
+            const float *q = call.a[2].p;
+            if (q && call.a[2].count >= 4) {
+                memcpy(pm, q, sizeof pm);
+                pm[3] = 1.0f;
+                call.a[2].p = pm;
             }
         }
         if (!frame_end && !skip_call) {
