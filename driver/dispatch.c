@@ -434,7 +434,8 @@ static int dispatch(fs_context *c, fs_call *call, bool in_bounds)
         fs_error(c, GL_INVALID_OPERATION);
         return 0;
     }
-    if (c->prim.vtx_attribs && !(fs_cmd_table[call->cmd].flags & FS_F_PRIM) && !is_query(call->cmd))
+    if ((c->prim.vtx_attribs || c->prim.quads_run) && !(fs_cmd_table[call->cmd].flags & FS_F_PRIM) &&
+        !is_query(call->cmd))
         fs_vs_format_reset(c); /* Mesa flushes its immediate vertices (vertex_stage.h) */
     if (!in_bounds && (fs_cmd_table[call->cmd].flags & FS_F_DRAW) && !draw_reads_in_bounds(c, call))
         return 0;

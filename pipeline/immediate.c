@@ -190,12 +190,16 @@ void fs_vs_attrib_given(fs_context *c, unsigned attribs)
 {
     if (c->prim.inside_begin)
         c->prim.vtx_attribs |= attribs;
+    else if (attribs & ~c->prim.vtx_attribs)
+        c->prim.quads_run = false; /* Mesa grows its vertex format, which flushes (vertex_stage.h) */
 }
 
 void fs_vs_format_reset(fs_context *c)
 {
-    if (!c->prim.inside_begin) /* glCallList between Begin and End continues the primitive */
+    if (!c->prim.inside_begin) { /* glCallList between Begin and End continues the primitive */
         c->prim.vtx_attribs = 0;
+        c->prim.quads_run = false; /* the flush draws the run (vertex_stage.h) */
+    }
 }
 
 void fs_exec_End(fs_context *c)
@@ -206,8 +210,11 @@ void fs_exec_End(fs_context *c)
     }
     c->prim.inside_begin = false;
     fs_vs_impl *v = fs_vs(c);
-    if (!v || v->iv_n == 0)
+    if (!v || v->iv_n == 0) {
+        /* Mesa merges an empty primitive of the same mode into the run. */
+        c->prim.quads_run &= c->prim.mode == GL_QUADS;
         return;
+    }
     size_t n = v->iv_n;
     v->iv_n = 0;
     if (fs_draw_skipped(c, c->prim.mode, n))
@@ -241,7 +248,18 @@ void fs_exec_End(fs_context *c)
     } else {
         lazy = fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_mask(c, c->prim.mode));
     }
+    /* A GL_QUADS draw concatenated onto the run before it (vertex_stage.h)
+     * takes the run's route; an attribute new to the vertex format makes
+     * Mesa flush the run first (its vertex format grows). */
+    bool quads = c->prim.mode == GL_QUADS && c->prim.list_depth == 0;
+    bool merged = quads && c->prim.quads_run && !(c->prim.vtx_attribs & ~c->prim.quads_run_attribs);
+    c->prim.quads_force_pipeline = merged && c->prim.quads_run_pipeline;
+    c->prim.quads_route = false;
     fs_prim_draw(c, &v->setup, c->prim.mode, v->pv, lazy ? v->iv : NULL, NULL, n, c->prim.list_depth > 0);
+    c->prim.quads_force_pipeline = false;
+    c->prim.quads_run = quads && n % 4 == 0;
+    c->prim.quads_run_pipeline = c->prim.quads_route;
+    c->prim.quads_run_attribs = c->prim.vtx_attribs;
 }
 
 /* The batch's vertices get edge flags of their own (GL 1.5 spec 2.6.2),

@@ -15,6 +15,13 @@
  *  - some vertex outside: the whole draw goes through the draw pipeline's
  *    decomposition, quads (0,1,3),(1,2,3), quad strips (2,0,3),(0,1,3),
  *    polygons (i+1,i+2,0), and triangles needing it are clipped (clip.c).
+ * A draw is what llvmpipe receives: Mesa concatenates consecutive
+ * immediate glBegin(GL_QUADS)/glEnd with nothing flushing between into
+ * one (fs_prim_state.quads_run), so a quad inside the volume takes the
+ * pipeline route after a merged one with a vertex outside.  The other
+ * direction (the outside vertex in a later glBegin/glEnd) is not
+ * modelled: the earlier quads are drawn at their glEnd
+ * (tests/test_quad_merge.c, KNOWN_REVERSE).
  * Provoking vertex (2.14.7): the last vertex of each primitive, the first
  * of a polygon; in every split above it lands last in the triangle.  With
  * glProvokingVertex(GL_FIRST_VERTEX_CONVENTION) (ARB_provoking_vertex's
@@ -207,6 +214,10 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
     c->raster.offset_latch = -1;
     for (size_t i = 0; i < count && !pipeline && !s->edge && (mode == GL_QUADS || mode == GL_QUAD_STRIP); i++)
         pipeline = V(&p, i)->mask != 0;
+    /* A draw Mesa concatenates onto an earlier one that took the pipeline
+     * route is part of that draw (fs_prim_state.quads_run). */
+    pipeline |= c->prim.quads_force_pipeline && mode == GL_QUADS && !s->edge;
+    c->prim.quads_route = pipeline;
     size_t i;
     switch (mode) {
     case GL_POINTS:

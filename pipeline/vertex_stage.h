@@ -163,6 +163,18 @@ typedef struct fs_prim_state {
      * (or in an earlier glBegin/glEnd with only vertex commands and queries
      * between) an interpolated one. */
     unsigned vtx_attribs;
+    /* Mesa's immediate mode concatenates a glBegin/glEnd onto the one
+     * before when nothing flushed its vertices between (the same rule as
+     * vtx_attribs), both are GL_QUADS and the first holds whole quads
+     * (Mesa src/mesa/vbo: _mesa_End's try_vbo_merge, vbo_merge_draws):
+     * llvmpipe then gets one draw, and its draw module takes the pipeline
+     * route (primitive.c) for all of its quads when a vertex of any of
+     * them lies outside the view volume.  quads_run: the last immediate
+     * draw can be continued so; quads_run_pipeline: the run so far took
+     * the pipeline route; quads_route: set by fs_prim_draw, the route its
+     * quads took.  Measured on OSMesa (tests/test_quad_merge.c). */
+    bool quads_run, quads_run_pipeline, quads_force_pipeline, quads_route;
+    unsigned quads_run_attribs; /* vtx_attribs at the end of the run's last draw */
     void *impl;              /* private buffers (vertex_internal.h) */
 } fs_prim_state;
 
