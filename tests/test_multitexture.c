@@ -338,7 +338,8 @@ static GLenum random_source(rng *r, unsigned units, bool core)
         GLenum s = combine_sources[rndi(r, 10)];
         if (core && (s == GL_ZERO || s == GL_ONE))
             continue;
-        if (s < GL_TEXTURE0 || (units >> (s - GL_TEXTURE0)) & 1u)
+        bool crossbar = s >= GL_TEXTURE0 && s < GL_TEXTURE0 + 32;
+        if (!crossbar || (units >> (s - GL_TEXTURE0)) & 1u)
             return s;
     }
 }
