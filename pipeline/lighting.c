@@ -551,26 +551,27 @@ static void light_side(const fs_vs_setup *s, const fs_material *m, const float e
         /* Without a shininess the program's dot products are all n.VP. */
         float nh = shin_zero ? nvp : sign * fs_vs_dot3(n, half);
         float expo = shin_zero ? nvp : shin;
-        float lx = 1.0f, ly, lz;
+        /* LIT: (1, max(n.VP, 0), n.VP > 0 ? pow(max(n.H, 0), e) : 0), the
+         * exponent clamped to [-128, 128], then scaled by the attenuation;
+         * without either, the program's degenerate LIT: (1, max(n.VP, 0),
+         * n.VP > 0). */
+        float ly = nvp > 0.0f ? nvp : 0.0f, lz;
         if (has_att || !shin_zero) {
-            /* LIT: (1, max(n.VP, 0), n.VP > 0 ? pow(max(n.H, 0), e) : 0);
-             * the exponent clamped to [-128, 128]. */
-            ly = nvp > 0.0f ? nvp : 0.0f;
             float e = expo < -128.0f ? -128.0f : expo > 128.0f ? 128.0f : expo;
             lz = nvp > 0.0f ? vp_pow(nh > 0.0f ? nh : 0.0f, e) : 0.0f;
         } else {
-            ly = nvp > 0.0f ? nvp : 0.0f;
             lz = 0.0f < nvp ? 1.0f : 0.0f;
+        }
+        if (has_att) {
+            ly *= att;
+            lz *= att;
         }
         for (int k = 0; k < 3; k++) {
             float amb = l->amb[k] * m->ambient[k], dif = l->dif[k] * m->diffuse[k];
             float spe = l->spe[k] * m->specular[k];
-            if (has_att)
-                col[k] = (lx * att) * amb + col[k];
-            else
-                col[k] = amb + col[k];
-            col[k] = (has_att ? ly * att : ly) * dif + col[k];
-            cs[k] = (has_att ? lz * att : lz) * spe + cs[k];
+            col[k] = (has_att ? att * amb : amb) + col[k]; /* LIT's x is 1: x * att is att */
+            col[k] = ly * dif + col[k];
+            cs[k] = lz * spe + cs[k];
         }
     }
     if (spec_out) {
