@@ -25,7 +25,7 @@ scene() { # NAME -> a small trace of that scene
 occlusion_trace() {
     local t="$WORK/occlusion.trace" bin="$WORK/occlusion_workload"
     if [ ! -f "$t" ]; then
-        ${CC:-cc} -std=c11 -D_POSIX_C_SOURCE=200809L -O1 "$ROOT/docs/studies/occlusion_workload.c" -o "$bin" \
+        ${CC:-cc} -std=c11 -D_POSIX_C_SOURCE=200809L -O1 $(san_flags "$FRAGSIM_BUILD") "$ROOT/docs/studies/occlusion_workload.c" -o "$bin" \
             -Wl,--whole-archive "$FRAGSIM_BUILD/libfragsim.a" -Wl,--no-whole-archive \
             $(pkg-config --libs osmesa snappy zlib inih jansson libgpiod) -lm || return 1
         "$bin" --test brief --tiles 4 -o "$t" >/dev/null || return 1

@@ -14,3 +14,12 @@ run_test() {
 skip() { echo "$1"; exit 77; }
 fail() { echo "$1"; exit 1; }
 finish() { echo "$PASS passed, $FAIL failed, $SKIP skipped"; [ $FAIL -eq 0 ]; }
+
+# A program linked against a sanitizer build's library (make sanitize's
+# build-san) needs the same sanitizers, or its link fails on the runtime's
+# symbols: the flags to add, empty for a plain build.
+san_flags() { # BUILD_DIR
+    if nm -A "$1/libfragsim_core.a" 2>/dev/null | grep -q ' U __asan_'; then
+        echo "-fsanitize=address,undefined"
+    fi
+}
