@@ -307,6 +307,14 @@ void fs_exec_PushMatrix(fs_context *c)
         fs_error(c, GL_STACK_OVERFLOW);
         return;
     }
+    /* Mesa analyses a dirty matrix before pushing its copy (matrix.c
+     * _math_matrix_push_copy, so that an unchanged glPopMatrix is a no-op):
+     * a glMultMatrix before the push is classified without what the copy
+     * adds later.  Measured: boxed's camera (glMultMatrixf of a rotation),
+     * pushed, then glScalef(3, 3, 3), gets the scaled transpose as its
+     * inverse on llvmpipe, not the adjugate (tests/test_lighting_order.c
+     * C_PUSH). */
+    fs_matrix_analyse(&stack[*t]);
     stack[*t + 1] = stack[*t];
     (*t)++;
 }

@@ -324,11 +324,15 @@ static enum mat_class analyse(fs_matrix *mx)
     return cls;
 }
 
-void fs_modelview_analyse(fs_context *c)
+void fs_matrix_analyse(fs_matrix *mx)
 {
-    fs_matrix *mx = &c->xf.modelview[c->xf.modelview_top];
     if (mx->flags & FS_MATF_DIRTY)
         (void)analyse(mx);
+}
+
+void fs_modelview_analyse(fs_context *c)
+{
+    fs_matrix_analyse(&c->xf.modelview[c->xf.modelview_top]);
 }
 
 bool fs_matrix_invert(float out[16], fs_matrix *mx)

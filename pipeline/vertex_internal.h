@@ -228,6 +228,8 @@ bool fs_mat_invert_gl(float out[16], const float m[16]);
  * flags, or from its values when they are dirty (the flags are then
  * replaced by the values' and kept, as Mesa does). */
 bool fs_matrix_invert(float out[16], fs_matrix *m);
+/* A dirty matrix classified by its values now (Mesa's _math_matrix_analyse). */
+void fs_matrix_analyse(fs_matrix *m);
 /* Transforms with the accumulation order Mesa's vertex program uses. */
 static inline void fs_mat_xform4(float o[4], const float m[16], const float v[4])
 {

@@ -11,9 +11,9 @@ trap 'rm -rf "$TMP"' EXIT
 mkdir -p "$DIR"
 for s in $SCENES; do
     "$BUILD/scenegen" "$s" --scale small -o "$TMP/$s.trace" >/dev/null
-    # --tolerance 1: garbage still differs from llvmpipe by 1 in 3 pixels
-    # (docs/check.md, known differences); check's default is 0.
-    LP_NUM_THREADS=1 "$BUILD/fragsim" check --quiet --tolerance 1 --out "$TMP/check_$s" "$TMP/$s.trace" >/dev/null 2>&1 || { echo "golden: $s does not pass fragsim check; nothing stored" >&2; exit 1; }
+    # At check's default tolerance, 0: every bundled scene is identical to
+    # llvmpipe's (docs/check.md).
+    LP_NUM_THREADS=1 "$BUILD/fragsim" check --quiet --out "$TMP/check_$s" "$TMP/$s.trace" >/dev/null 2>&1 || { echo "golden: $s does not pass fragsim check; nothing stored" >&2; exit 1; }
     "$BUILD/fragsim" replay --quiet --out "$TMP/$s" "$TMP/$s.trace" 2>/dev/null
     rm -f "$DIR/$s"_*.png
     for f in "$TMP/$s"/frame_*.png; do cp "$f" "$DIR/${s}_$(basename "$f" .png | sed 's/frame_//').png"; done

@@ -34,9 +34,15 @@ enum {
     C_LOCAL_VIEWER = 8192, /* GL_LIGHT_MODEL_LOCAL_VIEWER (with C_SHININESS) */
     C_TWO_SIDE = 16384,    /* GL_LIGHT_MODEL_TWO_SIDE, the back with its own shininess 7 */
     C_SEPARATE = 32768,    /* GL_SEPARATE_SPECULAR_COLOR (colours of GL_3D_COLOR are the primary) */
+    C_CAMERA = 65536,      /* boxed's camera: glMultMatrixf of a rotation, analysed with what follows */
+    C_PUSH = 131072,       /* glPushMatrix before the scale (Mesa analyses the matrix it copies) */
+    C_BOXED = 262144,      /* boxed's modelview: camera, a far translation, push, translate, scale 3 */
 };
 
 static int cur_case;
+/* boxed's camera rotation (glMultMatrixf at call 2955 of its capture). */
+static const float boxed_cam[16] = {-0.8653435f, 0.2442258f, -0.4376463f, 0, 0, 0.8732332f, 0.4873024f, 0,
+                                    0.5011792f, 0.4216839f, -0.7556467f, 0, 0, 0, 0, 1};
 static float cur_shin = 20.0f, cur_spot_exp = 2.0f;
 static uint32_t rng_state;
 
@@ -56,7 +62,10 @@ static void lit_feedback(fs_context *c, double *v, int *n)
     G(Viewport, 0, 0, 64, 64);
     G(MatrixMode, GL_PROJECTION);
     G0(LoadIdentity);
-    G(Frustum, -1, 1, -1, 1, 1, 100);
+    if (k & C_BOXED)
+        G(Frustum, -1.2435, 1.2435, -0.9326, 0.9326, 2, 1000); /* boxed's perspective */
+    else
+        G(Frustum, -1, 1, -1, 1, 1, 100);
     G(MatrixMode, GL_MODELVIEW);
     G0(LoadIdentity);
     const float lpos[4] = {-4, 3, 10, (k & C_DIRECTIONAL) ? 0.0f : 1.0f};
@@ -72,7 +81,16 @@ static void lit_feedback(fs_context *c, double *v, int *n)
     } else {
         G(Lightfv, GL_LIGHT0, GL_POSITION, lpos);
     }
-    if (k & C_SIERPINSKI) {
+    if (k & C_BOXED) {
+        G(MultMatrixf, boxed_cam);
+        G(Translated, 132.4724426269531, -159.9700164794922, 226.4253540039062);
+        /* boxed's lights, given under the camera: at the eye, or from +y. */
+        const float bpos[4] = {0, (k & C_DIRECTIONAL) ? 1.0f : 0.0f, 0, (k & C_DIRECTIONAL) ? 0.0f : 1.0f};
+        G(Lightfv, GL_LIGHT0, GL_POSITION, bpos);
+        G0(PushMatrix);
+        G(Translatef, 4.406446f, 5.952302f, 1.165314f);
+        G(Scalef, 3, 3, 3);
+    } else if (k & C_SIERPINSKI) {
         static const float id[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
         G(Translatef, -4.767981f, -2.072593f, -5.102578f);
         G(MultMatrixf, id);
@@ -82,10 +100,15 @@ static void lit_feedback(fs_context *c, double *v, int *n)
     } else {
         G(Translatef, 0.1f, -0.2f, -5.0f);
     }
+    if (k & C_CAMERA) {
+        G(MultMatrixf, boxed_cam);
+    }
     if (k & C_ROTATE) {
         G(Rotatef, 41.3f, 1, 0, 0);
         G(Rotatef, 33.0f, 0, 1, 0);
     }
+    if (k & C_PUSH)
+        G0(PushMatrix);
     if (k & C_SCALE4)
         G(Scalef, 4, 4, 4);
     G(Enable, GL_LIGHTING);
@@ -205,6 +228,9 @@ TEST(lighting_exact)
         {C_SPOT, 0, 0}, /* exp2(0) is 1 exactly */
         {C_SPOT | C_DIRECTIONAL, 0, 10}, {C_SPOT | C_ATTENUATION | C_SHININESS, 5, 10},
         {C_SPOT | C_SHININESS | C_LOCAL_VIEWER | C_ROTATE, 128, 0.5f},
+        {C_CAMERA, 0, 0}, {C_CAMERA | C_SCALE4, 0, 0}, {C_CAMERA | C_SCALE4 | C_DIRECTIONAL, 0, 0},
+        {C_CAMERA | C_PUSH | C_SCALE4, 0, 0}, {C_CAMERA | C_PUSH | C_SCALE4 | C_DIRECTIONAL, 0, 0},
+        {C_BOXED, 0, 0}, {C_BOXED | C_DIRECTIONAL, 0, 0},
         {C_TWO_SIDE | C_SHININESS, 20, 0}, {C_TWO_SIDE, 0, 0}, {C_TWO_SIDE | C_SPOT | C_SHININESS | C_ROTATE, 1, 2},
     };
     long total = 0;
