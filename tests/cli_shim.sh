@@ -62,6 +62,24 @@ test_boxes_same_numbers_as_osmesa() {
     echo "$(grep -c samples "$WORK/boxes_shim.txt") query results, colour and depth checksums identical"
 }
 
+# Issue 19's state program: test_state_table --print sets random state,
+# pushes every attribute group (and the client groups), scrambles, pops and
+# queries every GL 1.5 state variable, lights, materials and textures
+# through plain gl* calls; on libOSMesa and with the shim preloaded it must
+# print the same values and errors.
+test_state_program_same_as_osmesa() {
+    local p="$FRAGSIM_BUILD/tests/test_state_table"
+    [ -x "$p" ] || fail "no $p"
+    "$p" --print >"$WORK/state_osmesa.txt" 2>"$WORK/s1" || fail "OSMesa run: $(cat "$WORK/s1")"
+    LD_PRELOAD="$PRELOAD" "$p" --print >"$WORK/state_shim.txt" 2>"$WORK/s2" || fail "preloaded run: $(cat "$WORK/s2")"
+    grep -q 'renderer llvmpipe' "$WORK/s1" || fail "OSMesa run did not use llvmpipe: $(cat "$WORK/s1")"
+    grep -q 'renderer fragsim' "$WORK/s2" || fail "preloaded run did not use the model: $(cat "$WORK/s2")"
+    [ "$(wc -l <"$WORK/state_osmesa.txt")" -gt 100000 ] || fail "too few values: $(wc -l <"$WORK/state_osmesa.txt")"
+    diff "$WORK/state_osmesa.txt" "$WORK/state_shim.txt" | head -20 >&2
+    cmp -s "$WORK/state_osmesa.txt" "$WORK/state_shim.txt" || fail "the shim's state differs from libOSMesa's"
+    echo "$(wc -l <"$WORK/state_shim.txt") values and errors identical"
+}
+
 test_api_same_as_osmesa() {
     build osmesa_api
     "$WORK/osmesa_api_osmesa" >"$WORK/api_osmesa.txt" 2>&1 || fail "OSMesa run failed"
@@ -168,6 +186,7 @@ test_capture_gate_missing_chip() {
 }
 
 for t in test_shim_exports_table_and_osmesa_api test_boxes_same_numbers_as_osmesa test_api_same_as_osmesa \
+         test_state_program_same_as_osmesa \
          test_shim_errors_listed_by_call \
          test_capture_dump_replay_check test_capture_to_unwritable_path test_capture_gate_missing_chip; do
     run_test "$t"

@@ -762,4 +762,44 @@ TEST_LIST = {
     TEST_END,
 };
 
-int main(int argc, char **argv) { return check_main(argc, argv, test_list); }
+/* Program mode, `test_state_table --print`: the sequences above as an
+ * ordinary OSMesa program, every call through whatever library provides
+ * gl* and OSMesa* (libOSMesa, or build/libfragsimGL.so preloaded), each
+ * value and error printed.  tests/cli_shim.sh runs it both ways and
+ * requires the same output: the whole GL 1.5 state set, pushed,
+ * scrambled, popped and queried through the shim as on libOSMesa. */
+static int print_sequences(void)
+{
+    static const struct { seq_fn fn; const char *name; unsigned seeds; } seqs[] = {
+        {seq_initial, "initial", 1}, {seq_random, "random", 4}, {seq_push_pop, "push-pop", 2 * N(groups) + 8},
+        {seq_stack_errors, "stack-errors", 1}, {seq_setter_errors, "setter-errors", 1},
+    };
+    static rec a;
+    long values = 0;
+    for (size_t q = 0; q < N(seqs); q++)
+        for (unsigned seed = 1; seed <= seqs[q].seeds; seed++) {
+            osm o;
+            if (!osm_open(&o, 32, 32)) {
+                osm_close(&o);
+                fprintf(stderr, "test_state_table: no OSMesa context\n");
+                return 1;
+            }
+            if (q == 0)
+                fprintf(stderr, "test_state_table: renderer %s\n", (const char *)glGetString(GL_RENDERER));
+            a.n = 0;
+            seqs[q].fn(NULL, &a, seed);
+            osm_close(&o);
+            for (int i = 0; i < a.n; i++)
+                printf("%s %u %d %s %.9g\n", seqs[q].name, seed, i, a.what[i], a.v[i]);
+            values += a.n;
+        }
+    fprintf(stderr, "test_state_table: %ld values and errors printed\n", values);
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc == 2 && !strcmp(argv[1], "--print"))
+        return print_sequences();
+    return check_main(argc, argv, test_list);
+}
