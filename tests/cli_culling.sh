@@ -176,7 +176,7 @@ test_unavailable_and_bad_options() {
     out=$("$OSMBIN" --test brief --frames 1 --out "$WORK/x2" 2>&1); [ $? -eq 2 ] || fail "brief on libOSMesa: not exit 2"
     echo "$out" | grep -q "does not offer GL_FRAGSIM_occlusion_unit" || fail "brief: $out"
     out=$("$SHIMBIN" --scene moon 2>&1); [ $? -eq 2 ] || fail "--scene moon: not exit 2"
-    echo "$out" | grep -q "city, cathedrals, forest and garbage" || fail "--scene moon: $out"
+    echo "$out" | grep -q "city, norwich, cathedrals, forest and garbage" || fail "--scene moon: $out"
     "$SHIMBIN" --method xyz >/dev/null 2>&1; [ $? -eq 2 ] || fail "--method xyz: not exit 2"
     "$SHIMBIN" --size 0x5 >/dev/null 2>&1; [ $? -eq 2 ] || fail "--size 0x5: not exit 2"
     "$SHIMBIN" --frames >/dev/null 2>&1; [ $? -eq 2 ] || fail "--frames without a value: not exit 2"
