@@ -469,6 +469,7 @@ static int pvs_build(study *S)
         }
     }
     glDeleteQueries(1, &q);
+    glFinish(); /* the precomputation is a frame of its own in a capture (the study's frame -1) */
     uint64_t in_pvs = 0;
     for (size_t c = 0; c < cells; c++)
         for (int i = 0; g->sampled[c] && i < S->sc.n_objs; i++) in_pvs += g->vis[c * (size_t)S->sc.n_objs + i];
