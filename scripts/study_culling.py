@@ -92,7 +92,7 @@ def table_seeds(runs):
     speed-up over DR and over VFC, per configuration."""
     out = ['| method | objects drawn / frame | culled (triangles) | ' +
            ' | '.join('fps %s' % cl for _, cl in CONFIGS) + ' | speed-up over DR (O2-H99, IR) | '
-           'over VFC (O2-H99, IR) | seed paper |', '|---|' + '---|' * (6 + len(CONFIGS))]
+           'over VFC (O2-H99, IR) | seed paper |', '|---|' + '---|' * (5 + len(CONFIGS))]
     dr, vfc = runs[('norwich', 'dr', 'phbvo')], runs[('norwich', 'vfc', 'phbvo')]
     for m, label in SEED_METHODS:
         r = runs[('norwich', m, 'phbvo')]
