@@ -13,6 +13,12 @@ import subprocess
 CONFIGS = [('o2', 'O2'), ('o2_h99', 'O2-H99'), ('infinite_reality', 'IR')]
 HIERS = [('phbvo', 'p-HBVO'), ('dbvs', 'D-BVS'), ('sgi', 'SGI')]
 SCENES = ['cathedrals', 'city', 'forest', 'garbage']
+# The seeds' city workloads (issue 21, item 5), on the norwich scene.
+SEED_METHODS = [('dr', 'DR'), ('vfc', 'VFC'), ('shadow', 'occluder shadows'), ('pvs', 'view-cell PVS')]
+# Seed figures: Willmott et al. 2001, Fig. 10 (Norwich, 222,912 polygons,
+# occluder shadows: 1.83 fps without, 7.54 with); Marvie et al. 2003 give
+# no culled share or frame rate for their PVS.
+SEED_FPS = {'shadow': '1.83 -> 7.54 fps, 4.1x (Willmott et al. 2001, Fig. 10)', 'pvs': 'none given (Marvie et al. 2003)'}
 
 # Huettner 1999, Table 3.4 (culled, speed-up over VFC only), O2.
 TABLE_3_4 = [('cathedrals', 'vo', 'cathedrals', 91.3, 4.2), ('city', 'vo', 'city', 99.8, 4.8),
@@ -34,17 +40,21 @@ TABLE_3_2_3 = {
 class Run:
     """One cullstudy run: per-frame counts and, per config, per-frame cycles."""
 
-    def __init__(self, d):
+    def __init__(self, d, skip=0):
+        """skip: replayed frames before the first row (the PVS's
+        precomputation, a frame of its own in the capture)."""
         self.rows = list(csv.DictReader(open(os.path.join(d, 'culling.csv'))))
+        self.pre = {}
         log = open(os.path.join(d, 'cullstudy.log')).read()
         m = re.search(r'(\d+) nodes, (\d+) leaves, (\d+) objects', log)
         self.nodes, self.leaves, self.objects = (int(x) for x in m.groups())
         self.cyc = {}
         for c, _ in CONFIGS:
             j = json.load(open(os.path.join(d, c + '.json')))['cycle']
-            if len(j['frames']) < len(self.rows):
+            if len(j['frames']) < len(self.rows) + skip:
                 raise SystemExit('%s: %d frames replayed for %d rows' % (d, len(j['frames']), len(self.rows)))
-            self.cyc[c] = (j['frames'][:len(self.rows)], j['clock_khz'])
+            self.pre[c] = sum(f['cycles'] for f in j['frames'][:skip]) / (j['clock_khz'] * 1000.0)
+            self.cyc[c] = (j['frames'][skip:skip + len(self.rows)], j['clock_khz'])
 
     def tris(self):
         return sum(int(r['triangles_rendered']) for r in self.rows)
@@ -67,14 +77,37 @@ class Run:
 
 def load(out):
     runs = {}
-    for s in SCENES:
+    for s in SCENES + ['norwich']:
         sd = os.path.join(out, s)
         if not os.path.isdir(sd):
             continue
         for name in sorted(os.listdir(sd)):
             method, hier = name.split('-')
-            runs[(s, method, hier)] = Run(os.path.join(sd, name))
+            runs[(s, method, hier)] = Run(os.path.join(sd, name), 1 if method == 'pvs' else 0)
     return runs
+
+
+def table_seeds(runs):
+    """The seeds' city workloads on norwich: culled share of DR's triangles,
+    speed-up over DR and over VFC, per configuration."""
+    out = ['| method | objects drawn / frame | culled (triangles) | ' +
+           ' | '.join('fps %s' % cl for _, cl in CONFIGS) + ' | speed-up over DR (O2-H99, IR) | '
+           'over VFC (O2-H99, IR) | seed paper |', '|---|' + '---|' * (5 + len(CONFIGS))]
+    dr, vfc = runs[('norwich', 'dr', 'phbvo')], runs[('norwich', 'vfc', 'phbvo')]
+    for m, label in SEED_METHODS:
+        r = runs[('norwich', m, 'phbvo')]
+        n = len(r.rows)
+        culled = 100.0 * (1 - r.tris() / dr.tris())
+        objs = sum(int(x['objects_rendered']) for x in r.rows) / n
+        over = lambda base: ', '.join('%.2f' % (base.seconds(c) / r.seconds(c)) for c in ('o2_h99', 'infinite_reality'))
+        out.append('| %s | %.1f of %d | %s | %s | %s | %s | %s |' % (
+            label, objs, r.objects, pct(culled), ' | '.join('%.2f' % (1 / r.seconds(c)) for c, _ in CONFIGS),
+            over(dr), over(vfc), SEED_FPS.get(m, '')))
+    p = runs[('norwich', 'pvs', 'phbvo')]
+    out.append('')
+    out.append('PVS precomputation (the capture\'s first frame, not in the frame rates): %s.' % ', '.join(
+        '%.1f s %s' % (p.pre[c], cl) for c, cl in CONFIGS))
+    return out
 
 
 def pct(x):
@@ -230,7 +263,7 @@ def main():
         'FRAMES': str(a.frames), 'CPU': str(a.cpu_seconds), 'SCALE': a.scale, 'SECONDS': str(a.seconds), 'JOBS': str(a.jobs),
         'RUNS': str(len(runs)), 'O2_TRI_CYCLES': a.o2_tri_cycles, 'TABLE_3_4': '\n'.join(table_3_4(runs)),
         'TABLE_3_2': '\n'.join(table_hier(runs, 'cathedrals')), 'TABLE_3_3': '\n'.join(table_hier(runs, 'city')),
-        'FIGURES': figs, 'DISCUSSION': '\n'.join(discussion(runs)),
+        'FIGURES': figs, 'DISCUSSION': '\n'.join(discussion(runs)), 'TABLE_SEEDS': '\n'.join(table_seeds(runs)),
     }
     for k, v in subst.items():
         tmpl = tmpl.replace('@%s@' % k, v)

@@ -60,6 +60,7 @@ export BUILD FRAMES SCALE OUT O2_TRI_CYCLES
         for m in dr vfc vo; do echo "$s $m phbvo"; done
     done
     echo "forest ac phbvo"
+    for m in dr vfc shadow pvs; do echo "norwich $m phbvo"; done # the seeds' city workloads (item 5)
     for s in cathedrals city; do
         for h in dbvs sgi; do
             for m in vfc vo; do echo "$s $m $h"; done

@@ -136,6 +136,37 @@ test_cycles_column_from_capture() {
     done
 }
 
+# The seeds' city workloads on norwich (issue 21, item 5): occluder shadows
+# (a cull map read back) and the view-cell PVS (per-object NOHC counts) draw
+# DR's images on both libraries, decide the same on both, and cull.
+test_seed_methods_on_norwich() {
+    local lib m
+    for lib in "$SHIMBIN:s" "$OSMBIN:l"; do
+        run_cull "${lib%%:*}" "n_${lib##*:}_dr" --scene norwich --method dr
+        for m in shadow pvs; do
+            run_cull "${lib%%:*}" "n_${lib##*:}_$m" --scene norwich --method $m --cull-map 160
+            same_images "$WORK/n_${lib##*:}_dr" "$WORK/n_${lib##*:}_$m"
+        done
+    done
+    for m in dr shadow pvs; do
+        diff "$WORK/n_l_$m/culling.csv" "$WORK/n_s_$m/culling.csv" >&2 || fail "norwich $m: the model decides differently"
+        same_images "$WORK/n_l_$m" "$WORK/n_s_$m"
+    done
+    [ "$(col_sum "$WORK/n_s_shadow/culling.csv" occ_culled)" -gt 0 ] || fail "shadow: nothing under a shadow"
+    [ "$(col_sum "$WORK/n_s_pvs/culling.csv" occ_culled)" -gt 0 ] || fail "pvs: nothing outside the PVS"
+    grep -q "^shadow: 160 x 160 cull map" "$WORK/n_s_shadow.out" || fail "shadow: $(cat "$WORK/n_s_shadow.out")"
+    grep -qE "^pvs: .* [1-9][0-9]* sample views" "$WORK/n_s_pvs.out" || fail "pvs: $(cat "$WORK/n_s_pvs.out")"
+    local out
+    out=$("$SHIMBIN" --scene cathedrals --method shadow --frames 1 --size 64x64 --out "$WORK/x3" 2>&1)
+    [ $? -eq 2 ] && echo "$out" | grep -q "has no occluders" || fail "shadow on cathedrals: $out"
+    out=$("$SHIMBIN" --scene garbage --method pvs --frames 1 --size 64x64 --out "$WORK/x4" 2>&1)
+    [ $? -eq 2 ] && echo "$out" | grep -q "needs a static scene" || fail "pvs on garbage: $out"
+    out=$("$SHIMBIN" --scene norwich --method shadow --frames 1 --size 64x64 --out "$WORK/x5" 2>&1)
+    [ $? -eq 2 ] && echo "$out" | grep -q "larger than the 64x64 buffer" || fail "--cull-map 256 in 64x64: $out"
+    "$SHIMBIN" --cull-map 7 >/dev/null 2>&1; [ $? -eq 2 ] || fail "--cull-map 7: not exit 2"
+    "$SHIMBIN" --pvs-samples some >/dev/null 2>&1; [ $? -eq 2 ] || fail "--pvs-samples some: not exit 2"
+}
+
 # What is not there says so, with exit 2 and nothing drawn.
 test_unavailable_and_bad_options() {
     local out
@@ -144,7 +175,7 @@ test_unavailable_and_bad_options() {
     out=$("$OSMBIN" --test brief --frames 1 --out "$WORK/x2" 2>&1); [ $? -eq 2 ] || fail "brief on libOSMesa: not exit 2"
     echo "$out" | grep -q "does not offer GL_FRAGSIM_occlusion_unit" || fail "brief: $out"
     out=$("$SHIMBIN" --scene moon 2>&1); [ $? -eq 2 ] || fail "--scene moon: not exit 2"
-    echo "$out" | grep -q "city, cathedrals, forest and garbage" || fail "--scene moon: $out"
+    echo "$out" | grep -q "city, norwich, cathedrals, forest and garbage" || fail "--scene moon: $out"
     "$SHIMBIN" --method xyz >/dev/null 2>&1; [ $? -eq 2 ] || fail "--method xyz: not exit 2"
     "$SHIMBIN" --size 0x5 >/dev/null 2>&1; [ $? -eq 2 ] || fail "--size 0x5: not exit 2"
     "$SHIMBIN" --frames >/dev/null 2>&1; [ $? -eq 2 ] || fail "--frames without a value: not exit 2"
@@ -153,7 +184,7 @@ test_unavailable_and_bad_options() {
 
 for t in test_methods_identical_to_dr_on_the_model test_methods_identical_to_dr_on_osmesa \
          test_query_methods_model_equals_osmesa test_brief_selection_and_scenes test_culling_culls \
-         test_hierarchy_counts \
+         test_hierarchy_counts test_seed_methods_on_norwich \
          test_cycles_column_from_capture test_unavailable_and_bad_options; do
     run_test "$t"
 done

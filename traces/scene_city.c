@@ -155,22 +155,21 @@ static uint64_t city_structure_tris(const city_layout *L)
     return t;
 }
 
-/* Emits one house of exactly 'budget' triangles.  Returns -1 when even the
+/* A house's layout for 'budget' triangles, drawn from r; -1 when even the
  * smallest house does not fit. */
-static int city_house(sg *s, uint64_t seed, uint64_t budget, int max_floors)
+static int city_layout_make(city_layout *L_out, sg_rng *r_in, uint64_t seed, uint64_t budget, int max_floors)
 {
-    sg_rng r;
-    sg_rng_seed(&r, seed);
+    sg_rng *r = r_in;
     city_layout L;
     memset(&L, 0, sizeof L);
     L.seed = seed;
-    L.w = (float)sg_rng_range(&r, 8.0, 13.0);
-    L.d = (float)sg_rng_range(&r, 7.0, 10.0);
-    L.floors = 1 + sg_rng_int(&r, max_floors);
+    L.w = (float)sg_rng_range(r, 8.0, 13.0);
+    L.d = (float)sg_rng_range(r, 7.0, 10.0);
+    L.floors = 1 + sg_rng_int(r, max_floors);
     L.rx = 2;
     L.rz = 2;
     L.tiles = 1;
-    float shade = (float)sg_rng_range(&r, 0.0, 0.25);
+    float shade = (float)sg_rng_range(r, 0.0, 0.25);
     L.wall[0] = 0.75f + shade; L.wall[1] = 0.68f + shade * 0.8f; L.wall[2] = 0.55f;
     L.roof[0] = 0.55f + shade; L.roof[1] = 0.22f; L.roof[2] = 0.15f;
 
@@ -188,6 +187,18 @@ static int city_house(sg *s, uint64_t seed, uint64_t budget, int max_floors)
         if (n.tiles > 64 || city_structure_tris(&n) * 10 > budget * 7) break;
         L = n;
     }
+    *L_out = L;
+    return 0;
+}
+
+/* Emits one house of exactly 'budget' triangles.  Returns -1 when even the
+ * smallest house does not fit. */
+static int city_house(sg *s, uint64_t seed, uint64_t budget, int max_floors)
+{
+    sg_rng r;
+    sg_rng_seed(&r, seed);
+    city_layout L;
+    if (city_layout_make(&L, &r, seed, budget, max_floors) != 0) return -1;
     uint64_t left = budget - city_structure_tris(&L);
     city_structure(s, &L);
 
@@ -256,6 +267,28 @@ int sg_city_compile(sg *s, const sg_city_plan *pl, uint64_t seed, GLuint base, c
         }
     }
     return 0;
+}
+
+int sg_city_ground_rooms(const sg_city_plan *pl, uint64_t seed, int v, float rect[][4], int max, float *top)
+{
+    sg_rng r;
+    uint64_t hs = v < pl->variants ? seed * 977 + (uint64_t)v : seed * 977 + 1000; /* sg_city_compile's seeds */
+    sg_rng_seed(&r, hs);
+    city_layout L;
+    if (city_layout_make(&L, &r, hs, v < pl->variants ? pl->budget : pl->landmark_budget,
+                         v < pl->variants ? pl->max_floors : pl->max_floors + 2) != 0)
+        return -1;
+    int n = 0;
+    const float e = 0.12f; /* city_structure's inset */
+    *top = (float)L.floors * CITY_FLOOR_H + 0.45f * L.d; /* city_structure's roof ridge */
+    for (int ix = 0; ix < L.rx; ix++)
+        for (int iz = 0; iz < L.rz && n < max; iz++, n++) {
+            rect[n][0] = L.w * ix / L.rx + e;
+            rect[n][1] = L.d * iz / L.rz + e;
+            rect[n][2] = L.w * (ix + 1) / L.rx - e;
+            rect[n][3] = L.d * (iz + 1) / L.rz - e;
+        }
+    return n;
 }
 
 uint64_t sg_city_lots_seed(uint64_t seed) { return seed * 31 + 7; }

@@ -205,6 +205,13 @@ int sg_city_compile(sg *s, const sg_city_plan *pl, uint64_t seed, GLuint base, c
 /* Lot i's variant and turn (quarter turns about y), drawn from 'lots'
  * (seeded with sg_city_lots_seed) in lot order. */
 uint64_t sg_city_lots_seed(uint64_t seed);
+/* Variant v's ground-floor rooms as house-model rectangles x0, z0, x1, z1
+ * (at most max); each is closed by inward-facing walls, floor and ceiling
+ * from y = SG_CITY_ROOM_Y0 to SG_CITY_ROOM_Y1; top: the house's highest
+ * point (the roof's ridge).  The count, or -1. */
+int sg_city_ground_rooms(const sg_city_plan *pl, uint64_t seed, int v, float rect[][4], int max, float *top);
+#define SG_CITY_ROOM_Y0 0.02f
+#define SG_CITY_ROOM_Y1 2.92f
 void sg_city_lot(sg_rng *lots, const sg_city_plan *pl, uint64_t i, int *variant, int *turn);
 /* The lot's model transform, as glTranslate/glRotate calls. */
 void sg_city_lot_transform(sg *s, const sg_city_plan *pl, uint64_t i, int turn);

@@ -23,6 +23,7 @@ typedef struct cull_obj {
     cull_box box;                 /* world space, this frame */
     uint64_t tris;
     GLuint list;
+    float top;                    /* the geometry's highest point, when the scene knows a tighter one than box (or box.hi[1]) */
     float pre[3], angle, axis[3], post[3], scale, color[3];
     int rotate, has_color;
 } cull_obj;
@@ -37,6 +38,8 @@ typedef struct cull_scene {
     cull_obj *objs;
     int n_objs;
     uint64_t ground_tris;         /* what ops->ground draws */
+    float (*occ)[6];              /* solid occluder boxes lo xyz, hi xyz (the shadow method), or NULL */
+    int n_occ;
     void *priv;
 } cull_scene;
 typedef struct cull_scene_ops {
@@ -106,6 +109,23 @@ uint64_t cull_occlusion_test(int test, const cull_view *v, const cull_box *b, in
 int cull_select_test(const cull_box *b);
 /* A reason the test cannot run on this GL, or NULL. */
 const char *cull_test_unavailable(int test);
+
+/* ---- occluder shadows (cull_shadow.c; Willmott et al. 2001, sec. 3.2) ---- */
+typedef struct cull_shadow {
+    float x0, z0, cell, diag;     /* the map's corner, cell edge, a length beyond it */
+    int res;                      /* res x res cells */
+    float *height;                /* per cell: a lower bound of the shadows' height over it, or -1 */
+    unsigned short *raw;          /* the depth read back */
+    uint64_t shadows;             /* shadow polygons of the last map */
+} cull_shadow;
+/* A map over the objects' ground-plane bounds; res even.  0 or -1. */
+int cull_shadow_init(cull_shadow *m, const cull_obj *objs, int n, int res);
+void cull_shadow_free(cull_shadow *m);
+/* Draws and reads back the cull map from eye (GL state left as it was;
+ * the depth buffer's first res x res pixels overwritten). */
+void cull_shadow_render(cull_shadow *m, const float (*occ)[6], int n_occ, const float eye[3]);
+/* 1 when the box is under the map's shadows over all of its footprint. */
+int cull_shadow_hidden(const cull_shadow *m, const cull_box *b);
 
 /* ---- output ---- */
 int cull_write_png(const char *path, const unsigned char *rgba, int w, int h);

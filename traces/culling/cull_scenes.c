@@ -72,16 +72,45 @@ static cull_box lot_box(const sg_city_plan *pl, uint64_t i)
     return b;
 }
 
-static int city_setup(cull_scene *sc, char *err, size_t errlen)
+/* The house's ground-floor rooms as world boxes (the occluder shadows'
+ * occluders, cull_shadow.c): sg_city_lot_transform's translate, quarter
+ * turn about y (x' = x cos + z sin, z' = z cos - x sin) and translate,
+ * shrunk by 1 mm for the float matrices' rounding. */
+static void city_occluders(cull_scene *sc, cull_obj *obj, const sg_city_plan *pl, int v, int turn, const float at[3])
+{
+    float r[4][4], top = 0;
+    int n = sg_city_ground_rooms(pl, sc->seed, v, r, 4, &top);
+    obj->top = n > 0 ? top + 0.25f : obj->box.hi[1]; /* lot_box's margin */
+    static const float cs[4][2] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+    const float c = cs[turn & 3][0], s = cs[turn & 3][1];
+    for (int k = 0; k < n; k++) {
+        float *o = sc->occ[sc->n_occ++];
+        float x[2] = {r[k][0] - 6.0f, r[k][2] - 6.0f}, z[2] = {r[k][1] - 5.0f, r[k][3] - 5.0f};
+        o[0] = o[2] = 1e30f;
+        o[3] = o[5] = -1e30f;
+        for (int i = 0; i < 2; i++)
+            for (int j = 0; j < 2; j++) {
+                float wx = x[i] * c + z[j] * s + at[0], wz = z[j] * c - x[i] * s + at[2];
+                o[0] = fminf(o[0], wx + 1e-3f), o[3] = fmaxf(o[3], wx - 1e-3f);
+                o[2] = fminf(o[2], wz + 1e-3f), o[5] = fmaxf(o[5], wz - 1e-3f);
+            }
+        o[1] = SG_CITY_ROOM_Y0;
+        o[4] = SG_CITY_ROOM_Y1 - 1e-3f;
+    }
+}
+
+/* The houses of a city plan as objects: scene_city.c's city_run layout. */
+static int city_like_setup(cull_scene *sc, uint64_t houses, uint64_t target, int max_floors, const char *name,
+                           char *err, size_t errlen)
 {
     city_scene *C = calloc(1, sizeof *C);
     if (!(sc->priv = C)) return -1;
-    uint64_t houses = sc->paper ? 300 : 36;
-    uint64_t target = sc->paper ? 1056280 : 36 * 700;
-    if (sg_city_plan_make(&C->plan, houses, target, 3, "city", err, errlen) != 0) return -1;
+    if (sg_city_plan_make(&C->plan, houses, target, max_floors, name, err, errlen) != 0) return -1;
     GLuint base = sg_gen_lists(sc->s, C->plan.variants + 1);
-    if (!base || sg_city_compile(sc->s, &C->plan, sc->seed, base, "city", err, errlen) != 0) return -1;
+    if (!base || sg_city_compile(sc->s, &C->plan, sc->seed, base, name, err, errlen) != 0) return -1;
     if (alloc_objs(sc, (int)houses) != 0) return -1;
+    sc->occ = calloc((size_t)houses * 4, sizeof *sc->occ);
+    if (!sc->occ) return -1;
     sg_rng lots;
     sg_rng_seed(&lots, sg_city_lots_seed(sc->seed));
     for (uint64_t i = 0; i < houses; i++) {
@@ -100,9 +129,26 @@ static int city_setup(cull_scene *sc, char *err, size_t errlen)
         o->axis[1] = 1.0f;
         o->post[0] = -6.0f;
         o->post[2] = -5.0f;
+        city_occluders(sc, o, &C->plan, v, turn, o->pre);
     }
     sc->ground_tris = 2ull * (uint64_t)(C->plan.cols + 2) * (uint64_t)(C->plan.rows + 2);
     return 0;
+}
+
+static int city_setup(cull_scene *sc, char *err, size_t errlen)
+{
+    /* Huettner 1999, Table 3.1: 300 buildings, 1,056,280 triangles. */
+    return sc->paper ? city_like_setup(sc, 300, 1056280, 3, "city", err, errlen)
+                     : city_like_setup(sc, 36, 36 * 700, 3, "city", err, errlen);
+}
+
+/* norwich (scene_city.c): Willmott et al. 2001, sec. 3.1.4, 800 houses of
+ * 222,912 polygons, at most 2 floors; the seeds' city (occluder shadows,
+ * view-cell PVS).  Small: 64 houses of about 280 triangles. */
+static int norwich_setup(cull_scene *sc, char *err, size_t errlen)
+{
+    return sc->paper ? city_like_setup(sc, 800, 222912, 2, "norwich", err, errlen)
+                     : city_like_setup(sc, 64, 64 * 279, 2, "norwich", err, errlen);
 }
 
 static void city_state(cull_scene *sc)
@@ -276,6 +322,7 @@ static void garbage_lights(cull_scene *sc) { sg_garbage_lights(sc->s); }
 
 static const cull_scene_ops scenes[] = {
     {"city", 0, {0.55f, 0.7f, 0.9f}, city_setup, city_state, city_frame, city_lights, city_ground},
+    {"norwich", 0, {0.55f, 0.7f, 0.9f}, norwich_setup, city_state, city_frame, city_lights, city_ground},
     {"cathedrals", 0, {0.1f, 0.1f, 0.14f}, cath_setup, cath_state, cath_frame, cath_lights, NULL},
     {"forest", 0, {0.6f, 0.75f, 0.95f}, forest_setup, forest_state, forest_frame, forest_lights, forest_ground},
     {"garbage", 1, {0.15f, 0.15f, 0.15f}, garbage_setup, garbage_state, garbage_frame, garbage_lights, NULL},
@@ -291,7 +338,9 @@ const cull_scene_ops *cull_scene_find(const char *name)
 void cull_scene_free(cull_scene *sc)
 {
     free(sc->objs);
+    free(sc->occ);
     free(sc->priv);
     sc->objs = NULL;
+    sc->occ = NULL;
     sc->priv = NULL;
 }

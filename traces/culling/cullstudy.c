@@ -4,7 +4,7 @@
  * plain gl* calls).  The Makefile builds it against libOSMesa
  * (build/cullstudy-osmesa) and against fragsim's shim (build/cullstudy).
  *
- *   cullstudy [--scene city] [--scale small|paper] [--method dr|vfc|vo|ac|cac]
+ *   cullstudy [--scene city] [--scale small|paper] [--method dr|vfc|vo|ac|cac|pvs|shadow]
  *             [--test query|hp|brief|stencil] [--hierarchy phbvo|dbvs|sgi]
  *             [--frames N] [--size WxH] [--out DIR] [...]
  *
@@ -25,7 +25,9 @@
 #include "cull.h"
 #include "../sg.h"
 
-enum { M_DR, M_VFC, M_VO, M_AC, M_CAC };
+enum { M_DR, M_VFC, M_VO, M_AC, M_CAC, M_PVS, M_SHADOW };
+/* --pvs-samples: which views of a view cell its PVS is counted from. */
+enum { PVS_BOTH, PVS_PATH, PVS_CELL };
 
 typedef struct opts {
     const char *scene, *scale, *out;
@@ -35,12 +37,24 @@ typedef struct opts {
     double ac_threshold;   /* eq. 3.3 threshold, in pixels of a 650x650 view plane */
     double p_graphics;     /* eq. 3.4 */
     double test_cost;      /* one occlusion test, in triangles rendered (eq. 3.4's unit here) */
+    double cell;           /* pvs: view-cell edge, metres */
+    int pvs_samples;
+    int cull_map;          /* shadow: cells per side of the cull map (even) */
     uint64_t seed;
 } opts;
 
 typedef struct frame_stats {
     uint64_t vfc_tests, occ_tests, vfc_culled, occ_culled, objects, tris;
 } frame_stats;
+
+/* View-cell PVS (seed 003): a grid of square cells over the ground plane;
+ * vis[c * n_objs + i] says object i was seen from a sample view of cell c. */
+typedef struct pvs_grid {
+    float x0, z0;
+    int nx, nz;
+    unsigned char *vis, *sampled;
+    uint64_t views, queries, cells;
+} pvs_grid;
 
 typedef struct study {
     opts o;
@@ -51,13 +65,15 @@ typedef struct study {
     cull_view view;
     double prev_render;    /* eq. 3.4's T_render: triangles of the previous frame */
     frame_stats st;
+    pvs_grid pvs;
+    cull_shadow shadow;
 } study;
 
 static int usage(const char *msg)
 {
     if (msg) fprintf(stderr, "cullstudy: %s\n", msg);
-    fprintf(stderr, "usage: cullstudy [--scene city|cathedrals|forest|garbage] [--scale small|paper]\n"
-                    "  [--method dr|vfc|vo|ac|cac] [--test query|hp|brief|stencil] [--hierarchy phbvo|dbvs|sgi]\n"
+    fprintf(stderr, "usage: cullstudy [--scene city|norwich|cathedrals|forest|garbage] [--scale small|paper]\n"
+                    "  [--method dr|vfc|vo|ac|cac|pvs|shadow] [--cell METRES] [--pvs-samples both|path|cell]\n  [--cull-map N] [--test query|hp|brief|stencil] [--hierarchy phbvo|dbvs|sgi]\n"
                     "  [--frames N] [--size WxH] [--out DIR] [--leaf N] [--leaf-only] [--sampling N]\n"
                     "  [--ac-threshold PIXELS] [--test-cost TRIANGLES] [--vfc-select]\n");
     return 2;
@@ -82,19 +98,22 @@ static int parse_int(const char *v, int lo, int hi, int *out)
 
 static int parse_opt(opts *o, const char *k, const char *v)
 {
-    static const char *const methods[] = {"dr", "vfc", "vo", "ac", "cac"};
+    static const char *const methods[] = {"dr", "vfc", "vo", "ac", "cac", "pvs", "shadow"};
+    static const char *const samples[] = {"both", "path", "cell"};
     static const char *const tests[] = {"query", "hp", "brief", "stencil"};
     static const char *const trees[] = {"dbvs", "phbvo", "sgi"};
     char *end;
     if (!strcmp(k, "--scene")) o->scene = v;
     else if (!strcmp(k, "--scale")) o->scale = v;
     else if (!strcmp(k, "--out")) o->out = v;
-    else if (!strcmp(k, "--method")) return (o->method = pick(v, methods, 5)) < 0 ? -1 : 0;
+    else if (!strcmp(k, "--method")) return (o->method = pick(v, methods, 7)) < 0 ? -1 : 0;
+    else if (!strcmp(k, "--pvs-samples")) return (o->pvs_samples = pick(v, samples, 3)) < 0 ? -1 : 0;
     else if (!strcmp(k, "--test")) return (o->test = pick(v, tests, 4)) < 0 ? -1 : 0;
     else if (!strcmp(k, "--hierarchy")) return (o->hierarchy = pick(v, trees, 3)) < 0 ? -1 : 0;
     else if (!strcmp(k, "--frames")) return parse_int(v, 1, 100000, &o->frames);
     else if (!strcmp(k, "--leaf")) return parse_int(v, 1, 1 << 20, &o->leaf_objs);
     else if (!strcmp(k, "--sampling")) return parse_int(v, 1, 1 << 12, &o->sampling);
+    else if (!strcmp(k, "--cull-map")) return parse_int(v, 2, 4096, &o->cull_map) || o->cull_map % 2 ? -1 : 0;
     else if (!strcmp(k, "--size")) {
         if (sscanf(v, "%dx%d", &o->width, &o->height) != 2 || o->width < 1 || o->height < 1 ||
             o->width > 4096 || o->height > 4096)
@@ -102,6 +121,9 @@ static int parse_opt(opts *o, const char *k, const char *v)
     } else if (!strcmp(k, "--ac-threshold")) {
         o->ac_threshold = strtod(v, &end);
         return *end || o->ac_threshold < 0 ? -1 : 0;
+    } else if (!strcmp(k, "--cell")) {
+        o->cell = strtod(v, &end);
+        return *end || !(o->cell >= 0.5 && o->cell <= 1e5) ? -1 : 0;
     } else if (!strcmp(k, "--test-cost")) {
         o->test_cost = strtod(v, &end);
         return *end || o->test_cost < 0 ? -1 : 0;
@@ -111,8 +133,12 @@ static int parse_opt(opts *o, const char *k, const char *v)
 
 static int parse_args(opts *o, int argc, char **argv)
 {
-    *o = (opts){"city", "small", "out/cullstudy", M_VO, CULL_TEST_QUERY, CULL_PHBVO, 100, 650, 650, 1, 1, -1,
-                100.0, 1.0 / 3.0, 100.0, 1};
+    /* Designated: the positional list this was gave vfc_select 100.0,
+     * ac_threshold 1/3, p_graphics 100, test_cost 1 and seed 0. */
+    *o = (opts){.scene = "city", .scale = "small", .out = "out/cullstudy", .method = M_VO, .test = CULL_TEST_QUERY,
+                .hierarchy = CULL_PHBVO, .frames = 100, .width = 650, .height = 650, .leaf_objs = 1, .sampling = 1,
+                .leaf_only = -1, .ac_threshold = 100.0, .p_graphics = 1.0 / 3.0, .test_cost = 100.0, .seed = 1,
+                .cell = SG_CITY_LOT, .pvs_samples = PVS_BOTH, .cull_map = 256};
     for (int i = 1; i < argc; i += 2) {
         if (!strcmp(argv[i], "--leaf-only")) {
             o->leaf_only = 1;
@@ -136,7 +162,7 @@ static int parse_args(opts *o, int argc, char **argv)
         }
     }
     if (!cull_scene_find(o->scene)) {
-        fprintf(stderr, "cullstudy: --scene %s: the scenes are city, cathedrals, forest and garbage\n", o->scene);
+        fprintf(stderr, "cullstudy: --scene %s: the scenes are city, norwich, cathedrals, forest and garbage\n", o->scene);
         return 2;
     }
     if (strcmp(o->scale, "small") != 0 && strcmp(o->scale, "paper") != 0)
@@ -323,17 +349,11 @@ static void occlusion_walk(study *S)
     free(h.a);
 }
 
-static int draw_frame(study *S, int frame)
+/* Clears and sets up the view of cam: matrices, lights, the ground. */
+static void begin_view(study *S, const cull_camera *cam)
 {
-    cull_camera cam;
-    S->ops->frame(&S->sc, frame, &cam);
-    if (S->ops->dynamic && S->o.method != M_DR) { /* the objects moved: a new hierarchy over them */
-        cull_tree_free(&S->tree);
-        if (cull_tree_build(&S->tree, S->o.hierarchy, S->sc.objs, S->sc.n_objs, S->o.leaf_objs) != 0) return -1;
-    }
     float proj[16], mv[16];
-    camera(S, &cam, proj, mv);
-    memset(&S->st, 0, sizeof S->st);
+    camera(S, cam, proj, mv);
     glClearColor(S->ops->clear[0], S->ops->clear[1], S->ops->clear[2], 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     glMatrixMode(GL_PROJECTION);
@@ -345,10 +365,180 @@ static int draw_frame(study *S, int frame)
         S->ops->ground(&S->sc);
         S->st.tris += S->sc.ground_tris;
     }
+}
+
+/* ---- view-cell PVS (seed 003: per-object pixel counts from sample views
+ * of a cell; counted with NOHC, GL_SAMPLES_PASSED, not an item buffer) ---- */
+
+static int pvs_cell_of(const pvs_grid *g, double cell, const float eye[3])
+{
+    int cx = (int)floor((eye[0] - g->x0) / cell), cz = (int)floor((eye[2] - g->z0) / cell);
+    cx = cx < 0 ? 0 : cx >= g->nx ? g->nx - 1 : cx; /* the border cells reach out to infinity */
+    cz = cz < 0 ? 0 : cz >= g->nz ? g->nz - 1 : cz;
+    return cz * g->nx + cx;
+}
+
+/* One sample view: the whole scene as DR draws it, then each object not yet
+ * in the cell's PVS again with GL_EQUAL inside a GL_SAMPLES_PASSED query.
+ * Redrawing the same geometry with the same state gives the same depths
+ * (GL 1.5 Appendix A, rule 1: invariance), so the count is the object's
+ * pixels in the final depth buffer, ties included.  An object with none
+ * covers no pixel of DR's image of this view: every pixel's colour comes
+ * from the first object in draw order reaching the pixel's final depth
+ * (GL_LESS), and that object counts there. */
+static void pvs_sample(study *S, const cull_camera *cam, unsigned char *vis, GLuint q)
+{
+    begin_view(S, cam);
+    for (int i = 0; i < S->sc.n_objs; i++) draw_obj(S, &S->sc.objs[i]);
+    glPushAttrib(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glDepthMask(GL_FALSE);
+    glDepthFunc(GL_EQUAL);
+    for (int i = 0; i < S->sc.n_objs; i++) {
+        if (vis[i]) continue;
+        GLuint samples = 0;
+        glBeginQuery(GL_SAMPLES_PASSED, q);
+        draw_obj(S, &S->sc.objs[i]);
+        glEndQuery(GL_SAMPLES_PASSED);
+        glGetQueryObjectuiv(q, GL_QUERY_RESULT, &samples);
+        vis[i] = samples > 0;
+        S->pvs.queries++;
+    }
+    glPopAttrib();
+    S->pvs.views++;
+}
+
+/* Cell c's panorama views: from its four corners and centre at eye height
+ * y, four quarter turns of fovy 90 (with the view's aspect >= 1 they cover
+ * the full circle and +-45 degrees, the walk's 60-degree view included). */
+static void pvs_sample_cell(study *S, int c, float y, const cull_camera *like, GLuint q)
+{
+    pvs_grid *g = &S->pvs;
+    float cell = (float)S->o.cell, x = g->x0 + (float)(c % g->nx) * cell, z = g->z0 + (float)(c / g->nx) * cell;
+    static const float px[5] = {0, 1, 0, 1, 0.5f}, pz[5] = {0, 0, 1, 1, 0.5f};
+    for (int p = 0; p < 5; p++)
+        for (int d = 0; d < 4; d++) {
+            cull_camera cam = *like;
+            float yaw = 1.5707963f * (float)d;
+            cam.eye[0] = x + px[p] * cell;
+            cam.eye[1] = y;
+            cam.eye[2] = z + pz[p] * cell;
+            cam.at[0] = cam.eye[0] + sinf(yaw);
+            cam.at[1] = y;
+            cam.at[2] = cam.eye[2] + cosf(yaw);
+            cam.fovy = 90.0;
+            pvs_sample(S, &cam, g->vis + (size_t)c * (size_t)S->sc.n_objs, q);
+        }
+}
+
+/* Precomputes the PVS of every cell the path's eye enters (static scenes).
+ * The samples: the path's own views in the cell (--pvs-samples path: then
+ * the culled images equal DR's by construction, the above), the cell's
+ * panoramas (cell: a from-region PVS in the seed's sense, which can miss
+ * what only points between the samples see), or both (the default). */
+static int pvs_build(study *S)
+{
+    pvs_grid *g = &S->pvs;
+    float lo[2] = {1e30f, 1e30f}, hi[2] = {-1e30f, -1e30f};
+    for (int i = 0; i < S->sc.n_objs; i++)
+        for (int a = 0; a < 2; a++) {
+            lo[a] = fminf(lo[a], S->sc.objs[i].box.lo[2 * a]);
+            hi[a] = fmaxf(hi[a], S->sc.objs[i].box.hi[2 * a]);
+        }
+    g->x0 = lo[0];
+    g->z0 = lo[1];
+    g->nx = (int)ceil((hi[0] - lo[0]) / S->o.cell);
+    g->nz = (int)ceil((hi[1] - lo[1]) / S->o.cell);
+    g->nx = g->nx < 1 ? 1 : g->nx;
+    g->nz = g->nz < 1 ? 1 : g->nz;
+    size_t cells = (size_t)g->nx * (size_t)g->nz;
+    g->vis = calloc(cells * (size_t)S->sc.n_objs + 1, 1);
+    g->sampled = calloc(cells, 1);
+    if (!g->vis || !g->sampled) return -1;
+    GLuint q;
+    glGenQueries(1, &q);
+    for (int f = 0; f < S->o.frames; f++) {
+        cull_camera cam;
+        S->ops->frame(&S->sc, f, &cam);
+        int c = pvs_cell_of(g, S->o.cell, cam.eye);
+        if (S->o.pvs_samples != PVS_CELL) pvs_sample(S, &cam, g->vis + (size_t)c * (size_t)S->sc.n_objs, q);
+        if (!g->sampled[c]) {
+            g->sampled[c] = 1;
+            g->cells++;
+            if (S->o.pvs_samples != PVS_PATH) pvs_sample_cell(S, c, cam.eye[1], &cam, q);
+        }
+    }
+    glDeleteQueries(1, &q);
+    glFinish(); /* the precomputation is a frame of its own in a capture (the study's frame -1) */
+    uint64_t in_pvs = 0;
+    for (size_t c = 0; c < cells; c++)
+        for (int i = 0; g->sampled[c] && i < S->sc.n_objs; i++) in_pvs += g->vis[c * (size_t)S->sc.n_objs + i];
+    printf("pvs: %d x %d cells of %.1f m, %llu sampled, %llu sample views, %llu queries, %.1f objects per PVS\n",
+           g->nx, g->nz, S->o.cell, (unsigned long long)g->cells, (unsigned long long)g->views,
+           (unsigned long long)g->queries, g->cells ? (double)in_pvs / (double)g->cells : 0.0);
+    return 0;
+}
+
+/* The PVS of the eye's cell, then VFC on the CPU for the objects in it. */
+static void pvs_draw(study *S)
+{
+    const unsigned char *vis = S->pvs.vis + (size_t)pvs_cell_of(&S->pvs, S->o.cell, S->view.eye) * (size_t)S->sc.n_objs;
+    for (int i = 0; i < S->sc.n_objs; i++) {
+        if (!vis[i]) {
+            S->st.occ_culled++;
+            continue;
+        }
+        S->st.vfc_tests++;
+        if (cull_frustum_test(&S->view, &S->sc.objs[i].box) == 0) {
+            S->st.vfc_culled++;
+            continue;
+        }
+        draw_obj(S, &S->sc.objs[i]);
+    }
+}
+
+/* Occluder shadows (cull_shadow.c): the cull map from this frame's eye,
+ * then per object VFC and the map's test. */
+static void shadow_draw(study *S)
+{
+    for (int i = 0; i < S->sc.n_objs; i++) {
+        const cull_box *b = &S->sc.objs[i].box;
+        S->st.vfc_tests++;
+        if (cull_frustum_test(&S->view, b) == 0) {
+            S->st.vfc_culled++;
+            continue;
+        }
+        S->st.occ_tests++;
+        cull_box tight = *b; /* the house's own height, not the tallest house's (lot_box) */
+        tight.hi[1] = S->sc.objs[i].top;
+        if (!cull_box_contains(b, S->view.eye) && cull_shadow_hidden(&S->shadow, &tight)) {
+            S->st.occ_culled++;
+            continue;
+        }
+        draw_obj(S, &S->sc.objs[i]);
+    }
+}
+
+static int draw_frame(study *S, int frame)
+{
+    cull_camera cam;
+    S->ops->frame(&S->sc, frame, &cam);
+    if (S->ops->dynamic && S->o.method != M_DR) { /* the objects moved: a new hierarchy over them */
+        cull_tree_free(&S->tree);
+        if (cull_tree_build(&S->tree, S->o.hierarchy, S->sc.objs, S->sc.n_objs, S->o.leaf_objs) != 0) return -1;
+    }
+    memset(&S->st, 0, sizeof S->st);
+    if (S->o.method == M_SHADOW) /* before the frame's clear: it draws into the same buffer */
+        cull_shadow_render(&S->shadow, (const float (*)[6])S->sc.occ, S->sc.n_occ, cam.eye);
+    begin_view(S, &cam);
     if (S->o.method == M_DR)
         for (int i = 0; i < S->sc.n_objs; i++) draw_obj(S, &S->sc.objs[i]);
     else if (S->o.method == M_VFC)
         vfc_walk(S, 0, 0);
+    else if (S->o.method == M_PVS)
+        pvs_draw(S);
+    else if (S->o.method == M_SHADOW)
+        shadow_draw(S);
     else
         occlusion_walk(S);
     glFinish();
@@ -387,7 +577,7 @@ static void make_dirs(const char *path)
 
 static int run(study *S, unsigned char *buf, FILE *csv)
 {
-    static const char *const mnames[] = {"dr", "vfc", "vo", "ac", "cac"};
+    static const char *const mnames[] = {"dr", "vfc", "vo", "ac", "cac", "pvs", "shadow"};
     static const char *const tnames[] = {"query", "hp", "brief", "stencil"};
     S->prev_render = 0;
     for (int i = 0; i < S->sc.n_objs; i++) S->prev_render += (double)S->sc.objs[i].tris; /* frame -1: DR */
@@ -401,7 +591,10 @@ static int run(study *S, unsigned char *buf, FILE *csv)
             return 1;
         }
         fprintf(csv, "%d,%s,%s,%llu,%llu,%llu,%llu,%llu,%llu,%llu,\n", f, mnames[S->o.method],
-                S->o.method >= M_VO ? tnames[S->o.test] : "", (unsigned long long)S->st.vfc_tests,
+                S->o.method >= M_VO && S->o.method <= M_CAC ? tnames[S->o.test]
+                : S->o.method == M_PVS                      ? "query"
+                : S->o.method == M_SHADOW                   ? "cullmap"
+                                                            : "", (unsigned long long)S->st.vfc_tests,
                 (unsigned long long)S->st.vfc_culled, (unsigned long long)S->st.occ_tests,
                 (unsigned long long)S->st.occ_culled, (unsigned long long)S->st.objects,
                 (unsigned long long)((uint64_t)S->sc.n_objs - S->st.objects), (unsigned long long)S->st.tris);
@@ -422,7 +615,9 @@ int main(int argc, char **argv)
         fprintf(stderr, "cullstudy: no OSMesa context\n");
         return 1;
     }
-    const char *why = S.o.method >= M_VO ? cull_test_unavailable(S.o.test) : NULL;
+    const char *why = S.o.method >= M_VO && S.o.method != M_SHADOW
+                          ? cull_test_unavailable(S.o.method == M_PVS ? CULL_TEST_QUERY : S.o.test)
+                          : NULL;
     if (why) {
         fprintf(stderr, "cullstudy: %s\n", why);
         return 2;
@@ -450,6 +645,33 @@ int main(int argc, char **argv)
         fprintf(stderr, "cullstudy: out of memory\n");
         return 1;
     }
+    if (S.o.method == M_PVS) {
+        if (S.ops->dynamic) {
+            fprintf(stderr, "cullstudy: --method pvs needs a static scene (%s moves)\n", S.o.scene);
+            return 2;
+        }
+        if (pvs_build(&S) != 0) {
+            fprintf(stderr, "cullstudy: out of memory\n");
+            return 1;
+        }
+    }
+    if (S.o.method == M_SHADOW) {
+        int res = S.o.cull_map;
+        if (!S.sc.occ || S.sc.n_occ == 0) {
+            fprintf(stderr, "cullstudy: --method shadow: %s has no occluders (city and norwich do)\n", S.o.scene);
+            return 2;
+        }
+        if (res > S.o.width || res > S.o.height) {
+            fprintf(stderr, "cullstudy: --cull-map %d is larger than the %dx%d buffer it is drawn in\n", res,
+                    S.o.width, S.o.height);
+            return 2;
+        }
+        if (cull_shadow_init(&S.shadow, S.sc.objs, S.sc.n_objs, res) != 0) {
+            fprintf(stderr, "cullstudy: out of memory\n");
+            return 1;
+        }
+        printf("shadow: %d x %d cull map of %.2f m cells, %d occluders\n", res, res, S.shadow.cell, S.sc.n_occ);
+    }
     printf("scene %s (%s): hierarchy %s: %d nodes, %d leaves, %d objects%s\n", S.o.scene, S.o.scale,
            cull_tree_name(S.o.hierarchy), S.tree.n_nodes, S.tree.n_leaves, S.sc.n_objs,
            S.o.leaf_only ? "; occlusion tests at leaves only" : "");
@@ -464,6 +686,9 @@ int main(int argc, char **argv)
     rc = run(&S, buf, csv);
     if (fclose(csv) != 0) rc = 1;
     cull_tree_free(&S.tree);
+    free(S.pvs.vis);
+    free(S.pvs.sampled);
+    cull_shadow_free(&S.shadow);
     cull_scene_free(&S.sc);
     sg_free(&S.s);
     OSMesaDestroyContext(ctx);
