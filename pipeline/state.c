@@ -182,8 +182,9 @@ bool *fs_state_cap_flag(fs_context *c, GLenum cap, bool client_too, const fs_sta
     int i = find_row(cap);
     if (row)
         *row = i < 0 ? NULL : &rows[i];
-    if (cap == GL_TEXTURE_1D || cap == GL_TEXTURE_2D || cap == GL_TEXTURE_3D)
-        return fs_texture_enable_flag(c, cap); /* the texture unit's own flag */
+    bool *tex = fs_texture_enable_flag(c, cap); /* GL_TEXTURE_1D..CUBE_MAP: the texture unit's own flag */
+    if (tex)
+        return tex;
     if (i < 0 || rows[i].cap == FS_CAP_NO || (rows[i].cap == FS_CAP_CLI && !client_too))
         return NULL;
     return (bool *)(void *)((char *)c + field_offset(c, i));

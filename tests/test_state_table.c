@@ -697,20 +697,20 @@ TEST(pop_marks_groups_dirty)
 }
 
 /* Not yet in the table. */
-#define PENDING_STATE \
-    GL_TEXTURE_BINDING_CUBE_MAP,
+#define PENDING_STATE
 
 /* GL 1.0-1.5 names OSMesa answers in glGetIntegerv that the table does not
- * have yet (issue 18): the bindings of the arrays the model does not fetch,
- * and the state whose setters are still to come. */
+ * have yet (issue 18): none since GL_TEXTURE_BINDING_CUBE_MAP came with the
+ * cube maps; GL_NONE stands for the empty list (C has no empty array), and
+ * is never a name OSMesa answers. */
 static const GLenum pending[] = {
-    PENDING_STATE
+    PENDING_STATE GL_NONE
 };
 
 static bool is_pending(GLenum e)
 {
     for (int i = 0; i < N(pending); i++)
-        if (pending[i] == e)
+        if (pending[i] == e && e != GL_NONE)
             return true;
     return false;
 }
@@ -745,7 +745,7 @@ TEST(every_glget_name_of_osmesa_is_in_the_table)
         if (model == is_pending(e) && missing++ < 20)
             printf("  %s (%#x): %s\n", name, e, model ? "answered but listed as pending" : "not in the table");
     }
-    printf("  %d names answered by OSMesa, %d pending\n", answered, N(pending));
+    printf("  %d names answered by OSMesa, %d pending\n", answered, N(pending) - 1);
     CHECK_EQ_INT(missing, 0);
     fs_context_destroy(c);
     osm_close(&o);

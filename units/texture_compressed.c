@@ -247,19 +247,19 @@ static GLenum check_image(const fs_tex_target_info *ti, GLint level, GLenum inte
 
 /* A compressed level was defined or updated: GL_GENERATE_MIPMAP of its
  * base level is not modelled (llvmpipe recompresses the levels). */
-static void level_changed(fs_context *c, fs_tex_object *t, GLint level)
+static void level_changed(fs_context *c, fs_tex_object *t, int face, GLint level)
 {
     if (t->generate_mipmap && level == t->base_level)
         fs_unsupported(c, "GL_GENERATE_MIPMAP of a compressed texture (llvmpipe recompresses the levels)");
     else
-        fs_tex_image_changed(c, t, level);
+        fs_tex_image_changed(c, t, face, level);
 }
 
 static void compressed_image(fs_context *c, int dims, GLenum target, GLint level, GLenum internalformat,
                              GLsizei w, GLsizei h, GLsizei d, GLint border, GLsizei imageSize, const GLvoid *data)
 {
     fs_tex_target_info ti;
-    if (!fs_tex_target_of(target, &ti) || ti.dims != dims) {
+    if (!fs_tex_image_target_of(target, &ti) || ti.dims != dims) {
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
@@ -284,7 +284,7 @@ static void compressed_image(fs_context *c, int dims, GLenum target, GLint level
         return;
     }
     fs_tex_object *t = fs_tex_active(c)->bound[ti.k];
-    fs_tex_image *img = &t->level[level];
+    fs_tex_image *img = &fs_tex_levels(t, ti.face)[level];
     uint8_t *texels = NULL, *blocks = NULL;
     if (w > 0 && h > 0) {
         texels = calloc((size_t)w * (size_t)h, 4);
@@ -306,7 +306,7 @@ static void compressed_image(fs_context *c, int dims, GLenum target, GLint level
      * blocks here. */
     if (texels)
         store_blocks(img, 0, 0, 0, w, h, 1, data ? data : blocks);
-    level_changed(c, t, level);
+    level_changed(c, t, ti.face, level);
 }
 
 void fs_exec_CompressedTexImage1D(fs_context *c, GLenum target, GLint level, GLenum internalformat, GLsizei width,
@@ -341,7 +341,7 @@ static GLenum check_subimage(fs_context *c, int dims, GLenum target, GLint level
                              const GLsizei size[3], GLenum format, GLsizei imageSize, fs_tex_image **out)
 {
     fs_tex_target_info ti;
-    if (!fs_tex_target_of(target, &ti) || ti.dims != dims || ti.proxy || dims == 1)
+    if (!fs_tex_image_target_of(target, &ti) || ti.dims != dims || ti.proxy || dims == 1)
         return GL_INVALID_ENUM;
     if (dims == 3)
         return GL_INVALID_OPERATION;
@@ -352,7 +352,7 @@ static GLenum check_subimage(fs_context *c, int dims, GLenum target, GLint level
         return GL_INVALID_OPERATION;
     if (size[0] < 0 || size[1] < 0 || imageSize != blocks_size(size[0], size[1], bytes))
         return GL_INVALID_VALUE;
-    fs_tex_image *img = &fs_tex_active(c)->bound[ti.k]->level[level];
+    fs_tex_image *img = &fs_tex_levels(fs_tex_active(c)->bound[ti.k], ti.face)[level];
     if (!holds_blocks(img) || img->internal_format != (GLint)format)
         return GL_INVALID_OPERATION;
     const int dim[2] = {img->width, img->height};
@@ -377,10 +377,10 @@ static void compressed_subimage(fs_context *c, int dims, GLenum target, GLint le
         return;
     }
     fs_tex_target_info ti;
-    fs_tex_target_of(target, &ti);
+    fs_tex_image_target_of(target, &ti);
     if (w > 0 && h > 0 && d > 0 && data)
         store_blocks(img, off[0], off[1], off[2], w, h, d, data);
-    level_changed(c, fs_tex_active(c)->bound[ti.k], level);
+    level_changed(c, fs_tex_active(c)->bound[ti.k], ti.face, level);
 }
 
 void fs_exec_CompressedTexSubImage1D(fs_context *c, GLenum target, GLint level, GLint xoffset, GLsizei width,
@@ -415,12 +415,12 @@ static const fs_tex_image *get_level(fs_context *c, GLenum target, GLint level, 
     fs_tex_target_info ti;
     GLenum err = GL_NO_ERROR;
     const fs_tex_image *img = NULL;
-    if (!fs_tex_target_of(target, &ti) || ti.proxy)
+    if (!fs_tex_image_target_of(target, &ti) || ti.proxy)
         err = GL_INVALID_ENUM;
     else if (level < 0 || level > fs_tex_target_max_log2(ti.k))
         err = GL_INVALID_VALUE;
     else {
-        img = &fs_tex_active(c)->bound[ti.k]->level[level];
+        img = &fs_tex_levels(fs_tex_active(c)->bound[ti.k], ti.face)[level];
         if (!img->texels)
             err = ti.k == FS_TEX_3D ? GL_NO_ERROR : GL_INVALID_VALUE;
         else if (!holds_blocks(img))

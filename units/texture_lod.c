@@ -183,26 +183,28 @@ static void downsample(const fs_tex_image *src, fs_tex_image *dst)
  * is 1, so another such level must be defined).  Not modelled: the other
  * cases where its storage decides (e.g. a level 0 defined before
  * GENERATE_MIPMAP was set does not help there). */
-static bool base_fits_pyramid(const fs_tex_object *t, int base)
+static bool base_fits_pyramid(const fs_tex_image *levels, int base)
 {
-    const fs_tex_image *b = &t->level[base];
+    const fs_tex_image *b = &levels[base];
     if (base == 0 || (b->width > 1 && b->height > 1))
         return true;
     for (int l = 1; l < FS_TEX_MAX_LEVELS; l++)
-        if (l != base && t->level[l].texels && t->level[l].width > 1 && t->level[l].height > 1)
+        if (l != base && levels[l].texels && levels[l].width > 1 && levels[l].height > 1)
             return true;
     return false;
 }
 
-void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int level)
+void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int face, int level)
 {
     /* Generation follows a change of the base level's image only, and
      * fills the levels up to MAX_LEVEL or 1x1 (as Mesa: none when the base
      * level is MAX_LEVEL). */
     if (!t->generate_mipmap || t->mpgrid || level != t->base_level || level >= t->max_level)
         return;
-    const fs_tex_image *b = &t->level[level];
-    if (!b->texels || !base_fits_pyramid(t, level))
+    /* A cube map face regenerates its own levels (3.8.8). */
+    fs_tex_image *levels = fs_tex_levels(t, face);
+    const fs_tex_image *b = &levels[level];
+    if (!b->texels || !base_fits_pyramid(levels, level))
         return;
     if (b->depth > 1) {
         fs_unsupported(c, "GL_GENERATE_MIPMAP on a 3D texture");
@@ -217,7 +219,7 @@ void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int level)
     for (int l = level + 1; l < FS_TEX_MAX_LEVELS && l <= t->max_level && (w > 1 || h > 1); l++) {
         w = w > 1 ? w / 2 : 1;
         h = h > 1 ? h / 2 : 1;
-        fs_tex_image *img = &t->level[l];
+        fs_tex_image *img = &levels[l];
         uint8_t *texels = calloc((size_t)w * (size_t)h, 4);
         if (!texels) {
             fs_error(c, GL_OUT_OF_MEMORY);
@@ -230,7 +232,7 @@ void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int level)
         img->depth = 1;
         img->internal_format = b->internal_format;
         img->base_format = b->base_format;
-        downsample(&t->level[l - 1], img);
+        downsample(&levels[l - 1], img);
     }
     t->complete = -1;
 }

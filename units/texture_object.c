@@ -37,10 +37,11 @@ static void object_defaults(fs_tex_object *t, GLuint name)
 static void object_release(fs_tex_object *t)
 {
     fs_mpgrid_gl_release(t);
-    for (int i = 0; i < FS_TEX_MAX_LEVELS; i++) {
-        free(t->level[i].texels);
-        free(t->level[i].compressed);
-    }
+    for (int f = 0; f < FS_TEX_FACES; f++)
+        for (int i = 0; i < FS_TEX_MAX_LEVELS; i++) {
+            free(fs_tex_levels(t, f)[i].texels);
+            free(fs_tex_levels(t, f)[i].compressed);
+        }
 }
 
 int fs_texture_init(fs_context *c)
@@ -520,6 +521,9 @@ static GLenum check_image_args(const fs_tex_target_info *ti, GLint level, GLint 
     for (int i = 0; i < ti->dims; i++)
         if (!size_ok(size[i], border, max_log2, level))
             return GL_INVALID_VALUE;
+    /* 3.8.1: a cube map face is square. */
+    if (ti->k == FS_TEX_CUBE && size[0] != size[1])
+        return GL_INVALID_VALUE;
     return GL_NO_ERROR;
 }
 
@@ -533,10 +537,10 @@ static void inner_size(int dims, const GLsizei size[3], GLint border, int inner[
 
 /* Replaces level `level` of t with an allocated, undefined image of
  * size[0] x size[1] x size[2].  Returns it, or NULL (GL_OUT_OF_MEMORY set). */
-static fs_tex_image *define_level(fs_context *c, fs_tex_object *t, GLint level, GLint internalformat,
+static fs_tex_image *define_level(fs_context *c, fs_tex_object *t, int face, GLint level, GLint internalformat,
                                   const int size[3])
 {
-    fs_tex_image *img = &t->level[level];
+    fs_tex_image *img = &fs_tex_levels(t, face)[level];
     uint8_t *texels = NULL;
     if (size[0] > 0 && size[1] > 0 && size[2] > 0) {
         texels = calloc((size_t)size[0] * (size_t)size[1] * (size_t)size[2], 4);
@@ -593,7 +597,7 @@ static bool proxy_image(fs_context *c, const fs_tex_target_info *ti, GLenum err,
  * allowed. */
 static bool image_target(fs_context *c, GLenum target, int dims, bool proxy_ok, fs_tex_target_info *ti)
 {
-    if (fs_tex_target_of(target, ti) && ti->dims == dims && (proxy_ok || !ti->proxy))
+    if (fs_tex_image_target_of(target, ti) && ti->dims == dims && (proxy_ok || !ti->proxy))
         return true;
     fs_error(c, GL_INVALID_ENUM);
     return false;
@@ -626,7 +630,7 @@ void fs_tex_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLint 
     int inner[3];
     inner_size(dims, size, border, inner);
     fs_tex_object *t = fs_tex_active(c)->bound[ti.k];
-    fs_tex_image *img = define_level(c, t, level, internalformat, inner);
+    fs_tex_image *img = define_level(c, t, ti.face, level, internalformat, inner);
     if (img)
         img->depth_bits = fs_tex_depth_bits(internalformat, type);
     if (img && keeps_wide_texels(internalformat, format, type))
@@ -634,7 +638,7 @@ void fs_tex_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLint 
     if (img && img->texels && pixels)
         unpack_inner(c, img, dims, border, size, format, type, pixels);
     if (img)
-        fs_tex_image_changed(c, t, level);
+        fs_tex_image_changed(c, t, ti.face, level);
 }
 
 void fs_exec_TexImage2D(fs_context *c, GLenum target, GLint level, GLint internalformat, GLsizei width,
@@ -653,7 +657,7 @@ static fs_tex_image *subimage_target(fs_context *c, const fs_tex_target_info *ti
         fs_error(c, GL_INVALID_VALUE);
         return NULL;
     }
-    fs_tex_image *img = &fs_tex_active(c)->bound[ti->k]->level[level];
+    fs_tex_image *img = &fs_tex_levels(fs_tex_active(c)->bound[ti->k], ti->face)[level];
     if (!img->texels) {
         fs_error(c, GL_INVALID_OPERATION);
         return NULL;
@@ -692,7 +696,7 @@ void fs_tex_subimage_nd(fs_context *c, int dims, GLenum target, GLint level, con
         fs_unsupported(c, "glTexSubImage into a compressed level (units/texture_compressed.c)");
     if (w > 0 && h > 0 && d > 0 && pixels)
         unpack_image(c, img, dims, off, w, h, d, format, type, pixels);
-    fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], level);
+    fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], ti.face, level);
 }
 
 void fs_exec_TexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoffset, GLint yoffset,
@@ -755,7 +759,7 @@ void fs_tex_copy_image_nd(fs_context *c, int dims, GLenum target, GLint level, G
     int inner[3];
     inner_size(dims, size, border, inner);
     fs_tex_object *t = fs_tex_active(c)->bound[ti.k];
-    fs_tex_image *img = define_level(c, t, level, (GLint)internalformat, inner);
+    fs_tex_image *img = define_level(c, t, ti.face, level, (GLint)internalformat, inner);
     /* (at x or y = INT_MAX everything read is outside the window anyway) */
     GLint bx = x < INT_MAX ? x + border : x, by = dims > 1 && y < INT_MAX ? y + border : y;
     if (img && img->texels)
@@ -763,7 +767,7 @@ void fs_tex_copy_image_nd(fs_context *c, int dims, GLenum target, GLint level, G
     if (img && internalformat == GL_R3_G3_B2)
         fs_unsupported(c, "glCopyTexImage into GL_R3_G3_B2 (llvmpipe's rounding not modelled)");
     if (img)
-        fs_tex_image_changed(c, t, level);
+        fs_tex_image_changed(c, t, ti.face, level);
 }
 
 void fs_exec_CopyTexImage2D(fs_context *c, GLenum target, GLint level, GLenum internalformat, GLint x, GLint y,
@@ -789,7 +793,7 @@ void fs_tex_copy_subimage_nd(fs_context *c, int dims, GLenum target, GLint level
         return;
     }
     copy_from_framebuffer(c, img, off, x, y, w, h);
-    fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], level);
+    fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], ti.face, level);
 }
 
 void fs_exec_CopyTexSubImage2D(fs_context *c, GLenum target, GLint level, GLint xoffset, GLint yoffset, GLint x,
@@ -991,6 +995,33 @@ void fs_exec_TexParameterfv(fs_context *c, GLenum target, GLenum pname, const GL
 
 /* ---- completeness (3.8.10) ---- */
 
+/* Whether levels (one face's) hold the chain sampling needs (3.8.10): the
+ * base level's image of size w x h x d and internal format fmt, and with
+ * a MIPmap filter the levels from the base to q = min(p, MAX_LEVEL), each
+ * half the previous size (at least 1), all of fmt; *last is q. */
+static bool chain_ok(const fs_tex_object *t, const fs_tex_image *levels, const fs_tex_image *b, bool mip, int *last)
+{
+    int base = t->base_level;
+    const fs_tex_image *l0 = base < FS_TEX_MAX_LEVELS ? &levels[base] : NULL;
+    bool ok = l0 && l0->texels && l0->width == b->width && l0->height == b->height && l0->depth == b->depth &&
+              l0->internal_format == b->internal_format;
+    *last = base;
+    if (ok && mip) {
+        ok = t->max_level >= base;
+        int w = b->width, h = b->height, d = b->depth;
+        while (ok && (w > 1 || h > 1 || d > 1) && *last < t->max_level) {
+            w = w > 1 ? w / 2 : 1;
+            h = h > 1 ? h / 2 : 1;
+            d = d > 1 ? d / 2 : 1;
+            ++*last;
+            const fs_tex_image *l = *last < FS_TEX_MAX_LEVELS ? &levels[*last] : NULL;
+            ok = l && l->texels && l->width == w && l->height == h && l->depth == d &&
+                 l->internal_format == b->internal_format;
+        }
+    }
+    return ok;
+}
+
 bool fs_tex_complete(fs_tex_object *t)
 {
     if (t->mpgrid) {
@@ -1001,27 +1032,17 @@ bool fs_tex_complete(fs_tex_object *t)
         return t->complete != 0;
     /* 3.8.10: the image of the base level must exist (a base level past
      * the last level leaves none); a MIPmap filter also needs the levels
-     * from the base to q = min(p, MAX_LEVEL), each half the previous size
-     * (at least 1), all of the base's internal format, and MAX_LEVEL not
-     * below the base (Mesa; measured: white, i.e. untextured, on OSMesa). */
+     * from the base to q (chain_ok), and MAX_LEVEL not below the base
+     * (Mesa; measured: white, i.e. untextured, on OSMesa).  A cube map is
+     * cube complete when every face's chain is that of face 0
+     * (POSITIVE_X): the same square sizes and internal format. */
     int base = t->base_level;
     const fs_tex_image *b = base < FS_TEX_MAX_LEVELS ? &t->level[base] : NULL;
-    bool ok = b && b->texels != NULL;
-    int last = base;
     bool mip = t->min_filter != GL_NEAREST && t->min_filter != GL_LINEAR;
-    if (ok && mip) {
-        ok = t->max_level >= base;
-        int w = b->width, h = b->height, d = b->depth;
-        while (ok && (w > 1 || h > 1 || d > 1) && last < t->max_level) {
-            w = w > 1 ? w / 2 : 1;
-            h = h > 1 ? h / 2 : 1;
-            d = d > 1 ? d / 2 : 1;
-            last++;
-            const fs_tex_image *l = last < FS_TEX_MAX_LEVELS ? &t->level[last] : NULL;
-            ok = l && l->texels && l->width == w && l->height == h && l->depth == d &&
-                 l->internal_format == b->internal_format;
-        }
-    }
+    int last = base;
+    bool ok = b && chain_ok(t, t->level, b, mip, &last);
+    for (int f = 1; ok && t->target == FS_TEX_CUBE && f < FS_TEX_FACES; f++)
+        ok = chain_ok(t, fs_tex_levels(t, f), b, mip, &last);
     t->first_level = ok ? base : 0;
     t->last_level = ok ? last : 0;
     t->complete = ok ? 1 : 0;
@@ -1200,9 +1221,10 @@ bool fs_tex_level_size(const fs_tex_object *t, int level, int *width, int *heigh
 
 /* A texture target the queries accept (a proxy only where proxy_ok); sets
  * GL_INVALID_ENUM and returns false otherwise. */
-static bool query_target_ok(fs_context *c, GLenum target, bool proxy_ok, fs_tex_target_info *ti)
+static bool query_target_ok(fs_context *c, GLenum target, bool proxy_ok, bool image, fs_tex_target_info *ti)
 {
-    if (fs_tex_target_of(target, ti) && (proxy_ok || !ti->proxy))
+    /* image: the image queries, which name a cube map's faces (3.8.6). */
+    if ((image ? fs_tex_image_target_of(target, ti) : fs_tex_target_of(target, ti)) && (proxy_ok || !ti->proxy))
         return true;
     fs_error(c, GL_INVALID_ENUM);
     return false;
@@ -1253,7 +1275,7 @@ static int tex_parameter_value(const fs_tex_object *t, GLenum pname, tex_param_v
 static int get_tex_parameter(fs_context *c, GLenum target, GLenum pname, tex_param_value *p)
 {
     fs_tex_target_info ti;
-    if (!query_target_ok(c, target, false, &ti))
+    if (!query_target_ok(c, target, false, false, &ti))
         return 0;
     int n = tex_parameter_value(fs_tex_active(c)->bound[ti.k], pname, p);
     if (n == 0)
@@ -1320,14 +1342,14 @@ static bool tex_level_value(const fs_tex_image *img, GLenum pname, GLint *v)
 static bool get_tex_level(fs_context *c, GLenum target, GLint level, GLenum pname, GLint *v)
 {
     fs_tex_target_info ti;
-    if (!query_target_ok(c, target, true, &ti))
+    if (!query_target_ok(c, target, true, true, &ti))
         return false;
     if (level < 0 || level > fs_tex_target_max_log2(ti.k)) {
         fs_error(c, GL_INVALID_VALUE);
         return false;
     }
     const fs_tex_image *img =
-        ti.proxy ? &c->texture->proxy[ti.k][level] : &fs_tex_active(c)->bound[ti.k]->level[level];
+        ti.proxy ? &c->texture->proxy[ti.k][level] : &fs_tex_levels(fs_tex_active(c)->bound[ti.k], ti.face)[level];
     /* Table 6.18; INVALID_OPERATION for a level that is not compressed
      * and for a proxy (as OSMesa; GL 1.5 leaves it undefined). */
     if (pname == GL_TEXTURE_COMPRESSED_IMAGE_SIZE) {
@@ -1465,7 +1487,7 @@ static const fs_tex_image *get_image_level(fs_context *c, const fs_tex_target_in
 {
     if (ti->proxy || level < 0 || level >= FS_TEX_MAX_LEVELS)
         return NULL;
-    const fs_tex_image *img = &fs_tex_active(c)->bound[ti->k]->level[level];
+    const fs_tex_image *img = &fs_tex_levels(fs_tex_active(c)->bound[ti->k], ti->face)[level];
     return img->texels ? img : NULL;
 }
 
@@ -1473,7 +1495,7 @@ int64_t fs_gettexImage_bytes(fs_context *c, GLenum target, GLint level, GLenum f
 {
     fs_tex_target_info ti;
     bool depth_ok = format == GL_DEPTH_COMPONENT && fs_pixel_check(format, type) == GL_NO_ERROR;
-    if (!fs_tex_target_of(target, &ti) || (!depth_ok && get_image_format_error(format, type) != GL_NO_ERROR))
+    if (!fs_tex_image_target_of(target, &ti) || (!depth_ok && get_image_format_error(format, type) != GL_NO_ERROR))
         return 0;
     const fs_tex_image *img = get_image_level(c, &ti, level);
     if (!img)
@@ -1503,7 +1525,7 @@ static void texel_for_get(const uint8_t *t, GLenum base, uint8_t out[4])
 void fs_exec_GetTexImage(fs_context *c, GLenum target, GLint level, GLenum format, GLenum type, GLvoid *pixels)
 {
     fs_tex_target_info ti;
-    if (!query_target_ok(c, target, false, &ti))
+    if (!query_target_ok(c, target, false, true, &ti))
         return;
     if (level < 0 || level > fs_tex_target_max_log2(ti.k)) {
         fs_error(c, GL_INVALID_VALUE);

@@ -35,7 +35,9 @@ typedef struct fs_tex_image {
 /* The texture targets as indices into a unit's bindings and enables and
  * the default objects (GL 1.5 spec 3.8.12: each target has its own texture
  * 0).  A new target is one more name here and in units/texture_target.c. */
-enum fs_tex_target { FS_TEX_2D, FS_TEX_1D, FS_TEX_3D, FS_TEX_TARGETS };
+enum fs_tex_target { FS_TEX_2D, FS_TEX_1D, FS_TEX_3D, FS_TEX_CUBE, FS_TEX_TARGETS };
+/* A cube map's faces (3.8.6): GL_TEXTURE_CUBE_MAP_POSITIVE_X + face. */
+#define FS_TEX_FACES 6
 _Static_assert(FS_TEX_TARGETS == FS_TEX_TARGET_COUNT, "texture_unit.h counts the targets");
 
 typedef struct fs_tex_object {
@@ -55,6 +57,9 @@ typedef struct fs_tex_object {
     /* GL 1.4 depth textures (3.8.4, 3.8.14; units/texture_depth.c). */
     GLenum depth_mode, compare_mode, compare_func;
     fs_tex_image level[FS_TEX_MAX_LEVELS];
+    /* A cube map's faces 1..5 (NEGATIVE_X..NEGATIVE_Z); face 0
+     * (POSITIVE_X) is level[] (fs_tex_levels). */
+    fs_tex_image cube_face[FS_TEX_FACES - 1][FS_TEX_MAX_LEVELS];
     /* GL 1.2-1.4 level range, LOD clamps and bias, automatic MIPmaps
      * (3.8.8-3.8.10, table 6.17; units/texture_lod.c). */
     int base_level, max_level;
@@ -114,6 +119,12 @@ struct fs_texture_state {
     struct fs_footprint_filter *footprint[4][2][2];
 };
 
+/* The levels of face `face` of a cube map (0 for every other target). */
+static inline fs_tex_image *fs_tex_levels(const fs_tex_object *t, int face)
+{
+    return face ? (fs_tex_image *)t->cube_face[face - 1] : (fs_tex_image *)t->level;
+}
+
 /* The active texture unit (glActiveTexture, 2.7), and its 2D texture. */
 static inline fs_tex_unit *fs_tex_active(const fs_context *c) { return &c->texture->unit[fs_active_unit(c)]; }
 static inline fs_tex_object *fs_tex_bound_2d(const fs_context *c) { return fs_tex_active(c)->bound[FS_TEX_2D]; }
@@ -125,13 +136,20 @@ typedef struct fs_tex_target_info {
     enum fs_tex_target k;
     bool proxy;
     int dims;
+    int face;   /* the cube map face an image target names, 0 otherwise */
 } fs_tex_target_info;
+/* The targets of glBindTexture, glEnable, glTexParameter (GL_TEXTURE_CUBE_MAP,
+ * not its faces) and their proxies. */
 bool fs_tex_target_of(GLenum target, fs_tex_target_info *ti);
+/* The targets of the image commands and image queries: GL_TEXTURE_CUBE_MAP's
+ * six faces instead of GL_TEXTURE_CUBE_MAP itself (3.8.1: it is
+ * INVALID_ENUM for glTexImage2D), GL_PROXY_TEXTURE_CUBE_MAP kept. */
+bool fs_tex_image_target_of(GLenum target, fs_tex_target_info *ti);
 /* log2 of the largest image of a target (GL_MAX_TEXTURE_SIZE,
  * GL_MAX_3D_TEXTURE_SIZE as OSMesa reports them). */
 int fs_tex_target_max_log2(enum fs_tex_target k);
 int fs_tex_target_dims(enum fs_tex_target k);
-/* The target a unit samples (3.8.15: 3D before 2D before 1D), -1 when no
+/* The target a unit samples (3.8.15: cube map before 3D before 2D before 1D), -1 when no
  * target is enabled. */
 int fs_tex_unit_target(const fs_tex_unit *tu);
 /* The image commands of every target (texture_object.c): glTexImage*D,
@@ -180,7 +198,7 @@ typedef struct fs_tex_lod {
 void fs_tex_lod_params(const fs_tex_object *t, float unit_bias, fs_tex_lod *p);
 /* After an image of `level` of t was specified or changed: GENERATE_MIPMAP's
  * regeneration of the levels below the base level. */
-void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int level);
+void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int face, int level);
 /* The wraps llvmpipe filters in 8-bit fixed point (gallivm
  * lp_is_simple_wrap_mode); the others take its float path. */
 static inline bool fs_tex_simple_wrap(GLenum w) { return w == GL_REPEAT || w == GL_CLAMP_TO_EDGE; }
@@ -188,8 +206,18 @@ static inline bool fs_tex_simple_wrap(GLenum w) { return w == GL_REPEAT || w == 
  * checks wrap t from 2D up and wrap r for 3D only). */
 static inline bool fs_tex_simple_wraps(const fs_tex_object *t)
 {
+    if (t->target == FS_TEX_CUBE) /* sampled CLAMP_TO_EDGE (fs_tex_wrap_of) */
+        return true;
     return fs_tex_simple_wrap(t->wrap_s) && (t->target == FS_TEX_1D || fs_tex_simple_wrap(t->wrap_t)) &&
            (t->target != FS_TEX_3D || fs_tex_simple_wrap(t->wrap_r));
+}
+/* The wrap a texture's axis (0 s, 1 t, 2 r) is sampled with: a cube map's
+ * faces are clamped to their edges whatever the wraps (measured on
+ * llvmpipe: REPEAT, CLAMP and MIRRORED_REPEAT give CLAMP_TO_EDGE's
+ * texels; GL 1.5 leaves the wrap across a face edge to the wraps). */
+static inline GLenum fs_tex_wrap_of(const fs_tex_object *t, int axis)
+{
+    return t->target == FS_TEX_CUBE ? GL_CLAMP_TO_EDGE : axis == 0 ? t->wrap_s : axis == 1 ? t->wrap_t : t->wrap_r;
 }
 /* Completeness of an object, cached (3.8.10). */
 bool fs_tex_complete(fs_tex_object *t);

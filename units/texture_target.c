@@ -1,6 +1,6 @@
 /*
- * Texture targets (GL 1.5 spec 3.8.1-3.8.2, 3.8.11, 3.8.15): which target a
- * GL enum names and its image dimensions, the largest image of each, the
+ * Texture targets (GL 1.5 spec 3.8.1-3.8.2, 3.8.6, 3.8.11, 3.8.15): which target a
+ * GL enum names (a cube map face too) and its image dimensions, the largest image of each, the
  * target a unit samples when several are enabled, and the 1D and 3D image
  * commands (glTexImage1D/3D, glTexSubImage1D/3D, glCopyTexImage1D,
  * glCopyTexSubImage1D/3D), which texture_object.c's image code of every
@@ -16,14 +16,25 @@
 bool fs_tex_target_of(GLenum target, fs_tex_target_info *ti)
 {
     switch (target) {
-    case GL_TEXTURE_1D: *ti = (fs_tex_target_info){FS_TEX_1D, false, 1}; return true;
-    case GL_TEXTURE_2D: *ti = (fs_tex_target_info){FS_TEX_2D, false, 2}; return true;
-    case GL_TEXTURE_3D: *ti = (fs_tex_target_info){FS_TEX_3D, false, 3}; return true;
-    case GL_PROXY_TEXTURE_1D: *ti = (fs_tex_target_info){FS_TEX_1D, true, 1}; return true;
-    case GL_PROXY_TEXTURE_2D: *ti = (fs_tex_target_info){FS_TEX_2D, true, 2}; return true;
-    case GL_PROXY_TEXTURE_3D: *ti = (fs_tex_target_info){FS_TEX_3D, true, 3}; return true;
+    case GL_TEXTURE_1D: *ti = (fs_tex_target_info){FS_TEX_1D, false, 1, 0}; return true;
+    case GL_TEXTURE_2D: *ti = (fs_tex_target_info){FS_TEX_2D, false, 2, 0}; return true;
+    case GL_TEXTURE_3D: *ti = (fs_tex_target_info){FS_TEX_3D, false, 3, 0}; return true;
+    case GL_TEXTURE_CUBE_MAP: *ti = (fs_tex_target_info){FS_TEX_CUBE, false, 2, 0}; return true;
+    case GL_PROXY_TEXTURE_1D: *ti = (fs_tex_target_info){FS_TEX_1D, true, 1, 0}; return true;
+    case GL_PROXY_TEXTURE_2D: *ti = (fs_tex_target_info){FS_TEX_2D, true, 2, 0}; return true;
+    case GL_PROXY_TEXTURE_3D: *ti = (fs_tex_target_info){FS_TEX_3D, true, 3, 0}; return true;
+    case GL_PROXY_TEXTURE_CUBE_MAP: *ti = (fs_tex_target_info){FS_TEX_CUBE, true, 2, 0}; return true;
     default: return false;
     }
+}
+
+bool fs_tex_image_target_of(GLenum target, fs_tex_target_info *ti)
+{
+    if (target >= GL_TEXTURE_CUBE_MAP_POSITIVE_X && target < GL_TEXTURE_CUBE_MAP_POSITIVE_X + FS_TEX_FACES) {
+        *ti = (fs_tex_target_info){FS_TEX_CUBE, false, 2, (int)(target - GL_TEXTURE_CUBE_MAP_POSITIVE_X)};
+        return true;
+    }
+    return target != GL_TEXTURE_CUBE_MAP && fs_tex_target_of(target, ti);
 }
 
 /* GL_MAX_3D_TEXTURE_SIZE is 2048 on OSMesa (pipeline/state.def); 1D
@@ -34,10 +45,11 @@ int fs_tex_target_dims(enum fs_tex_target k) { return k == FS_TEX_1D ? 1 : k == 
 
 int fs_tex_unit_target(const fs_tex_unit *tu)
 {
-    /* 3.8.15: "If TEXTURE_3D is enabled, the three-dimensional texture is
-     * used; otherwise if TEXTURE_2D is enabled ...; otherwise if
+    /* 3.8.15: "If TEXTURE_CUBE_MAP is enabled, the cube map texture is
+     * used; otherwise if TEXTURE_3D is enabled, the three-dimensional
+     * texture is used; otherwise if TEXTURE_2D is enabled ...; otherwise if
      * TEXTURE_1D is enabled, the one-dimensional texture is used." */
-    static const enum fs_tex_target priority[] = {FS_TEX_3D, FS_TEX_2D, FS_TEX_1D};
+    static const enum fs_tex_target priority[] = {FS_TEX_CUBE, FS_TEX_3D, FS_TEX_2D, FS_TEX_1D};
     for (int i = 0; i < (int)(sizeof priority / sizeof priority[0]); i++)
         if (tu->enabled[priority[i]])
             return (int)priority[i];

@@ -3,7 +3,8 @@
  * images and their MIPmap levels, sampling with the six min filters, and
  * the texture environment.  FS_MAX_TEXTURE_UNITS units
  * (pipeline/rasterizer.h), each with its bindings, enables and environment,
- * applied unit after unit (3.8.13).  Cube maps are not modelled yet.  The
+ * applied unit after unit (3.8.13); cube maps (GL 1.3, 3.8.6) sample their
+ * six faces as 2D images (texture_sample.c's cube_* functions).  The
  * MP-Grid (GL_FRAGSIM_mp_grid), the footprint filters and the cycle model's
  * texel addresses (fs_tex_level_size, units/texture_reads.h: (level, x, y))
  * are 2D only (units/texture_target.c).
@@ -85,8 +86,8 @@ typedef struct fs_tex_env {
     float scale[2];             /* GL_RGB_SCALE, GL_ALPHA_SCALE */
     float lod_bias;             /* GL_TEXTURE_FILTER_CONTROL's bias (1.4, 3.8.8; texture_lod.c) */
 } fs_tex_env;
-/* The texture targets a unit binds (2D, 1D, 3D: units/texture_priv.h). */
-#define FS_TEX_TARGET_COUNT 3
+/* The texture targets a unit binds (2D, 1D, 3D, cube map: units/texture_priv.h). */
+#define FS_TEX_TARGET_COUNT 4
 typedef struct fs_texture_attrib {
     struct {
         GLuint binding[FS_TEX_TARGET_COUNT];
