@@ -603,12 +603,41 @@ static bool image_target(fs_context *c, GLenum target, int dims, bool proxy_ok, 
     return false;
 }
 
+/* GL 1.5 3.8.1 lets the GL store a generic compressed internal format
+ * (table 3.17) uncompressed.  llvmpipe does so (measured through OSMesa:
+ * GL_TEXTURE_COMPRESSED 0, TEXTURE_INTERNAL_FORMAT, sizes and glGetTexImage
+ * as for the base format) for GL_COMPRESSED_ALPHA and _INTENSITY on every
+ * target and for every generic one on a 1D target, whose images no block
+ * format of Mesa's takes.  Returns the format the image is stored as;
+ * the other generic formats on 2D targets Mesa compresses (RGTC, LATC,
+ * DXT1, DXT5), which the model does not (docs/compressed_textures.md). */
+static GLint generic_compressed_storage(GLint f, int dims)
+{
+    switch (f) {
+    case GL_COMPRESSED_ALPHA: return GL_ALPHA;
+    case GL_COMPRESSED_INTENSITY: return GL_INTENSITY;
+    default: break;
+    }
+    if (dims != 1)
+        return f;
+    switch (f) {
+    case GL_COMPRESSED_RED: return GL_RED;
+    case GL_COMPRESSED_RG: return GL_RG;
+    case GL_COMPRESSED_LUMINANCE: return GL_LUMINANCE;
+    case GL_COMPRESSED_LUMINANCE_ALPHA: return GL_LUMINANCE_ALPHA;
+    case GL_COMPRESSED_RGB: return GL_RGB;
+    case GL_COMPRESSED_RGBA: return GL_RGBA;
+    default: return f;
+    }
+}
+
 void fs_tex_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLint internalformat, GLsizei w, GLsizei h,
                      GLsizei d, GLint border, GLenum format, GLenum type, const GLvoid *pixels)
 {
     fs_tex_target_info ti;
     if (!image_target(c, target, dims, true, &ti))
         return;
+    internalformat = generic_compressed_storage(internalformat, dims);
     const GLsizei size[3] = {w, h, d};
     GLenum err = image_format_error(format, type);
     if (err == GL_NO_ERROR)
@@ -742,6 +771,7 @@ void fs_tex_copy_image_nd(fs_context *c, int dims, GLenum target, GLint level, G
     fs_tex_target_info ti;
     if (!image_target(c, target, dims, false, &ti))
         return;
+    internalformat = (GLenum)generic_compressed_storage((GLint)internalformat, dims);
     const GLsizei size[3] = {w, h, 1};
     /* Table 3.16: the internal formats 1-4 are not accepted here. */
     GLenum err = internalformat >= 1 && internalformat <= 4
