@@ -39,6 +39,20 @@ void fs_cli_cycle_summary(fs_cli_cycle *h, FILE *f, double seconds);
 void fs_cli_cycle_end(fs_cli_cycle *h);
 /* The run's model, to attach signals to. */
 fs_cycle *fs_cli_cycle_model(fs_cli_cycle *h);
+/* sampling.max_error (--max-error): the passes of a run, each with the
+ * sampling keys it ran with and the estimate it reported. */
+enum { FS_CLI_MAX_PASSES = 32 };
+typedef struct fs_cli_passes {
+    int n;
+    struct { long frames, frame_tiles, tiles, every; double estimate, part[FS_CYCLE_ERR_PARTS]; } p[FS_CLI_MAX_PASSES];
+} fs_cli_passes;
+/* After a pass that ran with cfg: records it in *passes (which h's JSON
+ * and summary report from then on) and returns true with cfg changed to
+ * the next, denser pass when the estimate exceeds sampling.max_error and
+ * more can be sampled. */
+bool fs_cli_cycle_resample(fs_cli_cycle *h, fs_cycle_config *cfg, fs_cli_passes *passes);
+/* --max-error P (percent) as a --set assignment into buf; -1 if malformed. */
+int fs_cli_max_error_set(const char *percent, char *buf, size_t len);
 /* --frames A-B, A, A-, -B (first frame 0; b -1: to the end); -1 if malformed. */
 int fs_cli_parse_frames(const char *s, long *a, long *b);
 

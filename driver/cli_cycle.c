@@ -5,6 +5,7 @@
  * Statistics per frame, per draw and per occlusion query go to the JSON
  * statistics file ("cycle" object) and, with --csv, to one CSV row each.
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <jansson.h>
@@ -22,6 +23,8 @@ struct fs_cli_cycle {
     struct { uint64_t frame; fs_cycle_stats s; } *frames;
     size_t nframes, cap;
     long clock_khz;      /* clock.khz: results in seconds too when not 0 */
+    long max_error;      /* sampling.max_error, 1/100 % */
+    const fs_cli_passes *passes; /* the run's passes so far (fs_cli_cycle_resample), or NULL */
 };
 
 int fs_cli_cycle_mode(const char *name, int *mode)
@@ -96,6 +99,7 @@ fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_cycle_config *cfg, fs_contex
     }
     h->mode = (fs_cycle_mode)mode;
     h->clock_khz = cfg->clock_khz;
+    h->max_error = cfg->sampling_max_error;
     h->cy = fs_cycle_create(cfg, h->mode, err, errlen);
     if (!h->cy) {
         free(h);
@@ -136,6 +140,70 @@ void fs_cli_cycle_frame(fs_cli_cycle *h, long frame)
     h->frames[h->nframes++].s = s;
 }
 
+/* Whether a pass ran with nothing sampled. */
+static bool pass_full(const fs_cli_passes *ps, int i)
+{
+    return ps->p[i].frames <= 1 && ps->p[i].frame_tiles <= 1 && ps->p[i].tiles <= 1 && ps->p[i].every <= 1;
+}
+
+/* The final pass simulated everything because sampling could not meet the
+ * bound (a pass before it sampled). */
+static bool gave_up(const fs_cli_passes *ps)
+{
+    return ps && ps->n > 1 && pass_full(ps, ps->n - 1);
+}
+
+/* sampled mode's "max_error" object: the bound, whether the estimate met
+ * it, whether it took full simulation, and the passes. */
+static json_t *passes_json(const fs_cli_cycle *h, double estimate)
+{
+    json_t *arr = json_array();
+    for (int i = 0; h->passes && i < h->passes->n; i++)
+        json_array_append_new(arr, json_pack("{s:I, s:I, s:I, s:I, s:f, s:{s:f, s:f, s:f}}", "frames",
+                                             (json_int_t)h->passes->p[i].frames, "frame_tiles",
+                                             (json_int_t)h->passes->p[i].frame_tiles, "tiles",
+                                             (json_int_t)h->passes->p[i].tiles, "every",
+                                             (json_int_t)h->passes->p[i].every, "error_estimate",
+                                             h->passes->p[i].estimate, "parts", "frames",
+                                             h->passes->p[i].part[FS_CYCLE_ERR_FRAMES], "tiles",
+                                             h->passes->p[i].part[FS_CYCLE_ERR_TILES], "draws",
+                                             h->passes->p[i].part[FS_CYCLE_ERR_DRAWS]));
+    double bound = (double)h->max_error / 10000.0;
+    return json_pack("{s:f, s:b, s:b, s:b, s:o}", "bound", bound, "met", h->max_error <= 0 || estimate <= bound,
+                     "resampled", h->passes && h->passes->n > 1, "cannot_by_sampling", gave_up(h->passes),
+                     "passes", arr);
+}
+
+bool fs_cli_cycle_resample(fs_cli_cycle *h, fs_cycle_config *cfg, fs_cli_passes *passes)
+{
+    fs_cycle_stats t;
+    double e = fs_cli_cycle_totals(h, &t);
+    h->passes = passes;
+    if (passes->n < FS_CLI_MAX_PASSES) {
+        passes->p[passes->n].frames = cfg->sampling_frames;
+        passes->p[passes->n].frame_tiles = cfg->sampling_frame_tiles;
+        passes->p[passes->n].tiles = cfg->sampling_tiles;
+        passes->p[passes->n].every = cfg->sampling_every;
+        fs_cycle_error_parts(h->cy, passes->p[passes->n].part);
+        passes->p[passes->n++].estimate = e;
+    }
+    /* the estimate as reported ("%.6f") against the bound */
+    if (h->mode != FS_CYCLE_SAMPLED || cfg->sampling_max_error <= 0 ||
+        llround(e * 1e6) <= cfg->sampling_max_error * 100 || passes->n >= FS_CLI_MAX_PASSES)
+        return false;
+    return fs_cycle_config_denser(h->cy, cfg);
+}
+
+int fs_cli_max_error_set(const char *percent, char *buf, size_t len)
+{
+    char *end;
+    double p = strtod(percent, &end);
+    if (end == percent || *end || !(p >= 0.0 && p <= 100.0))
+        return -1;
+    snprintf(buf, len, "sampling.max_error=%ld", (long)llround(p * 100.0));
+    return 0;
+}
+
 int fs_cli_cycle_json(fs_cli_cycle *h, json_t *into)
 {
     fs_cycle_finish(h->cy);
@@ -167,6 +235,10 @@ int fs_cli_cycle_json(fs_cli_cycle *h, json_t *into)
                               fs_cycle_too_short(h->cy), "error_estimate", strtod(e, NULL),
                               "totals", with_stats(json_object(), &t), "frames", frames, "queries", h->queries_json,
                               "draws", h->draws_json);
+    if (cycle && h->mode == FS_CYCLE_SAMPLED && json_object_set_new(cycle, "max_error", passes_json(h, error_estimate)) != 0) {
+        json_decref(cycle);
+        cycle = NULL;
+    }
     /* With a clock the totals in seconds and frames per second too (the
      * dissertation's tables are in seconds and fps, 3.1.9). */
     if (cycle && h->clock_khz > 0) {
@@ -194,6 +266,17 @@ void fs_cli_cycle_summary(fs_cli_cycle *h, FILE *f, double seconds)
             h->mode == FS_CYCLE_SAMPLED ? "sampled" : "cycle", (unsigned long long)t.cycles,
             (unsigned long long)t.estimated_cycles, 100.0 * error_estimate,
             seconds > 0 ? (double)t.cycles / seconds / 1e6 : 0.0);
+    const fs_cli_passes *ps = h->passes;
+    if (ps && ps->n > 1)
+        fprintf(f, "fragsim: sampled mode: --max-error %.2f%%: %d passes, estimates", h->max_error / 100.0, ps->n);
+    for (int i = 0; ps && ps->n > 1 && i < ps->n; i++)
+        fprintf(f, " %.2f%%%s", 100.0 * ps->p[i].estimate, i + 1 < ps->n ? "," : "\n");
+    if (gave_up(ps))
+        fprintf(f, "fragsim: sampled mode: cannot meet --max-error %.2f%% by sampling: simulated in full\n",
+                h->max_error / 100.0);
+    else if (h->max_error > 0 && llround(error_estimate * 1e6) > h->max_error * 100)
+        fprintf(f, "fragsim: sampled mode: cannot meet --max-error %.2f%%: the estimate stays above it after %d passes\n",
+                h->max_error / 100.0, ps ? ps->n : 1);
     if (fs_cycle_too_short(h->cy))
         fprintf(f, "fragsim: sampled mode: %zu frames are too few to sample (6 or more, or 1 or 2) with an error "
                    "estimate: simulated in full\n", h->nframes);

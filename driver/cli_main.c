@@ -31,6 +31,7 @@ typedef struct cli_opts {
     const char *config_file;
     const char *sets[32];
     int nsets;
+    char max_error_set[48];   /* --max-error P as the --set of sampling.max_error */
     long frame_first, frame_last; /* inclusive; last -1 = to the end */
     const char *frame_end;
     int width, height;
@@ -43,6 +44,7 @@ typedef struct cli_opts {
     const char *csv_file;     /* --csv: cycle statistics as CSV */
     bool draw_stats;          /* --draw-stats: cycle statistics per draw too */
     fs_cli_cycle *cycle;      /* the cycle model of the run, NULL in functional mode */
+    const fs_cycle_config *cycle_pass; /* sampled mode's pass after the first (--max-error), or NULL */
     /* --snapshot CALLSET / --snapshot-prefix P: glretrace's snapshots,
      * P%010u.png after each call of the set (callset.h). */
     fs_callset snaps;
@@ -78,6 +80,9 @@ static void usage_replay(FILE *f, bool check)
             "                     others estimated from triangle areas).  Skipped work is NOT\n"
             "                     rendered: images and functional counters are incomplete;\n"
             "                     cycles come with an error estimate (docs/cycle_model.md)\n"
+            "  --max-error P      sampled mode: the largest error estimate accepted, in percent\n"
+            "                     (sampling.max_error; default 2): above it the trace is replayed\n"
+            "                     with denser sampling, or in full (the run says so); 0: one pass\n"
             "  --csv FILE         cycle statistics, one row per frame and query (with --mode)\n"
             "  --draw-stats       cycle statistics per draw too (JSON and CSV; large for big traces)\n"
             "  --snapshot CALLSET write the colour buffer after each call of CALLSET (glretrace's\n"
@@ -154,6 +159,13 @@ static int parse_opts(int argc, char **argv, cli_opts *o, bool check)
                 return -1;
             }
             o->sets[o->nsets++] = v;
+        } else if (!strcmp(a, "--max-error")) {
+            NEEDV();
+            if (o->nsets == 32 || fs_cli_max_error_set(v, o->max_error_set, sizeof o->max_error_set) != 0) {
+                fprintf(stderr, "%s: --max-error '%s': expected a percentage from 0 to 100\n", prog, v);
+                return -1;
+            }
+            o->sets[o->nsets++] = o->max_error_set;
         } else if (!strcmp(a, "--frames")) {
             NEEDV();
             if (fs_cli_parse_frames(v, &o->frame_first, &o->frame_last) != 0) {
@@ -704,6 +716,8 @@ static int replay_session_open(replay_session *S, cli_opts *o, bool check)
     memset(S, 0, sizeof *S);
     if (load_run_config(&S->cfg, o->config_file, o->sets, o->nsets) != 0)
         return 2;
+    if (o->cycle_pass)
+        S->cfg.cycle = *o->cycle_pass;
     fs_replay_opts ro = {o->frame_end, o->width ? o->width : (int)S->cfg.gl.framebuffer_width,
                          o->height ? o->height : (int)S->cfg.gl.framebuffer_height};
     ro.report_skipped = o->snapshot; /* glretrace snapshots at calls fragsim skips too */
@@ -793,6 +807,10 @@ static int run_replay(int argc, char **argv, bool check)
     if (p)
         return p > 0 ? 0 : 2;
     replay_session S;
+    fs_cli_passes passes = {0};
+    fs_cycle_config pass_cfg;
+    double t0 = now_seconds();
+pass:;
     int rc = replay_session_open(&S, &o, check);
     if (rc != 0) {
         fs_callset_free(&o.snaps);
@@ -803,7 +821,6 @@ static int run_replay(int argc, char **argv, bool check)
     run.frames = malloc(run.cap * sizeof *run.frames);
     run.all_within = true;
     const char *status = "ok";
-    double t0 = now_seconds();
     /* Per frame, OSMesa counts GL_SAMPLES_PASSED with a query of its own, to
      * compare with the fragments that passed the model's depth and stencil
      * tests (what NOHC and occlusion queries count).  A trace that runs its
@@ -822,6 +839,18 @@ static int run_replay(int argc, char **argv, bool check)
             fprintf(stderr, "%s: out of memory\n", prog);
         status = "error";
         rc = 1;
+    }
+    /* sampling.max_error: a pass whose estimate is above it is replayed,
+     * from a fresh session, with denser sampling (its images, CSV and
+     * signals are written again); only the last pass writes statistics. */
+    pass_cfg = S.cfg.cycle;
+    if (rc == 0 && o.cycle && fs_cli_cycle_resample(o.cycle, &pass_cfg, &passes)) {
+        fs_error_log_free(&errs);
+        free(run.frames);
+        S.c->error_hook = NULL;
+        replay_session_close(&S, &o);
+        o.cycle_pass = &pass_cfg;
+        goto pass;
     }
     if (rc == 0 && check && !run.all_within) {
         status = "beyond tolerance";
@@ -917,6 +946,7 @@ static int finish_osmesa_frame(replay_loop *L, long frame)
 typedef struct bench_opts {
     const char *engine, *trace, *config_file;
     int cycle_mode; /* --mode: as `fragsim replay --mode`; -1 functional */
+    char max_error_set[48]; /* --max-error P as a --set of sampling.max_error, or "" */
     long repeat;
     int width, height;
     fs_trace_parser parser;
@@ -925,12 +955,12 @@ typedef struct bench_opts {
 /* 0, 1 after --help, or -1 on a bad argument (printed). */
 static int parse_bench_opts(int argc, char **argv, bench_opts *o)
 {
-    *o = (bench_opts){"model", NULL, NULL, -1, 1, 0, 0, FS_TRACE_PARSER_FAST};
+    *o = (bench_opts){"model", NULL, NULL, -1, "", 1, 0, 0, FS_TRACE_PARSER_FAST};
     for (int i = 0; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             printf("usage: fragsim bench [--engine model|osmesa] [--repeat N] [--size WxH]\n"
                    "                     [--mode functional|cycle|sampled] [--config FILE]\n"
-                   "                     [--reader fast|general] TRACE\n\n"
+                   "                     [--max-error P] [--reader fast|general] TRACE\n\n"
                    "Replays TRACE once untimed, then N times on one engine, and prints one JSON\nline: seconds of"
                    " rendering (from the decoded calls), load_seconds (opening the\ntrace: decoding and"
                    " validating it, the same for every engine), floor_seconds\n(going through the decoded"
@@ -948,6 +978,11 @@ static int parse_bench_opts(int argc, char **argv, bench_opts *o)
             }
         } else if (!strcmp(argv[i], "--config") && i + 1 < argc) {
             o->config_file = argv[++i];
+        } else if (!strcmp(argv[i], "--max-error") && i + 1 < argc) {
+            if (fs_cli_max_error_set(argv[++i], o->max_error_set, sizeof o->max_error_set) != 0) {
+                fprintf(stderr, "%s: bench: --max-error '%s': expected a percentage from 0 to 100\n", prog, argv[i]);
+                return -1;
+            }
         } else if (!strcmp(argv[i], "--reader") && i + 1 < argc) {
             if (parse_reader(argv[++i], &o->parser) != 0)
                 return -1;
@@ -981,6 +1016,7 @@ typedef struct bench_run {
     fs_cli_cycle *cy;
     fs_cycle_stats cstats;
     double cerror, seconds, load;
+    fs_cli_passes passes;    /* sampled mode's passes of the last repetition */
     uint64_t frames, fragments;
     const char *renderer;
 } bench_run;
@@ -991,6 +1027,11 @@ typedef struct bench_run {
 static int bench_repetition(bench_run *B, long rep)
 {
     char err[1024];
+    /* sampling.max_error: passes until the estimate is within it, each
+     * timed (the speed-up is over all of them) */
+    fs_cycle_config pass = B->cfg.cycle;
+    B->passes.n = 0;
+again:;
     double tl = now_seconds();
     fs_replayer *r = fs_replay_open(B->o->trace, &B->ro, err, sizeof err);
     if (rep >= 0)
@@ -1013,7 +1054,7 @@ static int bench_repetition(bench_run *B, long rep)
     }
     if (B->c && B->o->cycle_mode >= 0) {
         /* A fresh model per repetition: each reports the same cycles. */
-        B->cy = fs_cli_cycle_begin(B->o->cycle_mode, &B->cfg.cycle, B->c, NULL, info->frames, false, err, sizeof err);
+        B->cy = fs_cli_cycle_begin(B->o->cycle_mode, &pass, B->c, NULL, info->frames, false, err, sizeof err);
         if (!B->cy) {
             fprintf(stderr, "%s: %s\n", prog, err);
             fs_replay_close(r);
@@ -1039,10 +1080,13 @@ static int bench_repetition(bench_run *B, long rep)
     fs_replay_close(r);
     if (rc != 0)
         return -1;
+    if (rep >= 0)
+        B->seconds += t1 - t0;
+    if (B->cy && fs_cli_cycle_resample(B->cy, &pass, &B->passes))
+        goto again;
     if (B->cy)
         B->cerror = fs_cli_cycle_totals(B->cy, &B->cstats);
     if (rep >= 0) {
-        B->seconds += t1 - t0;
         B->frames += loop.frames;
         if (B->c)
             B->fragments += B->c->stats.fragments_generated;
@@ -1057,7 +1101,8 @@ static int run_bench(int argc, char **argv)
     if (p)
         return p > 0 ? 0 : 2;
     bench_run B = {.o = &o, .model = !strcmp(o.engine, "model"), .renderer = "fragsim"};
-    if (load_run_config(&B.cfg, o.config_file, NULL, 0) != 0)
+    const char *max_error = o.max_error_set;
+    if (load_run_config(&B.cfg, o.config_file, &max_error, max_error[0] ? 1 : 0) != 0)
         return 2;
     B.ro = (fs_replay_opts){NULL, o.width, o.height, 0};
     B.ro.parser = o.parser;
@@ -1074,6 +1119,8 @@ static int run_bench(int argc, char **argv)
                                  "floor_seconds", fixed_real(floor_s, 6), "frames", (json_int_t)B.frames, "fragments",
                                  (json_int_t)fragments, "cycles", (json_int_t)B.cstats.cycles, "estimated_cycles",
                                  (json_int_t)B.cstats.estimated_cycles, "error_estimate", fixed_real(B.cerror, 6));
+        if (line && B.cy && o.cycle_mode == FS_CYCLE_SAMPLED)
+            json_object_set_new(line, "passes", json_integer(B.passes.n));
         if (!line || json_dumpf(line, stdout, JSON_REAL_PRECISION(15)) != 0)
             fprintf(stderr, "%s: bench: out of memory\n", prog);
         putchar('\n');

@@ -64,6 +64,8 @@ typedef struct fs_cyc_pool {
 } fs_cyc_pool;
 #define FS_CYC_POOLS 64
 #define FS_CYC_POOL_WINDOW 16384.0
+/* the normal quantile of a two-sided 95% interval (the error estimate) */
+#define FS_CYC_Z95 1.96
 #define FS_CYC_POOL_MIN 64.0
 
 /* What spread timing rounds to whole cycles, bytes and counts. */
@@ -173,9 +175,15 @@ struct fs_cycle {
     bool *frame_was_skipped;
     uint64_t frame_cap, frames_done;
     double frame_error;         /* absolute error estimate of the interpolated cycles */
+    double *frame_tile_err;     /* per frame: tile sampling's standard error of its cycles */
+    /* fs_cycle_finish: the frames' standard error from the interpolation
+     * residuals of the simulated frames and its degrees of freedom */
+    double frame_sd;
+    int frame_df;
 
-    /* sampled mode, tile sampling: work (unscaled service cycles) per tile
-     * of the screen in this frame, for the error estimate */
+    /* sampled mode, tile sampling: work (unscaled service cycles) and
+     * fragments per tile of the screen in this frame (pairs), for the
+     * error estimate */
     double *tile_work;
     int tiles_x, tiles_y, fb_width, fb_height;
     uint8_t *tile_map;    /* what watch.mask.map points to */
@@ -263,7 +271,7 @@ void fs_cyc_sample_quad(fs_cycle *cy, fs_context *c, const fs_quad *q, unsigned 
 /* How many quads a lumped quad of tile sampling stands for (the ratio
  * estimator), and its unscaled work w at its tile (the error estimate). */
 double fs_cyc_lump_factor(fs_cycle *cy);
-void fs_cyc_tile_work_add(fs_cycle *cy, const fs_quad *q, double w);
+void fs_cyc_tile_work_add(fs_cycle *cy, const fs_quad *q, double w, unsigned frags);
 /* The frame's estimated draws, charged at its end; then the frame's error
  * and, with frame sampling, its cycles kept for fs_cycle_finish. */
 void fs_cyc_charge_estimated_draws(fs_cycle *cy);

@@ -81,9 +81,17 @@ void fs_cycle_finish(fs_cycle *cy);
 uint64_t fs_cycle_frame_cycles(const fs_cycle *cy, uint64_t f, bool *skipped);
 /* Ends a frame: drains the pipeline and returns the frame's counters. */
 void fs_cycle_frame_end(fs_cycle *cy, fs_cycle_stats *out);
-/* Sampled mode's estimate of the relative standard error of the total
- * cycles so far (0 in full mode). */
+/* Sampled mode's error estimate: the half-width of a 95% confidence
+ * interval of the total cycles so far, relative to them (0 in full mode);
+ * after fs_cycle_finish it covers the interpolated frames too. */
 double fs_cycle_error_estimate(const fs_cycle *cy);
+/* Its parts (independent; the estimate is their root sum of squares). */
+enum { FS_CYCLE_ERR_FRAMES, FS_CYCLE_ERR_TILES, FS_CYCLE_ERR_DRAWS, FS_CYCLE_ERR_PARTS };
+void fs_cycle_error_parts(const fs_cycle *cy, double part[FS_CYCLE_ERR_PARTS]);
+/* sampling.max_error: cfg, the configuration of the finished run cy,
+ * changed to sample more where cy's estimate is largest (the next pass);
+ * false when cfg already simulates everything. */
+bool fs_cycle_config_denser(const fs_cycle *cy, fs_cycle_config *cfg);
 /* A closed draw or query, handed to the record callback as it closes (so
  * long traces need no memory per draw). */
 typedef enum fs_cycle_kind { FS_CYCLE_DRAW, FS_CYCLE_QUERY } fs_cycle_kind;

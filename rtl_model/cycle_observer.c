@@ -182,6 +182,7 @@ void fs_cycle_destroy(fs_cycle *cy)
     free(cy->tile_map);
     free(cy->seq);
     free(cy->frame_was_skipped);
+    free(cy->frame_tile_err);
     free(cy->fbmem);
     free(cy->kinds);
     free(cy);
@@ -451,7 +452,7 @@ void fs_cycle_quad(void *user, fs_context *c, const fs_quad *q, const fs_quad_wo
     if (a > cy->done)
         cy->done = a;
     if (k > 1)
-        fs_cyc_tile_work_add(cy, q, (double)quad_work / kq);
+        fs_cyc_tile_work_add(cy, q, (double)quad_work / kq, n);
     cy->acc.quads += FS_SCALE(1);
     cy->acc.fragments += FS_SCALE(n);
 #undef FS_SCALE

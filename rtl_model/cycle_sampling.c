@@ -31,7 +31,7 @@ void fs_cyc_tile_tables_alloc(fs_cycle *cy)
     cy->tiles_x = (cy->fb_width + side - 1) / side;
     cy->tiles_y = (cy->fb_height + side - 1) / side;
     size_t n = (size_t)cy->tiles_x * (size_t)cy->tiles_y;
-    cy->tile_work = calloc(n, sizeof *cy->tile_work);
+    cy->tile_work = calloc(2 * n, sizeof *cy->tile_work); /* work, fragments */
     cy->tile_map = calloc(n + 3, 1); /* + 3: fs_tile_mask.map */
     if (!cy->tile_map)
         return; /* the hash alone answers */
@@ -444,15 +444,18 @@ void fs_cycle_triangle_area(void *user, double area, int x, int y)
     cy->tri_est = true;
 }
 
-/* Tile sampling's error estimate: unscaled work w of a sampled quad at its
- * tile. */
-void fs_cyc_tile_work_add(fs_cycle *cy, const fs_quad *q, double w)
+/* Tile sampling's error estimate: unscaled work w and the fragments of a
+ * sampled quad at its tile. */
+void fs_cyc_tile_work_add(fs_cycle *cy, const fs_quad *q, double w, unsigned frags)
 {
     if (!cy->tile_work)
         return;
     int tx = q->x >> cy->watch.mask.shift, ty = q->y >> cy->watch.mask.shift;
-    if (tx >= 0 && ty >= 0 && tx < cy->tiles_x && ty < cy->tiles_y)
-        cy->tile_work[(size_t)ty * (size_t)cy->tiles_x + (size_t)tx] += w;
+    if (tx >= 0 && ty >= 0 && tx < cy->tiles_x && ty < cy->tiles_y) {
+        double *t = &cy->tile_work[2 * ((size_t)ty * (size_t)cy->tiles_x + (size_t)tx)];
+        t[0] += w;
+        t[1] += frags;
+    }
 }
 
 /* Tile sampling: a sampled quad of a triangle timed by spread_triangle.
@@ -503,7 +506,7 @@ void fs_cyc_sample_quad(fs_cycle *cy, fs_context *c, const fs_quad *q, unsigned 
     if (fill)
         return; /* its triangle has no area charged: only the costs count */
     cy->frags_cur += n;
-    fs_cyc_tile_work_add(cy, q, pool_work(cy, &v));
+    fs_cyc_tile_work_add(cy, q, pool_work(cy, &v), n);
 }
 
 double fs_cyc_lump_factor(fs_cycle *cy)
@@ -515,42 +518,54 @@ double fs_cyc_lump_factor(fs_cycle *cy)
     return cy->kq;
 }
 
-/* Tile sampling's sampling error of one frame.  The frame's work is
- * estimated as every * (work of the sampled tiles); treating the sampled
- * tiles as a simple random sample of the screen's tiles (conservative for
- * a stratified lattice when work varies smoothly), its variance is
- * N^2 n s^2 (1 - 1/N) (Cochran, Sampling Techniques, 3rd ed., eq. 2.8 for
- * the estimated total, with N = every * n tiles).  The relative standard
- * error of the work is applied to the frame's cycles.  This is the noise of
- * the sample only, not the bias of charging a quad for its stratum. */
-static void tile_frame_error(fs_cycle *cy, uint64_t frame_cycles)
+/* Tile sampling's sampling error of one frame, as a standard error of its
+ * cycles.  Spread timing is a ratio estimator (Cochran, Sampling
+ * Techniques, 3rd ed., 6.2-6.4): every triangle's exact area times the work
+ * per fragment R of the sampled tiles, so its error is that of R, whose
+ * variance comes from the residuals d = w - R f of the sampled tiles (w:
+ * work, f: fragments): V = N^2 n s_d^2 (1 - 1/N) for the total over
+ * N = every * n tiles (eq. 6.9, the sampled tiles treated as a simple
+ * random sample, conservative for the jittered one).  The spread of the
+ * work itself (eq. 2.8, the earlier estimate) counted the tiles' different
+ * areas, which the exact areas remove: 22% on forest (O2) for an error of
+ * -1.5%.  Its relative error is applied to the frame's cycles.  This is
+ * the noise of the sample only, not a bias of the cost pools (textured,
+ * docs/cycle_model.md). */
+static double tile_frame_error(fs_cycle *cy, uint64_t frame_cycles)
 {
-    double n = 0, sum = 0, sumsq = 0, N = (double)cy->tiles.every;
+    double n = 0, sw = 0, sf = 0, sww = 0, swf = 0, sff = 0, N = (double)cy->tiles.every;
     for (int ty = 0; ty < cy->tiles_y; ty++)
         for (int tx = 0; tx < cy->tiles_x; tx++) {
             if (!fs_tile_mask_has(&cy->watch.mask, (uint32_t)tx, (uint32_t)ty))
                 continue;
-            double w = cy->tile_work[(size_t)ty * (size_t)cy->tiles_x + (size_t)tx];
+            const double *t = &cy->tile_work[2 * ((size_t)ty * (size_t)cy->tiles_x + (size_t)tx)];
             n++;
-            sum += w;
-            sumsq += w * w;
+            sw += t[0];
+            sf += t[1];
+            sww += t[0] * t[0];
+            swf += t[0] * t[1];
+            sff += t[1] * t[1];
         }
-    memset(cy->tile_work, 0, (size_t)cy->tiles_x * (size_t)cy->tiles_y * sizeof *cy->tile_work);
-    if (n < 2 || sum <= 0)
-        return;
-    double s2 = (sumsq - sum * sum / n) / (n - 1);
+    memset(cy->tile_work, 0, 2 * (size_t)cy->tiles_x * (size_t)cy->tiles_y * sizeof *cy->tile_work);
+    if (n < 2 || sw <= 0 || sf <= 0)
+        return 0.0;
+    /* sum of (w - R f)^2 with R = sw / sf, from the sums */
+    double R = sw / sf, sdd = sww - 2.0 * R * swf + R * R * sff;
+    double s2 = sdd / (n - 1);
     double var = N * N * n * (s2 > 0 ? s2 : 0) * (1.0 - 1.0 / N);
-    double rel = sqrt(var) / (N * sum);
-    double e = rel * (double)frame_cycles;
-    cy->tile_var += e * e;
+    double rel = sqrt(var) / (N * sw);
+    return rel * (double)frame_cycles;
 }
 
 void fs_cyc_sample_frame_end(fs_cycle *cy, uint64_t frame_cycles)
 {
+    double te = 0.0;
     if (cy->tiles.every > 1 && cy->tile_work && !cy->frame_skipped)
-        tile_frame_error(cy, frame_cycles);
-    if (!cy->frame_sampling)
+        te = tile_frame_error(cy, frame_cycles);
+    if (!cy->frame_sampling) {
+        cy->tile_var += te * te;
         return;
+    }
     if (cy->frames_done == cy->frame_cap) {
         uint64_t cap = cy->frame_cap ? cy->frame_cap * 2 : 64;
         uint64_t *fc = realloc(cy->frame_cycles, cap * sizeof *fc);
@@ -559,10 +574,14 @@ void fs_cyc_sample_frame_end(fs_cycle *cy, uint64_t frame_cycles)
         bool *fsk = realloc(cy->frame_was_skipped, cap * sizeof *fsk);
         if (fsk)
             cy->frame_was_skipped = fsk;
-        if (fc && fsk)
+        double *fte = realloc(cy->frame_tile_err, cap * sizeof *fte);
+        if (fte)
+            cy->frame_tile_err = fte;
+        if (fc && fsk && fte)
             cy->frame_cap = cap;
     }
     if (cy->frames_done < cy->frame_cap) {
+        cy->frame_tile_err[cy->frames_done] = te;
         cy->frame_cycles[cy->frames_done] = frame_cycles;
         cy->frame_was_skipped[cy->frames_done] = cy->frame_skipped;
         cy->frames_done++;
@@ -621,12 +640,70 @@ bool fs_cycle_frame_skipped(const fs_cycle *cy)
     return cy->frame_skipped;
 }
 
+/* The frames' error as a sample's variance (fs_cycle_finish): each steady
+ * simulated frame s_j between two others is a test of the interpolation,
+ * its residual r_j = c(s_j) - the line through its neighbours.  If frames
+ * scatter about a smooth line with variance s^2, r_j has variance
+ * s^2 (1 + wl^2 + wr^2) (wl, wr: the line's weights of the neighbours), so
+ * s^2 is estimated from the residuals with one degree of freedom each.
+ * An interpolated frame then misses by its own scatter and by its
+ * endpoints': the total misses with variance
+ * s^2 (skipped frames + sum over simulated frames of coef^2).  This is
+ * what the curvature bound above does not see: textured on
+ * InfiniteReality scatters by 1-3% from frame to frame, and the bound
+ * (0.21%) was a third of the error (+0.62%, docs/sampling.md).  The tile
+ * errors of the simulated frames carry into the frames interpolated from
+ * them (weight 1 + coef). */
+static void frame_noise(fs_cycle *cy, uint64_t first, const double *coef)
+{
+    uint64_t n = cy->frames_done, nskip = 0;
+    double r2 = 0, cs2 = 0, sum = 0, sumsq = 0;
+    int nr = 0, ns = 0;
+    uint64_t p = UINT64_MAX, q = UINT64_MAX; /* the last two steady simulated frames */
+    for (uint64_t f = 0; f < n; f++) {
+        if (cy->frame_was_skipped[f]) {
+            nskip++;
+            continue;
+        }
+        double k = coef ? coef[f] : 0.0, te = cy->frame_tile_err[f] * (1.0 + k);
+        cs2 += k * k;
+        cy->tile_var += te * te;
+        if (f < first)
+            continue;
+        ns++;
+        sum += (double)cy->frame_cycles[f];
+        sumsq += (double)cy->frame_cycles[f] * (double)cy->frame_cycles[f];
+        if (p != UINT64_MAX && q != UINT64_MAX) {
+            double h = (double)(f - p), wl = (double)(f - q) / h, wr = (double)(q - p) / h;
+            double r = (double)cy->frame_cycles[q] - wl * (double)cy->frame_cycles[p] - wr * (double)cy->frame_cycles[f];
+            r2 += r * r / (1.0 + wl * wl + wr * wr);
+            nr++;
+        }
+        p = q;
+        q = f;
+    }
+    /* One residual can be 0 by chance (frames 1, 8, 15 of 10, 11, 12 quads
+     * lie on a line; the trace between them did not, -3.0%): below two,
+     * the steady frames' scatter about their mean stands in, which
+     * overstates a trend but is what three frames can tell. */
+    double s2 = nr > 0 ? r2 / nr : 0.0;
+    if (nr < 2 && ns >= 2) {
+        s2 = fmax(s2, (sumsq - sum * sum / ns) / (ns - 1));
+        nr = ns - 1;
+    }
+    cy->frame_df = nr;
+    cy->frame_sd = nr > 0 ? sqrt(fmax(s2, 0.0) * ((double)nskip + cs2)) : 0.0;
+}
+
 void fs_cycle_finish(fs_cycle *cy)
 {
     if (!cy->frame_sampling || cy->finished)
         return;
     cy->finished = true;
     uint64_t n = cy->frames_done, add = 0;
+    /* coef[s]: the weight of simulated frame s in the interpolated frames
+     * (how much of its own error each carries into the total) */
+    double *coef = calloc(n ? n : 1, sizeof *coef);
     /* Interpolated frames: linear between the simulated frames a < f < b
      * around them. */
     for (uint64_t f = 0; f < n; f++) {
@@ -640,6 +717,10 @@ void fs_cycle_finish(fs_cycle *cy)
         double ca = (double)cy->frame_cycles[a], cb = cy->frame_was_skipped[b] ? ca : (double)cy->frame_cycles[b];
         double w = b > a ? (double)(f - a) / (double)(b - a) : 0.0;
         uint64_t e = (uint64_t)llround(ca + w * (cb - ca));
+        if (coef) {
+            coef[a] += cy->frame_was_skipped[b] ? 1.0 : 1.0 - w;
+            coef[b] += cy->frame_was_skipped[b] ? 0.0 : w;
+        }
         cy->frame_cycles[f] = e;
         add += e;
     }
@@ -696,6 +777,8 @@ void fs_cycle_finish(fs_cycle *cy)
     cy->est += add;
     cy->acc.estimated_cycles += add;
     cy->frame_error = err;
+    frame_noise(cy, first, coef);
+    free(coef);
 }
 
 uint64_t fs_cycle_frame_cycles(const fs_cycle *cy, uint64_t f, bool *skipped)
@@ -708,12 +791,93 @@ uint64_t fs_cycle_frame_cycles(const fs_cycle *cy, uint64_t f, bool *skipped)
     return cy->frame_cycles[f];
 }
 
+/* Student's t, two-sided 95%, for df = 1..30 degrees of freedom; beyond,
+ * z + (z^3 + z) / (4 df) (the first term of its expansion in 1/df). */
+static double t95(int df)
+{
+    static const double t[30] = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
+                                 2.201,  2.179, 2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086,
+                                 2.080,  2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
+    return df < 1 ? FS_CYC_Z95 : df <= 30 ? t[df - 1] : FS_CYC_Z95 + 2.37 / df;
+}
+
+void fs_cycle_error_parts(const fs_cycle *cy, double part[FS_CYCLE_ERR_PARTS])
+{
+    double total = (double)fs_cyc_now_total(cy);
+    for (int i = 0; i < FS_CYCLE_ERR_PARTS; i++)
+        part[i] = 0.0;
+    if (cy->mode != FS_CYCLE_SAMPLED || !(total > 0))
+        return;
+    /* Frames: the larger of the curvature bound and the interval of their
+     * scatter (t with the residuals' degrees of freedom: with 2 residuals
+     * it is 4.3 standard errors, which is what 2 residuals can tell). */
+    part[FS_CYCLE_ERR_FRAMES] = fmax(cy->frame_error, t95(cy->frame_df) * cy->frame_sd) / total;
+    /* Tiles: hundreds of sampled tiles per frame, the normal quantile. */
+    part[FS_CYCLE_ERR_TILES] = FS_CYC_Z95 * sqrt(cy->tile_var) / total;
+    part[FS_CYCLE_ERR_DRAWS] = FS_CYC_Z95 * sqrt(cy->draw_var) / total;
+}
+
 double fs_cycle_error_estimate(const fs_cycle *cy)
 {
-    if (cy->mode != FS_CYCLE_SAMPLED)
-        return 0.0;
-    /* Interpolated frames and draws, independent of each other. */
-    double var = cy->frame_error * cy->frame_error + cy->draw_var + cy->tile_var;
-    double total = (double)fs_cyc_now_total(cy);
-    return total > 0 ? sqrt(var) / total : 0.0;
+    /* The parts are independent: their half-widths add in quadrature. */
+    double part[FS_CYCLE_ERR_PARTS], v = 0;
+    fs_cycle_error_parts(cy, part);
+    for (int i = 0; i < FS_CYCLE_ERR_PARTS; i++)
+        v += part[i] * part[i];
+    return sqrt(v);
+}
+
+/* The next pass of --max-error: the setting that samples more where the
+ * estimate is largest.  Frames: the step halved (the curvature bound
+ * falls with its square, the scatter's with more residuals and fewer
+ * skipped frames); below 2 nothing is left to skip.  Tiles inside frames:
+ * off, not denser: on textured (O2) frame_tiles 2-16 came out 3-6.5% low,
+ * denser no better (a bias of the cost pools, not noise).  Tiles of 1-2
+ * frame traces: a quarter as many tiles per sampled tile (the standard
+ * error falls by half).  Draws: one in a quarter as many.  Returns false
+ * when cfg is already full simulation. */
+bool fs_cycle_config_denser(const fs_cycle *cy, fs_cycle_config *cfg)
+{
+    double part[FS_CYCLE_ERR_PARTS];
+    fs_cycle_error_parts(cy, part);
+    long *knob[FS_CYCLE_ERR_PARTS] = {&cfg->sampling_frames, NULL, &cfg->sampling_every};
+    bool frames_on = cy->frame_sampling;
+    knob[FS_CYCLE_ERR_TILES] = frames_on ? &cfg->sampling_frame_tiles : &cfg->sampling_tiles;
+    /* the largest part whose setting can still sample more */
+    for (int tries = 0; tries < FS_CYCLE_ERR_PARTS; tries++) {
+        int best = -1;
+        for (int i = 0; i < FS_CYCLE_ERR_PARTS; i++)
+            if (knob[i] && *knob[i] > 1 && (best < 0 || part[i] > part[best]))
+                best = i;
+        if (best < 0)
+            break;
+        long *k = knob[best];
+        if (best == FS_CYCLE_ERR_FRAMES) {
+            if (!frames_on) { /* frames = 1 already means no frame sampling */
+                knob[best] = NULL;
+                continue;
+            }
+            /* the step in effect (cfg may ask for more than the trace allows) */
+            long step = (long)cy->frame_step / 2;
+            if (step >= 2) {
+                *k = step;
+                return true;
+            }
+            /* nothing left to skip: full simulation */
+            cfg->sampling_frames = cfg->sampling_tiles = cfg->sampling_frame_tiles = cfg->sampling_every = 1;
+            return true;
+        }
+        if (best == FS_CYCLE_ERR_TILES && frames_on) {
+            *k = 1;
+            return true;
+        }
+        *k = *k >= 4 ? *k / 4 : 1;
+        return true;
+    }
+    /* no part left (all 0): whatever still samples goes */
+    if (cfg->sampling_frames > 1 || cfg->sampling_tiles > 1 || cfg->sampling_frame_tiles > 1 || cfg->sampling_every > 1) {
+        cfg->sampling_frames = cfg->sampling_tiles = cfg->sampling_frame_tiles = cfg->sampling_every = 1;
+        return true;
+    }
+    return false;
 }

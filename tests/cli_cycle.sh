@@ -159,19 +159,73 @@ test_sampled_error() {
             fail "$s: floor_seconds $td not within (0, $ta), the cycle-mode replay's seconds, or load_seconds $tl not > 0"
         awk -v s="$s" -v a="$a" -v b="$b" -v ta="$ta" -v tb="$tb" 'BEGIN {
             printf "    sampled %-10s error %+.2f%%, speed-up %.1fx (report only)\n", s, 100 * (b - a) / a, (tb > 0 ? ta / tb : 0) }'
-        # textured: tile sampling inside the simulated frames is biased on
-        # this textured scene, -3.2% (sampling.frame_tiles 2-16: -3% to
-        # -6.5%, each beyond its own estimate; 1: +0.09%).  Frame 0 used to
-        # be an end of the interpolation and its +2% cancelled it by chance.
-        # Listed until the sampler's bias is fixed (issue 24): fails when
-        # textured comes within 2%.
-        if [ "$s" = textured ]; then
-            awk -v a="$a" -v b="$b" 'BEGIN { e = (b - a) / a; if (e < 0) e = -e; exit !(e > 0.02) }' ||
-                fail "textured: sampled mode is now within 2% of full cycle mode: take it off the known list"
+        # Within its own estimate (a 95% interval) and, with sampling.max_error's
+        # passes (default 2%), within 2%.
+        local est
+        est=$(echo "$samp" | sed -nE 's/.*"error_estimate": ([0-9.eE+-]+).*/\1/p')
+        # bench32 (one frame: tile and draw sampling): +1.18% against an
+        # estimate of 1.08% (tiles 1.04%, draws 0.31%), within 2% but just
+        # outside its interval; the cause (the ratio estimator's variance
+        # or a bias of the filled draws' line) is not measured yet.  Listed:
+        # fails when bench32 comes within its estimate.
+        if [ "$s" = bench32 ]; then
+            awk -v a="$a" -v b="$b" -v m="$est" 'BEGIN { e = (b - a) / a; if (e < 0) e = -e; exit !(e > m && e <= 0.02) }' ||
+                fail "bench32: sampled $b vs full $a, estimate $est: now within its estimate (take it off the known list) or beyond 2%"
             continue
         fi
-        awk -v a="$a" -v b="$b" 'BEGIN { e = (b - a) / a; if (e < 0) e = -e; exit !(e <= 0.02) }' ||
-            fail "$s: sampled $b vs full $a cycles: more than 2% apart"
+        awk -v a="$a" -v b="$b" -v m="$est" 'BEGIN { e = (b - a) / a; if (e < 0) e = -e; exit !(e <= m && m <= 0.02) }' ||
+            fail "$s: sampled $b vs full $a cycles: outside the estimate $est or the estimate above 2%"
+        # textured, one pass (--max-error 0): tile sampling inside the
+        # simulated frames is biased on this textured scene, -3.2%
+        # (sampling.frame_tiles 2-16: -3% to -6.5%; 1: +0.09%), a bias no
+        # estimate from the sample's variance shows; the passes of
+        # --max-error 2 turn frame_tiles off.  Listed until the sampler's bias
+        # is fixed (issue 24): fails when textured comes within 2% in one pass.
+        if [ "$s" = textured ]; then
+            b=$("$FRAGSIM" bench --mode sampled --max-error 0 --config "$ROOT/configs/o2.ini" "$t" |
+                sed -nE 's/.*"cycles": ([0-9]+).*/\1/p')
+            awk -v a="$a" -v b="$b" 'BEGIN { e = (b - a) / a; if (e < 0) e = -e; exit !(e > 0.02) }' ||
+                fail "textured: one pass of sampled mode is now within 2% of full cycle mode: take it off the known list"
+        fi
+    done
+}
+
+test_max_error() {
+    # sampling.max_error (--max-error P): a scene whose first pass reports
+    # more than P is replayed with denser sampling; the statistics say so,
+    # the final estimate is within P and the error within the estimate
+    # (oracle: full cycle mode).  A bound sampling cannot meet ends in full
+    # simulation, said on stderr and in the JSON, with full mode's cycles.
+    local t; t=$(scene_trace forest 21) || fail "scenegen failed"
+    local cfg="$ROOT/configs/o2.ini"
+    "$FRAGSIM" replay --mode cycle --config "$cfg" --out "$WORK/me_full" "$t" >/dev/null 2>&1 || fail "cycle mode failed"
+    for p in 0 2 0.01; do
+        "$FRAGSIM" replay --mode sampled --max-error $p --config "$cfg" --out "$WORK/me_$p" "$t" >/dev/null \
+            2>"$WORK/me_$p.err" || fail "--max-error $p failed: $(cat "$WORK/me_$p.err")"
+    done
+    /usr/bin/python3 - "$WORK" <<'PY' || fail "--max-error: the statistics do not hold"
+import json, sys
+w = sys.argv[1]
+full = json.load(open(w + '/me_full/stats.json'))['cycle']['totals']['cycles']
+one, two, tiny = (json.load(open('%s/me_%s/stats.json' % (w, p)))['cycle'] for p in ("0", "2", "0.01"))
+err = lambda c: abs(c['totals']['cycles'] - full) / full
+assert not one['max_error']['resampled'] and len(one['max_error']['passes']) == 1, one['max_error']
+assert one['error_estimate'] > 0.02, ('the first pass must be above 2%% for this test', one['error_estimate'])
+m = two['max_error']
+assert m['resampled'] and m['met'] and not m['cannot_by_sampling'] and m['bound'] == 0.02, m
+assert m['passes'][0]['error_estimate'] > 0.02 and two['error_estimate'] <= 0.02, m
+assert err(two) <= two['error_estimate'], (err(two), two['error_estimate'])
+assert err(one) <= one['error_estimate'], (err(one), one['error_estimate'])
+m = tiny['max_error']
+assert m['cannot_by_sampling'] and m['met'] and tiny['totals']['cycles'] == full, (m, tiny['totals']['cycles'], full)
+PY
+    grep -q "passes, estimates" "$WORK/me_2.err" || fail "--max-error 2: no passes line: $(cat "$WORK/me_2.err")"
+    grep -q "cannot meet --max-error 0.01% by sampling: simulated in full" "$WORK/me_0.01.err" ||
+        fail "--max-error 0.01: did not say it cannot: $(cat "$WORK/me_0.01.err")"
+    for bad in -1 101 x 2%; do
+        "$FRAGSIM" replay --mode sampled --max-error "$bad" --out "$WORK/me_bad" "$t" >/dev/null 2>"$WORK/e" &&
+            fail "--max-error $bad accepted"
+        grep -q "expected a percentage" "$WORK/e" || fail "--max-error $bad: $(cat "$WORK/e")"
     done
 }
 
@@ -222,6 +276,7 @@ run_test test_default_ini
 run_test test_config_sources
 run_test test_stats_list
 run_test test_sampled_error
+run_test test_max_error
 run_test test_bench_repetitions_start_fresh
 run_test test_short_trace_simulated_in_full
 finish
