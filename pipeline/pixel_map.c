@@ -265,30 +265,49 @@ uint8_t fs_pixel_float_to_8(float f)
     return (uint8_t)lrintf(clamp01(f) * 255.0f); /* ties to even */
 }
 
+/* Groups x0 .. x0+k-1 (k <= PIECE) as floats after the transfer. */
+enum { PIECE = 64 };
+static void unpack_transfer_piece(const fs_context *c, const fs_pixel_layout *l, const void *pixels, int64_t z,
+                                  int64_t y, int64_t x0, int64_t k, float *f)
+{
+    if (l->format == GL_COLOR_INDEX) {
+        /* Indices become RGBA through the I_TO_* maps only: scale, bias
+         * and MAP_COLOR apply to RGBA groups (3.6.5). */
+        uint32_t idx[PIECE];
+        fs_pixel_unpack_index(l, pixels, z, y, x0, k, idx);
+        fs_pixel_xfer_index_to_rgba(c, idx, k, f);
+    } else {
+        fs_pixel_unpack_rgbaf(l, pixels, z, y, x0, k, f);
+        fs_pixel_xfer_rgba(c, f, k);
+    }
+}
+
 void fs_pixel_unpack_transfer_rgba8(const fs_context *c, const fs_pixel_layout *l, const void *pixels, int64_t z,
                                     int64_t y, int64_t x0, int64_t n, uint8_t *rgba)
 {
-    bool index = l->format == GL_COLOR_INDEX;
-    if (!index && !fs_pixel_xfer_color(c)) {
+    if (l->format != GL_COLOR_INDEX && !fs_pixel_xfer_color(c)) {
         fs_pixel_unpack_rgba8(l, pixels, z, y, x0, n, rgba);
         return;
     }
     /* In pieces, so that a row of any width needs no allocation. */
-    enum { PIECE = 64 };
     for (int64_t done = 0; done < n; done += PIECE) {
         int64_t k = n - done < PIECE ? n - done : PIECE;
         float f[PIECE * 4];
-        if (index) {
-            /* Indices become RGBA through the I_TO_* maps only: scale,
-             * bias and MAP_COLOR apply to RGBA groups (3.6.5). */
-            uint32_t idx[PIECE];
-            fs_pixel_unpack_index(l, pixels, z, y, x0 + done, k, idx);
-            fs_pixel_xfer_index_to_rgba(c, idx, k, f);
-        } else {
-            fs_pixel_unpack_rgbaf(l, pixels, z, y, x0 + done, k, f);
-            fs_pixel_xfer_rgba(c, f, k);
-        }
+        unpack_transfer_piece(c, l, pixels, z, y, x0 + done, k, f);
         for (int64_t i = 0; i < k * 4; i++)
             rgba[done * 4 + i] = fs_pixel_float_to_8(f[i]);
+    }
+}
+
+void fs_pixel_unpack_transfer_conv(const fs_context *c, const fs_pixel_layout *l, const void *pixels, int64_t z,
+                                   int64_t y, int64_t x0, int64_t n, uint8_t *rgba,
+                                   void (*conv)(const void *arg, const float *f, size_t k, uint8_t *out),
+                                   const void *arg)
+{
+    for (int64_t done = 0; done < n; done += PIECE) {
+        int64_t k = n - done < PIECE ? n - done : PIECE;
+        float f[PIECE * 4];
+        unpack_transfer_piece(c, l, pixels, z, y, x0 + done, k, f);
+        conv(arg, f, (size_t)k, rgba + done * 4);
     }
 }

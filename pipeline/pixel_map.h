@@ -75,4 +75,12 @@ uint8_t fs_pixel_float_to_8(float f);
  * is fs_pixel_unpack_rgba8. */
 void fs_pixel_unpack_transfer_rgba8(const fs_context *c, const struct fs_pixel_layout *l, const void *pixels,
                                     int64_t z, int64_t y, int64_t x0, int64_t n, uint8_t *rgba);
+/* The same with the final conversion conv(arg, floats, k, out) of each
+ * piece of k groups instead of the 8-bit rounding: for the formats
+ * llvmpipe stores at other than 8 bits, which it rounds from the floats
+ * directly (units/texel_format.c). */
+void fs_pixel_unpack_transfer_conv(const fs_context *c, const struct fs_pixel_layout *l, const void *pixels,
+                                   int64_t z, int64_t y, int64_t x0, int64_t n, uint8_t *rgba,
+                                   void (*conv)(const void *arg, const float *f, size_t k, uint8_t *out),
+                                   const void *arg);
 #endif

@@ -23,4 +23,12 @@ int fs_texel_bits(GLint internalformat, GLenum base, enum fs_texel_comp k);
  * stored at 8 bits or more.  copy: the texels come from glCopyTexImage,
  * which llvmpipe converts differently for some formats. */
 void fs_texel_quantize(GLint internalformat, uint8_t *rgba, size_t n, bool copy);
+
+/* For a format llvmpipe stores at other than 8 bits in some component:
+ * true, with the bits of R, G, B, A (0: none) for fs_texel_from_float. */
+bool fs_texel_float_bits(GLint internalformat, int bits[4]);
+/* n RGBA float texels (after unpacking and transfer) rounded to the bits
+ * (an int[4] from fs_texel_float_bits) as llvmpipe rounds them at upload,
+ * kept as RGBA8 (texture_priv.h). */
+void fs_texel_from_float(const void *bits, const float *f, size_t n, uint8_t *out);
 #endif

@@ -403,12 +403,19 @@ static void unpack_image(fs_context *c, fs_tex_image *img, int dims, const int o
     fs_pixel_layout l;
     if (!fs_pixel_layout_init(&l, &ps, dims, w, h, d, format, type))
         return;
+    /* A format stored at other than 8 bits is rounded from the floats, not
+     * from 8-bit values (units/texel_format.c). */
+    int fbits[4];
+    const bool from_float = fs_texel_float_bits(img->internal_format, fbits);
     for (int z = 0; z < d; z++)
         for (int y = 0; y < h; y++) {
             uint8_t *dst = texel_addr(img, off[0], off[1] + y, off[2] + z);
             /* The pixel transfer operations of 3.6.5 (3.8.1: the image is
              * taken as by glDrawPixels up to the final conversion). */
-            fs_pixel_unpack_transfer_rgba8(c, &l, pixels, z, y, 0, w, dst);
+            if (from_float)
+                fs_pixel_unpack_transfer_conv(c, &l, pixels, z, y, 0, w, dst, fs_texel_from_float, fbits);
+            else
+                fs_pixel_unpack_transfer_rgba8(c, &l, pixels, z, y, 0, w, dst);
             if (img->base_format != GL_RGBA)
                 for (int x = 0; x < w; x++) {
                     uint8_t rgba[4];
@@ -416,7 +423,8 @@ static void unpack_image(fs_context *c, fs_tex_image *img, int dims, const int o
                     store_texel(dst + 4 * x, rgba, img->base_format);
                 }
             /* llvmpipe's precision for the format (units/texel_format.c). */
-            fs_texel_quantize(img->internal_format, dst, (size_t)w, false);
+            if (!from_float)
+                fs_texel_quantize(img->internal_format, dst, (size_t)w, false);
         }
 }
 
