@@ -47,6 +47,13 @@ static void make_depth(rng *g, GLenum type, int n, void *out)
         case GL_UNSIGNED_INT: ((uint32_t *)out)[i] = k < 2 ? (k ? 0xffffffffu : 0) : rnd(g); break;
         case GL_UNSIGNED_BYTE: ((uint8_t *)out)[i] = (uint8_t)(k < 2 ? (k ? 255 : 0) : rnd(g)); break;
         case GL_SHORT: ((int16_t *)out)[i] = (int16_t)rnd(g); break;
+        /* EXT_packed_depth_stencil: depth in the top 24 bits, a random stencil below. */
+        case GL_UNSIGNED_INT_24_8: ((uint32_t *)out)[i] = k < 2 ? (k ? 0xffffff00u : 0) | (rnd(g) & 0xff) : rnd(g); break;
+        /* ARB_depth_buffer_float: a float depth (some outside [0, 1]), a stencil word. */
+        case GL_FLOAT_32_UNSIGNED_INT_24_8_REV:
+            ((float *)out)[2 * i] = k == 2 ? -0.25f : k == 3 ? 1.5f : f;
+            ((uint32_t *)out)[2 * i + 1] = rnd(g);
+            break;
         default: ((float *)out)[i] = k == 2 ? -0.25f : k == 3 ? 1.5f : f; break;
         }
     }
@@ -61,11 +68,13 @@ static void draw_depth(fs_context *c, const void *user, int w, int h)
     G(GenTextures, 1, &tex);
     G(BindTexture, GL_TEXTURE_2D, tex);
     G(PixelStorei, GL_UNPACK_ALIGNMENT, 1);
-    static uint32_t data[TS * TS];
+    static uint32_t data[2 * TS * TS];
+    bool ds = dc->type == GL_UNSIGNED_INT_24_8 || dc->type == GL_FLOAT_32_UNSIGNED_INT_24_8_REV;
     bool mip = dc->min_filter != GL_NEAREST && dc->min_filter != GL_LINEAR;
     for (int l = 0, s = TS; s >= 1 && (l == 0 || mip); l++, s /= 2) {
         make_depth(&g, dc->type, s * s, data);
-        G(TexImage2D, GL_TEXTURE_2D, l, dc->internal, s, s, 0, GL_DEPTH_COMPONENT, dc->type, data);
+        G(TexImage2D, GL_TEXTURE_2D, l, dc->internal, s, s, 0, ds ? GL_DEPTH_STENCIL : GL_DEPTH_COMPONENT, dc->type,
+          data);
     }
     G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)dc->min_filter);
     G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, (GLint)dc->mag_filter);
@@ -129,6 +138,15 @@ static const struct { GLint internal; GLenum type; } formats[] = {
     {GL_DEPTH_COMPONENT32, GL_UNSIGNED_SHORT}, {GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT},
     {GL_DEPTH_COMPONENT, GL_UNSIGNED_INT}, {GL_DEPTH_COMPONENT, GL_FLOAT}, {GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE},
     {GL_DEPTH_COMPONENT24, GL_SHORT}, {GL_DEPTH_COMPONENT32F, GL_FLOAT}, {GL_DEPTH_COMPONENT32F, GL_UNSIGNED_SHORT},
+    /* GL_DEPTH_STENCIL data (EXT_packed_depth_stencil, ARB_depth_buffer_float)
+     * into the depth-stencil formats and into depth ones; DEPTH_COMPONENT
+     * data into a depth-stencil format. */
+    {GL_DEPTH24_STENCIL8, GL_UNSIGNED_INT_24_8}, {GL_DEPTH24_STENCIL8, GL_FLOAT_32_UNSIGNED_INT_24_8_REV},
+    {GL_DEPTH32F_STENCIL8, GL_FLOAT_32_UNSIGNED_INT_24_8_REV}, {GL_DEPTH32F_STENCIL8, GL_UNSIGNED_INT_24_8},
+    {GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8}, {GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV},
+    {GL_DEPTH_COMPONENT16, GL_UNSIGNED_INT_24_8}, {GL_DEPTH_COMPONENT32, GL_UNSIGNED_INT_24_8},
+    {GL_DEPTH_COMPONENT32F, GL_FLOAT_32_UNSIGNED_INT_24_8_REV}, {GL_DEPTH_COMPONENT24, GL_FLOAT_32_UNSIGNED_INT_24_8_REV},
+    {GL_DEPTH24_STENCIL8, GL_FLOAT}, {GL_DEPTH32F_STENCIL8, GL_UNSIGNED_SHORT},
 };
 #define NFORMATS (int)(sizeof formats / sizeof formats[0])
 
@@ -499,11 +517,14 @@ TEST(state_sizes_errors_vs_osmesa)
 static void depth_readback(fs_context *c, double *out, int *n)
 {
     rng g = {77};
-    static uint32_t data[64];
+    static uint32_t data[128];
     static float back[64];
     for (int f = 0; f < NFORMATS; f++) {
-        make_depth(&g, formats[f].type, 64, data);
-        G(TexImage2D, GL_TEXTURE_2D, 0, formats[f].internal, 8, 8, 0, GL_DEPTH_COMPONENT, formats[f].type, data);
+        GLenum type = formats[f].type;
+        bool ds = type == GL_UNSIGNED_INT_24_8 || type == GL_FLOAT_32_UNSIGNED_INT_24_8_REV;
+        make_depth(&g, type, 64, data);
+        G(TexImage2D, GL_TEXTURE_2D, 0, formats[f].internal, 8, 8, 0, ds ? GL_DEPTH_STENCIL : GL_DEPTH_COMPONENT, type,
+          data);
         G(GetTexImage, GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, back);
         for (int i = 0; i < 64; i++)
             out[(*n)++] = back[i];

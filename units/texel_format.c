@@ -53,6 +53,13 @@ static int wide_bits(GLint f)
     case GL_LUMINANCE12_ALPHA4: case GL_LUMINANCE12_ALPHA12: case GL_LUMINANCE16_ALPHA16: case GL_R16:
     case GL_RG16:
         return 16;
+    /* ARB_texture_float's sizes (GL_TEXTURE_*_SIZE; the model keeps 8 bits). */
+    case GL_ALPHA16F_ARB: case GL_LUMINANCE16F_ARB: case GL_LUMINANCE_ALPHA16F_ARB: case GL_INTENSITY16F_ARB:
+    case GL_R16F: case GL_RG16F: case GL_RGB16F: case GL_RGBA16F:
+        return 16;
+    case GL_ALPHA32F_ARB: case GL_LUMINANCE32F_ARB: case GL_LUMINANCE_ALPHA32F_ARB: case GL_INTENSITY32F_ARB:
+    case GL_R32F: case GL_RG32F: case GL_RGB32F: case GL_RGBA32F:
+        return 32;
     default: return 8;
     }
 }

@@ -156,19 +156,19 @@ static uint32_t client_to_storage(const fs_context *c, uint32_t raw, GLenum type
 }
 
 /* One DEPTH_STENCIL group's depth (fs_pixel_unpack_depth_stencil) to
- * the storage of a bits-wide image.  24 bits into 24 bits is copied; a
- * 24-bit depth becomes the float d * (1 / (2^24 - 1)) in double, a float
- * depth is clamped to [0, 1] (NaN to 0) unless the storage is a float;
- * the float is then stored as an upload stores it (float_to_storage). */
+ * the storage of a bits-wide image (measured through glGetTexImage on
+ * OSMesa, tests/test_texture_depth.c): 24 bits into 24 bits is copied; a
+ * 24-bit depth becomes the float product d * (float)(1 / (2^24 - 1))
+ * (the double product is 1 ulp low for some), a float depth is clamped to
+ * [0, 1] (NaN to 0), for the float formats too; the float is then stored
+ * as an upload stores it (float_to_storage). */
 static uint32_t ds_to_storage(uint32_t d, GLenum type, int bits, bool is_float)
 {
     if (type == GL_UNSIGNED_INT_24_8 && bits == 24 && !is_float)
         return d;
-    float f = type == GL_UNSIGNED_INT_24_8 ? (float)((double)d * (1.0 / 16777215.0)) : bits_to_float(d);
-    if (is_float)
-        return float_bits(f);
+    float f = type == GL_UNSIGNED_INT_24_8 ? (float)d * (float)(1.0 / 16777215.0) : bits_to_float(d);
     f = !(f > 0.0f) ? 0.0f : f > 1.0f ? 1.0f : f;
-    return float_to_storage(f, bits);
+    return is_float ? float_bits(f) : float_to_storage(f, bits);
 }
 
 void fs_tex_depth_unpack(fs_context *c, fs_tex_image *img, int dims, const int off[3], int w, int h, int d,

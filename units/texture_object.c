@@ -363,6 +363,17 @@ static GLenum base_format(GLint f)
         return GL_RED;
     case GL_RG: case GL_RG8: case GL_RG16:
         return GL_RG;
+    /* ARB_texture_float (and ARB_texture_rg's float formats), which
+     * llvmpipe accepts in a compatibility context (measured); the model
+     * keeps their texels at 8 bits (float_format). */
+    case GL_ALPHA16F_ARB: case GL_ALPHA32F_ARB: return GL_ALPHA;
+    case GL_LUMINANCE16F_ARB: case GL_LUMINANCE32F_ARB: return GL_LUMINANCE;
+    case GL_LUMINANCE_ALPHA16F_ARB: case GL_LUMINANCE_ALPHA32F_ARB: return GL_LUMINANCE_ALPHA;
+    case GL_INTENSITY16F_ARB: case GL_INTENSITY32F_ARB: return GL_INTENSITY;
+    case GL_R16F: case GL_R32F: return GL_RED;
+    case GL_RG16F: case GL_RG32F: return GL_RG;
+    case GL_RGB16F: case GL_RGB32F: return GL_RGB;
+    case GL_RGBA16F: case GL_RGBA32F: return GL_RGBA;
     /* GL 1.4 depth textures (units/texture_depth.c). */
     case GL_DEPTH_COMPONENT: case GL_DEPTH_COMPONENT16: case GL_DEPTH_COMPONENT24: case GL_DEPTH_COMPONENT32:
     case GL_DEPTH_COMPONENT32F:
@@ -372,6 +383,28 @@ static GLenum base_format(GLint f)
         return GL_DEPTH_COMPONENT;
     default:
         return 0;
+    }
+}
+
+/* Whether an internal format is a float one (ARB_texture_float,
+ * ARB_texture_rg): llvmpipe keeps floats, unclamped, and samples them in
+ * its float path; the model keeps 8 bits.  A copy from the 8-bit colour
+ * buffer keeps every value (a half float holds v / 255 to better than half
+ * a step of 1/255; the float snapshots of gl12-copyteximage_3d are exact),
+ * but data outside [0, 1] or between the 8-bit steps does not: a
+ * glTexImage or glTexSubImage with data into one is counted as
+ * unsupported.  (Filtering copied texels in llvmpipe's float path is not
+ * compared yet.) */
+static bool float_format(GLint f)
+{
+    switch (f) {
+    case GL_ALPHA16F_ARB: case GL_ALPHA32F_ARB: case GL_LUMINANCE16F_ARB: case GL_LUMINANCE32F_ARB:
+    case GL_LUMINANCE_ALPHA16F_ARB: case GL_LUMINANCE_ALPHA32F_ARB: case GL_INTENSITY16F_ARB:
+    case GL_INTENSITY32F_ARB: case GL_R16F: case GL_R32F: case GL_RG16F: case GL_RG32F: case GL_RGB16F:
+    case GL_RGB32F: case GL_RGBA16F: case GL_RGBA32F:
+        return true;
+    default:
+        return false;
     }
 }
 
@@ -640,6 +673,8 @@ void fs_tex_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLint 
         img->depth_bits = fs_tex_depth_bits(internalformat, type);
     if (img && keeps_wide_texels(internalformat, format, type))
         fs_unsupported(c, "16/10-bit texels, unsized internal format (stored at 8 bits)");
+    if (img && pixels && float_format(internalformat))
+        fs_unsupported(c, "glTexImage data into a float internal format (stored at 8 bits)");
     if (img && img->texels && pixels)
         unpack_inner(c, img, dims, border, size, format, type, pixels);
     if (img)
@@ -699,6 +734,8 @@ void fs_tex_subimage_nd(fs_context *c, int dims, GLenum target, GLint level, con
     }
     if (fs_tex_compressed_block_bytes(img->internal_format, NULL)) /* llvmpipe compresses into the blocks */
         fs_unsupported(c, "glTexSubImage into a compressed level (units/texture_compressed.c)");
+    if (pixels && float_format(img->internal_format))
+        fs_unsupported(c, "glTexImage data into a float internal format (stored at 8 bits)");
     if (w > 0 && h > 0 && d > 0 && pixels)
         unpack_image(c, img, dims, off, w, h, d, format, type, pixels);
     fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], level);
