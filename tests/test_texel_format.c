@@ -1,7 +1,7 @@
 /*
  * Texel formats (units/texel_format.c) against OSMesa (llvmpipe): for
  * each sized internal format below and above 8 bits per component, the
- * ARB_texture_rg formats and a few unsized ones, a 256-texel ramp is
+ * ARB_texture_rg formats, ARB_texture_float's and a few unsized ones, a 256-texel ramp is
  * uploaded, the level's component sizes are read with
  * glGetTexLevelParameteriv, the texels with glGetTexImage, and the texture
  * is drawn (NEAREST, REPLACE) and read back; then a second ramp drawn
@@ -24,6 +24,10 @@ static const GLint formats[] = {
     GL_RGBA16, GL_RGB10_A2, GL_LUMINANCE12, GL_LUMINANCE16, GL_ALPHA12, GL_ALPHA16, GL_INTENSITY12,
     GL_INTENSITY16, GL_LUMINANCE12_ALPHA4, GL_LUMINANCE12_ALPHA12, GL_LUMINANCE16_ALPHA16, GL_RED, GL_RG,
     GL_R8, GL_RG8, GL_R16, GL_RG16, GL_RGBA8, GL_RGB, GL_LUMINANCE_ALPHA, GL_INTENSITY,
+    /* ARB_texture_float (kept at 8 bits: 8-bit ramps and copies are exact) */
+    GL_RGBA16F, GL_RGB16F, GL_RGBA32F, GL_RGB32F, GL_ALPHA16F_ARB, GL_ALPHA32F_ARB, GL_LUMINANCE16F_ARB,
+    GL_LUMINANCE32F_ARB, GL_LUMINANCE_ALPHA16F_ARB, GL_LUMINANCE_ALPHA32F_ARB, GL_INTENSITY16F_ARB,
+    GL_INTENSITY32F_ARB, GL_R16F, GL_R32F, GL_RG16F, GL_RG32F,
 };
 #define NFORMATS ((int)(sizeof formats / sizeof formats[0]))
 

@@ -546,7 +546,106 @@ TEST(upload_readback_vs_osmesa)
     OSM_CHECK_VALUES(depth_readback, 8, 8, 64 * (NFORMATS + 1));
 }
 
+/* EXT_packed_depth_stencil outside textures: glReadPixels(GL_DEPTH_STENCIL)
+ * of a depth and stencil buffer drawn by tilted quads, in both packed
+ * types, and the errors of the DEPTH_STENCIL format and its types in
+ * every pixel command (measured on OSMesa; values compared exactly). */
+static void depth_stencil_pixels(fs_context *c, double *out, int *n)
+{
+#define ERR() (out[(*n)++] = (double)(c ? fsglGetError(c) : glGetError()))
+    static uint32_t data[2 * 16 * 16], back[2 * 16 * 16];
+    osm_frustum_scene(c, 16, 16, 0.1f, 0.2f, 0.3f, 10);
+    G(ClearStencil, 3);
+    G(Clear, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    G(Enable, GL_DEPTH_TEST);
+    G(Enable, GL_STENCIL_TEST);
+    G(StencilOp, GL_KEEP, GL_KEEP, GL_REPLACE);
+    G(Translatef, 0, 0, -2.0f);
+    for (int k = 0; k < 2; k++) {
+        G(StencilFunc, GL_ALWAYS, 17 + 100 * k, 0xff);
+        G0(PushMatrix);
+        G(Rotatef, k ? 50.0f : -40.0f, 1, 0.3f, 0);
+        G(Begin, GL_QUADS);
+        G(Vertex2f, -1, -1);
+        G(Vertex2f, 1, -1);
+        G(Vertex2f, 1, 1);
+        G(Vertex2f, -1, 1);
+        G0(End);
+        G0(PopMatrix);
+    }
+    static const GLenum types[] = {GL_UNSIGNED_INT_24_8, GL_FLOAT_32_UNSIGNED_INT_24_8_REV};
+    for (int t = 0; t < 2; t++) {
+        memset(back, 0xee, sizeof back);
+        G(ReadPixels, 0, 0, 16, 16, GL_DEPTH_STENCIL, types[t], back);
+        ERR();
+        for (int i = 0; i < (t ? 512 : 256); i++)
+            out[(*n)++] = back[i];
+    }
+    G(ReadPixels, 0, 0, 4, 4, GL_DEPTH_STENCIL, GL_UNSIGNED_INT, back);
+    ERR();
+    G(ReadPixels, 0, 0, 4, 4, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT_24_8, back);
+    ERR();
+    G(ReadPixels, 0, 0, 4, 4, GL_RGBA, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, back);
+    ERR();
+    G(DrawPixels, 4, 4, GL_DEPTH_STENCIL, GL_FLOAT, data);
+    ERR();
+    G(DrawPixels, 4, 4, GL_DEPTH_STENCIL, GL_BITMAP, data);
+    ERR();
+    G(CopyPixels, 0, 0, 4, 4, GL_DEPTH_STENCIL);
+    ERR();
+    G(Disable, GL_DEPTH_TEST);
+    G(Disable, GL_STENCIL_TEST);
+    /* Texture commands. */
+    GLuint tex;
+    G(GenTextures, 1, &tex);
+    G(BindTexture, GL_TEXTURE_2D, tex);
+    static const GLenum bad_types[] = {GL_UNSIGNED_INT, GL_BYTE, GL_BITMAP, GL_UNSIGNED_SHORT_5_6_5, GL_FLOAT};
+    for (int i = 0; i < 5; i++) {
+        G(TexImage2D, GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 4, 4, 0, GL_DEPTH_STENCIL, bad_types[i], data);
+        ERR();
+    }
+    G(TexImage2D, GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, data);
+    ERR();
+    G(TexImage2D, GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_INT_24_8, data);
+    ERR();
+    G(TexImage2D, GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, data);
+    ERR();
+    G(TexImage2D, GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, 4, 4, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT_24_8, data);
+    ERR();
+    G(TexImage3D, GL_TEXTURE_3D, 0, GL_DEPTH24_STENCIL8, 4, 4, 1, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, data);
+    ERR();
+    static const GLint ds_formats[] = {GL_DEPTH_STENCIL, GL_DEPTH24_STENCIL8, GL_DEPTH32F_STENCIL8};
+    for (int f = 0; f < 3; f++)
+        for (int t = 0; t < 2; t++) {
+            G(TexImage2D, GL_TEXTURE_2D, 0, ds_formats[f], 4, 4, 0, GL_DEPTH_STENCIL, types[t], data);
+            ERR();
+            GLint iv = -5;
+            G(GetTexLevelParameteriv, GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, &iv);
+            out[(*n)++] = iv;
+            G(GetTexLevelParameteriv, GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &iv);
+            out[(*n)++] = iv;
+        }
+    G(TexSubImage2D, GL_TEXTURE_2D, 0, 0, 0, 2, 2, GL_DEPTH_STENCIL, GL_UNSIGNED_INT, data);
+    ERR();
+    G(TexSubImage2D, GL_TEXTURE_2D, 0, 0, 0, 2, 2, GL_DEPTH_COMPONENT, GL_FLOAT, data);
+    ERR();
+    G(CopyTexImage2D, GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 0, 0, 4, 4, 0);
+    ERR();
+    G(GetTexImage, GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, back);
+    ERR();
+    for (int i = 0; i < 16; i++)
+        out[(*n)++] = ((float *)back)[i];
+    G(DeleteTextures, 1, &tex);
+#undef ERR
+}
+
+TEST(depth_stencil_pixels_vs_osmesa)
+{
+    OSM_CHECK_VALUES(depth_stencil_pixels, 16, 16, 1024);
+}
+
 TEST_LIST = {
+    TEST_ENTRY(depth_stencil_pixels_vs_osmesa),
     TEST_ENTRY(nearest_every_format_func_mode),
     TEST_ENTRY(linear_every_format_func_mode),
     TEST_ENTRY(equal_reference_ties),
