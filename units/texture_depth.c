@@ -10,6 +10,10 @@
  *   measured; its reference not clamped); unsized DEPTH_COMPONENT at the
  *   size that matches the client type (measured: UNSIGNED_SHORT 16,
  *   UNSIGNED_INT 32, others 24).
+ * - EXT_packed_depth_stencil's DEPTH_STENCIL and DEPTH24_STENCIL8 are
+ *   stored at 24 bits, ARB_depth_buffer_float's DEPTH32F_STENCIL8 as a
+ *   float; the stencil is not kept (GL 1.x samples the depth only).
+ *   GL_DEPTH_STENCIL client data converts by ds_to_storage.
  * - Upload: a client type equal to the storage (UNSIGNED_SHORT into 16
  *   bits, UNSIGNED_INT into 32) is copied; UNSIGNED_INT into 16 bits keeps
  *   the top 16, UNSIGNED_SHORT into 32 repeats its 16 bits; everything else
