@@ -261,8 +261,9 @@ static GLenum drawpixels_error(const fs_context *c, GLsizei width, GLsizei heigh
     GLenum err = fs_pixel_check(format, type);
     if (err != GL_NO_ERROR)
         return err;
-    if ((format == GL_STENCIL_INDEX && c->fb.stencil_bits == 0) ||
-        (format == GL_DEPTH_COMPONENT && c->fb.depth_bits == 0))
+    bool ds = format == GL_DEPTH_STENCIL; /* EXT_packed_depth_stencil: both buffers */
+    if (((format == GL_STENCIL_INDEX || ds) && c->fb.stencil_bits == 0) ||
+        ((format == GL_DEPTH_COMPONENT || ds) && c->fb.depth_bits == 0))
         return GL_INVALID_OPERATION;
     return GL_NO_ERROR;
 }
@@ -304,6 +305,10 @@ void fs_exec_DrawPixels(fs_context *c, GLsizei width, GLsizei height, GLenum for
     int kind = fs_pixel_format_kind(format);
     if (kind == FS_PIXEL_COLOR_INDEX) {
         fs_unsupported(c, "glDrawPixels(GL_COLOR_INDEX)");
+        return;
+    }
+    if (kind == FS_PIXEL_DEPTH_STENCIL) { /* accepted by llvmpipe (measured), not modelled */
+        fs_unsupported(c, "glDrawPixels(GL_DEPTH_STENCIL)");
         return;
     }
     image_src m;
@@ -356,7 +361,10 @@ void fs_exec_CopyPixels(fs_context *c, GLint x, GLint y, GLsizei width, GLsizei 
     fs_modelview_analyse(c);
     int kind = type == GL_COLOR ? FS_PIXEL_COLOR : type == GL_DEPTH ? FS_PIXEL_DEPTH
              : type == GL_STENCIL ? FS_PIXEL_STENCIL : 0;
-    if (!kind) {
+    /* EXT_packed_depth_stencil's DEPTH_STENCIL and NV_copy_depth_to_color's
+     * types, which llvmpipe accepts (measured), are not modelled. */
+    bool ds = type == GL_DEPTH_STENCIL || type == GL_DEPTH_STENCIL_TO_RGBA_NV || type == GL_DEPTH_STENCIL_TO_BGRA_NV;
+    if (!kind && !ds) {
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
@@ -364,8 +372,13 @@ void fs_exec_CopyPixels(fs_context *c, GLint x, GLint y, GLsizei width, GLsizei 
         fs_error(c, GL_INVALID_VALUE);
         return;
     }
-    if ((kind == FS_PIXEL_DEPTH && c->fb.depth_bits == 0) || (kind == FS_PIXEL_STENCIL && c->fb.stencil_bits == 0)) {
+    if ((kind == FS_PIXEL_DEPTH && c->fb.depth_bits == 0) || (kind == FS_PIXEL_STENCIL && c->fb.stencil_bits == 0) ||
+        (ds && (c->fb.depth_bits == 0 || c->fb.stencil_bits == 0))) {
         fs_error(c, GL_INVALID_OPERATION);
+        return;
+    }
+    if (ds) {
+        fs_unsupported(c, "glCopyPixels(GL_DEPTH_STENCIL)");
         return;
     }
     if (!c->rpos.valid || width == 0 || height == 0)

@@ -60,6 +60,7 @@ int fs_pixel_format_kind(GLenum format)
     case GL_COLOR_INDEX: return FS_PIXEL_COLOR_INDEX;
     case GL_STENCIL_INDEX: return FS_PIXEL_STENCIL;
     case GL_DEPTH_COMPONENT: return FS_PIXEL_DEPTH;
+    case GL_DEPTH_STENCIL: return FS_PIXEL_DEPTH_STENCIL;
     case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE: case GL_LUMINANCE_ALPHA:
     case GL_RGB: case GL_BGR: case GL_RGBA: case GL_BGRA:
         return FS_PIXEL_COLOR;
@@ -73,7 +74,7 @@ int fs_pixel_components(GLenum format)
     case GL_COLOR_INDEX: case GL_STENCIL_INDEX: case GL_DEPTH_COMPONENT:
     case GL_RED: case GL_GREEN: case GL_BLUE: case GL_ALPHA: case GL_LUMINANCE:
         return 1;
-    case GL_LUMINANCE_ALPHA: return 2;
+    case GL_LUMINANCE_ALPHA: case GL_DEPTH_STENCIL: return 2;
     case GL_RGB: case GL_BGR: return 3;
     case GL_RGBA: case GL_BGRA: return 4;
     default: return 0;
@@ -100,6 +101,11 @@ static packed_type packed_of(GLenum type)
     case GL_UNSIGNED_INT_8_8_8_8_REV: return (packed_type){4, 4, {8, 8, 8, 8}, true};
     case GL_UNSIGNED_INT_10_10_10_2: return (packed_type){4, 4, {10, 10, 10, 2}, false};
     case GL_UNSIGNED_INT_2_10_10_10_REV: return (packed_type){4, 4, {10, 10, 10, 2}, true};
+    /* EXT_packed_depth_stencil and ARB_depth_buffer_float (GL_DEPTH_STENCIL
+     * only): depth in the top 24 bits, stencil in the low 8; or a float
+     * depth word followed by a word with stencil in its low 8 bits. */
+    case GL_UNSIGNED_INT_24_8: return (packed_type){4, 2, {24, 8, 0, 0}, false};
+    case GL_FLOAT_32_UNSIGNED_INT_24_8_REV: return (packed_type){8, 2, {32, 8, 0, 0}, true};
     default: return (packed_type){0, 0, {0, 0, 0, 0}, false};
     }
 }
@@ -120,10 +126,16 @@ GLenum fs_pixel_check(GLenum format, GLenum type)
     packed_type p = packed_of(type);
     if (fs_pixel_format_kind(format) == 0 || (p.bytes == 0 && elem_bytes(type) == 0 && type != GL_BITMAP))
         return GL_INVALID_ENUM;
+    /* GL_DEPTH_STENCIL takes its two packed types only; any other type is
+     * INVALID_ENUM (measured on OSMesa: UNSIGNED_INT, BYTE, BITMAP, 5_6_5),
+     * and those types with another format INVALID_OPERATION. */
+    if (format == GL_DEPTH_STENCIL && p.n != 2)
+        return GL_INVALID_ENUM;
     if (type == GL_BITMAP)
         return format == GL_COLOR_INDEX || format == GL_STENCIL_INDEX ? GL_NO_ERROR : GL_INVALID_ENUM;
     if (p.bytes) {
-        bool ok = p.n == 3 ? format == GL_RGB : format == GL_RGBA || format == GL_BGRA;
+        bool ok = p.n == 2 ? format == GL_DEPTH_STENCIL
+                : p.n == 3 ? format == GL_RGB : format == GL_RGBA || format == GL_BGRA;
         return ok ? GL_NO_ERROR : GL_INVALID_OPERATION;
     }
     return GL_NO_ERROR;
@@ -165,7 +177,8 @@ bool fs_pixel_layout_init(fs_pixel_layout *l, const fs_pixel_store *ps, int dims
          * count bits (3.6.4, "Unpacking of bitmaps"). */
         l->row_stride = ((len + 7) / 8 + a - 1) / a * a;
     } else {
-        l->elem_bytes = p.bytes ? p.bytes : elem_bytes(type);
+        /* FLOAT_32_UNSIGNED_INT_24_8_REV is two 4-byte words (swapped as such). */
+        l->elem_bytes = p.bytes ? (p.bytes > 4 ? 4 : p.bytes) : elem_bytes(type);
         l->group_bytes = p.bytes ? p.bytes : (int64_t)l->comps * l->elem_bytes;
         /* Swapping applies to elements of more than one byte (3.6.4 table 3.7). */
         l->swap_bytes = ps->swap_bytes && l->elem_bytes > 1;
@@ -557,6 +570,22 @@ void fs_pixel_unpack_depth(const fs_pixel_layout *l, const void *pixels, int64_t
     }
 }
 
+void fs_pixel_unpack_depth_stencil(const fs_pixel_layout *l, const void *pixels, int64_t z, int64_t y, int64_t x0,
+                                   int64_t n, uint32_t *depth, uint8_t *stencil)
+{
+    if (l->format != GL_DEPTH_STENCIL || n <= 0)
+        return;
+    const uint8_t *src = group_at(l, pixels, z, y, x0);
+    bool f32 = l->type == GL_FLOAT_32_UNSIGNED_INT_24_8_REV;
+    for (int64_t i = 0; i < n; i++, src += l->group_bytes) {
+        uint32_t w0 = fs_pixel_load_elem(src, 4, l->swap_bytes);
+        uint32_t s = f32 ? fs_pixel_load_elem(src + 4, 4, l->swap_bytes) : w0;
+        depth[i] = f32 ? w0 : w0 >> 8;
+        if (stencil)
+            stencil[i] = (uint8_t)s;
+    }
+}
+
 /* ---- packing ---- */
 
 static uint8_t *group_out(const fs_pixel_layout *l, void *pixels, int64_t y, int64_t x)
@@ -693,5 +722,31 @@ void fs_pixel_pack_stencil(const fs_pixel_layout *l, void *pixels, int64_t y, in
             memcpy(&v, &f, 4);
         }
         fs_pixel_store_elem(out, l->elem_bytes, l->swap_bytes, v);
+    }
+}
+
+void fs_pixel_pack_depth_stencil(const fs_pixel_layout *l, void *pixels, int64_t y, int64_t x0, int64_t n,
+                                 const uint32_t *depth, int bits, const uint8_t *stencil)
+{
+    if (l->format != GL_DEPTH_STENCIL || n <= 0)
+        return;
+    uint8_t *out = group_out(l, pixels, y, x0);
+    bool f32 = l->type == GL_FLOAT_32_UNSIGNED_INT_24_8_REV;
+    double dmax = (double)max_of(bits);
+    for (int64_t i = 0; i < n; i++, out += l->group_bytes) {
+        if (f32) {
+            /* The depth as glReadPixels(GL_FLOAT) gives it; the second
+             * word is the stencil index, its top 24 bits 0 (measured). */
+            float f = (float)((double)depth[i] / dmax);
+            uint32_t v;
+            memcpy(&v, &f, 4);
+            fs_pixel_store_elem(out, 4, l->swap_bytes, v);
+            fs_pixel_store_elem(out + 4, 4, l->swap_bytes, stencil[i]);
+            continue;
+        }
+        /* A 24-bit buffer's depth as it is; another width scaled to 24
+         * bits by its top bits (depth_to_uint). */
+        uint32_t d24 = bits == 24 ? depth[i] : depth_to_uint(depth[i], bits) >> 8;
+        fs_pixel_store_elem(out, 4, l->swap_bytes, d24 << 8 | stencil[i]);
     }
 }

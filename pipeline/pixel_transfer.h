@@ -47,7 +47,8 @@ fs_pixel_store fs_pixel_store_pack(const fs_context *c);
 void fs_pixel_store_set_unpack(fs_context *c, const fs_pixel_store *ps);
 
 /* What a format holds (table 3.6); 0 when the enum is not a format. */
-enum { FS_PIXEL_COLOR = 1, FS_PIXEL_COLOR_INDEX = 2, FS_PIXEL_STENCIL = 4, FS_PIXEL_DEPTH = 8 };
+enum { FS_PIXEL_COLOR = 1, FS_PIXEL_COLOR_INDEX = 2, FS_PIXEL_STENCIL = 4, FS_PIXEL_DEPTH = 8,
+       FS_PIXEL_DEPTH_STENCIL = 16 /* EXT_packed_depth_stencil's GL_DEPTH_STENCIL */ };
 int fs_pixel_format_kind(GLenum format);
 /* Elements per group of a format (table 3.6), 0 if not a format. */
 int fs_pixel_components(GLenum format);
@@ -118,6 +119,15 @@ void fs_pixel_unpack_index(const fs_pixel_layout *l, const void *pixels, int64_t
 void fs_pixel_unpack_depth(const fs_pixel_layout *l, const void *pixels, int64_t z, int64_t y, int64_t x0,
                            int64_t n, float *depth);
 
+/* Groups of a DEPTH_STENCIL image (EXT_packed_depth_stencil,
+ * ARB_depth_buffer_float): depth[i] the 24-bit depth of an
+ * UNSIGNED_INT_24_8 group, or the bits of the float depth of a
+ * FLOAT_32_UNSIGNED_INT_24_8_REV one (unconverted: how it is stored
+ * depends on the destination); stencil[i] (if stencil is not NULL) the
+ * stencil index, the low 8 bits. */
+void fs_pixel_unpack_depth_stencil(const fs_pixel_layout *l, const void *pixels, int64_t z, int64_t y, int64_t x0,
+                                   int64_t n, uint32_t *depth, uint8_t *stencil);
+
 /* ---- packing (4.3.2, 6.1.4) ----
  * RGBA8 values to groups x0 .. x0+n-1 of row y of a colour format.
  * FS_PACK_LUMINANCE_SUM: luminance is R + G + B clamped (glReadPixels,
@@ -143,4 +153,10 @@ void fs_pixel_pack_depth(const fs_pixel_layout *l, void *pixels, int64_t y, int6
                          const uint32_t *depth, int bits);
 void fs_pixel_pack_stencil(const fs_pixel_layout *l, void *pixels, int64_t y, int64_t x0, int64_t n,
                            const uint8_t *stencil);
+/* Depth values of `bits` bits (buffer units) and stencil indices to a
+ * DEPTH_STENCIL image (glReadPixels): UNSIGNED_INT_24_8 as depth << 8 |
+ * stencil, FLOAT_32_UNSIGNED_INT_24_8_REV as the float depth and a word
+ * holding the stencil index. */
+void fs_pixel_pack_depth_stencil(const fs_pixel_layout *l, void *pixels, int64_t y, int64_t x0, int64_t n,
+                                 const uint32_t *depth, int bits, const uint8_t *stencil);
 #endif

@@ -34,13 +34,15 @@ void fs_exec_ReadPixels(fs_context *c, GLint x, GLint y, GLsizei width, GLsizei 
     }
     /* Colour index reads need a colour-index framebuffer, stencil reads a
      * stencil buffer (4.3.2). */
-    if (format == GL_COLOR_INDEX || (format == GL_STENCIL_INDEX && c->fb.stencil_bits == 0)) {
+    bool ds = format == GL_DEPTH_STENCIL; /* EXT_packed_depth_stencil: both buffers */
+    if (format == GL_COLOR_INDEX || ((format == GL_STENCIL_INDEX || ds) && c->fb.stencil_bits == 0) ||
+        (ds && c->fb.depth_bits == 0)) {
         fs_error(c, GL_INVALID_OPERATION);
         return;
     }
     /* glReadBuffer(GL_NONE) leaves no colour buffer to read (as Mesa
      * answers; pipeline/buffer_select.c). */
-    if (c->read_buffer == GL_NONE && format != GL_DEPTH_COMPONENT && format != GL_STENCIL_INDEX) {
+    if (c->read_buffer == GL_NONE && format != GL_DEPTH_COMPONENT && format != GL_STENCIL_INDEX && !ds) {
         fs_error(c, GL_INVALID_OPERATION);
         return;
     }
@@ -67,6 +69,8 @@ void fs_exec_ReadPixels(fs_context *c, GLint x, GLint y, GLsizei width, GLsizei 
         int64_t row = wy - y, col = cx0 - x, n = cx1 - cx0;
         if (format == GL_STENCIL_INDEX)
             fs_pixel_pack_stencil(&l, pixels, row, col, n, fb->stencil + i);
+        else if (ds)
+            fs_pixel_pack_depth_stencil(&l, pixels, row, col, n, fb->depth + i, fb->depth_bits, fb->stencil + i);
         else if (format == GL_DEPTH_COMPONENT)
             fs_pixel_pack_depth(&l, pixels, row, col, n, fb->depth + i, fb->depth_bits);
         else

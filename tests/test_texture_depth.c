@@ -47,6 +47,13 @@ static void make_depth(rng *g, GLenum type, int n, void *out)
         case GL_UNSIGNED_INT: ((uint32_t *)out)[i] = k < 2 ? (k ? 0xffffffffu : 0) : rnd(g); break;
         case GL_UNSIGNED_BYTE: ((uint8_t *)out)[i] = (uint8_t)(k < 2 ? (k ? 255 : 0) : rnd(g)); break;
         case GL_SHORT: ((int16_t *)out)[i] = (int16_t)rnd(g); break;
+        /* EXT_packed_depth_stencil: depth in the top 24 bits, a random stencil below. */
+        case GL_UNSIGNED_INT_24_8: ((uint32_t *)out)[i] = k < 2 ? (k ? 0xffffff00u : 0) | (rnd(g) & 0xff) : rnd(g); break;
+        /* ARB_depth_buffer_float: a float depth (some outside [0, 1]), a stencil word. */
+        case GL_FLOAT_32_UNSIGNED_INT_24_8_REV:
+            ((float *)out)[2 * i] = k == 2 ? -0.25f : k == 3 ? 1.5f : f;
+            ((uint32_t *)out)[2 * i + 1] = rnd(g);
+            break;
         default: ((float *)out)[i] = k == 2 ? -0.25f : k == 3 ? 1.5f : f; break;
         }
     }
@@ -61,11 +68,13 @@ static void draw_depth(fs_context *c, const void *user, int w, int h)
     G(GenTextures, 1, &tex);
     G(BindTexture, GL_TEXTURE_2D, tex);
     G(PixelStorei, GL_UNPACK_ALIGNMENT, 1);
-    static uint32_t data[TS * TS];
+    static uint32_t data[2 * TS * TS];
+    bool ds = dc->type == GL_UNSIGNED_INT_24_8 || dc->type == GL_FLOAT_32_UNSIGNED_INT_24_8_REV;
     bool mip = dc->min_filter != GL_NEAREST && dc->min_filter != GL_LINEAR;
     for (int l = 0, s = TS; s >= 1 && (l == 0 || mip); l++, s /= 2) {
         make_depth(&g, dc->type, s * s, data);
-        G(TexImage2D, GL_TEXTURE_2D, l, dc->internal, s, s, 0, GL_DEPTH_COMPONENT, dc->type, data);
+        G(TexImage2D, GL_TEXTURE_2D, l, dc->internal, s, s, 0, ds ? GL_DEPTH_STENCIL : GL_DEPTH_COMPONENT, dc->type,
+          data);
     }
     G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, (GLint)dc->min_filter);
     G(TexParameteri, GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, (GLint)dc->mag_filter);
@@ -129,6 +138,15 @@ static const struct { GLint internal; GLenum type; } formats[] = {
     {GL_DEPTH_COMPONENT32, GL_UNSIGNED_SHORT}, {GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT},
     {GL_DEPTH_COMPONENT, GL_UNSIGNED_INT}, {GL_DEPTH_COMPONENT, GL_FLOAT}, {GL_DEPTH_COMPONENT, GL_UNSIGNED_BYTE},
     {GL_DEPTH_COMPONENT24, GL_SHORT}, {GL_DEPTH_COMPONENT32F, GL_FLOAT}, {GL_DEPTH_COMPONENT32F, GL_UNSIGNED_SHORT},
+    /* GL_DEPTH_STENCIL data (EXT_packed_depth_stencil, ARB_depth_buffer_float)
+     * into the depth-stencil formats and into depth ones; DEPTH_COMPONENT
+     * data into a depth-stencil format. */
+    {GL_DEPTH24_STENCIL8, GL_UNSIGNED_INT_24_8}, {GL_DEPTH24_STENCIL8, GL_FLOAT_32_UNSIGNED_INT_24_8_REV},
+    {GL_DEPTH32F_STENCIL8, GL_FLOAT_32_UNSIGNED_INT_24_8_REV}, {GL_DEPTH32F_STENCIL8, GL_UNSIGNED_INT_24_8},
+    {GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8}, {GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV},
+    {GL_DEPTH_COMPONENT16, GL_UNSIGNED_INT_24_8}, {GL_DEPTH_COMPONENT32, GL_UNSIGNED_INT_24_8},
+    {GL_DEPTH_COMPONENT32F, GL_FLOAT_32_UNSIGNED_INT_24_8_REV}, {GL_DEPTH_COMPONENT24, GL_FLOAT_32_UNSIGNED_INT_24_8_REV},
+    {GL_DEPTH24_STENCIL8, GL_FLOAT}, {GL_DEPTH32F_STENCIL8, GL_UNSIGNED_SHORT},
 };
 #define NFORMATS (int)(sizeof formats / sizeof formats[0])
 
@@ -499,11 +517,14 @@ TEST(state_sizes_errors_vs_osmesa)
 static void depth_readback(fs_context *c, double *out, int *n)
 {
     rng g = {77};
-    static uint32_t data[64];
+    static uint32_t data[128];
     static float back[64];
     for (int f = 0; f < NFORMATS; f++) {
-        make_depth(&g, formats[f].type, 64, data);
-        G(TexImage2D, GL_TEXTURE_2D, 0, formats[f].internal, 8, 8, 0, GL_DEPTH_COMPONENT, formats[f].type, data);
+        GLenum type = formats[f].type;
+        bool ds = type == GL_UNSIGNED_INT_24_8 || type == GL_FLOAT_32_UNSIGNED_INT_24_8_REV;
+        make_depth(&g, type, 64, data);
+        G(TexImage2D, GL_TEXTURE_2D, 0, formats[f].internal, 8, 8, 0, ds ? GL_DEPTH_STENCIL : GL_DEPTH_COMPONENT, type,
+          data);
         G(GetTexImage, GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, back);
         for (int i = 0; i < 64; i++)
             out[(*n)++] = back[i];
@@ -525,7 +546,106 @@ TEST(upload_readback_vs_osmesa)
     OSM_CHECK_VALUES(depth_readback, 8, 8, 64 * (NFORMATS + 1));
 }
 
+/* EXT_packed_depth_stencil outside textures: glReadPixels(GL_DEPTH_STENCIL)
+ * of a depth and stencil buffer drawn by tilted quads, in both packed
+ * types, and the errors of the DEPTH_STENCIL format and its types in
+ * every pixel command (measured on OSMesa; values compared exactly). */
+static void depth_stencil_pixels(fs_context *c, double *out, int *n)
+{
+#define ERR() (out[(*n)++] = (double)(c ? fsglGetError(c) : glGetError()))
+    static uint32_t data[2 * 16 * 16], back[2 * 16 * 16];
+    osm_frustum_scene(c, 16, 16, 0.1f, 0.2f, 0.3f, 10);
+    G(ClearStencil, 3);
+    G(Clear, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+    G(Enable, GL_DEPTH_TEST);
+    G(Enable, GL_STENCIL_TEST);
+    G(StencilOp, GL_KEEP, GL_KEEP, GL_REPLACE);
+    G(Translatef, 0, 0, -2.0f);
+    for (int k = 0; k < 2; k++) {
+        G(StencilFunc, GL_ALWAYS, 17 + 100 * k, 0xff);
+        G0(PushMatrix);
+        G(Rotatef, k ? 50.0f : -40.0f, 1, 0.3f, 0);
+        G(Begin, GL_QUADS);
+        G(Vertex2f, -1, -1);
+        G(Vertex2f, 1, -1);
+        G(Vertex2f, 1, 1);
+        G(Vertex2f, -1, 1);
+        G0(End);
+        G0(PopMatrix);
+    }
+    static const GLenum types[] = {GL_UNSIGNED_INT_24_8, GL_FLOAT_32_UNSIGNED_INT_24_8_REV};
+    for (int t = 0; t < 2; t++) {
+        memset(back, 0xee, sizeof back);
+        G(ReadPixels, 0, 0, 16, 16, GL_DEPTH_STENCIL, types[t], back);
+        ERR();
+        for (int i = 0; i < (t ? 512 : 256); i++)
+            out[(*n)++] = back[i];
+    }
+    G(ReadPixels, 0, 0, 4, 4, GL_DEPTH_STENCIL, GL_UNSIGNED_INT, back);
+    ERR();
+    G(ReadPixels, 0, 0, 4, 4, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT_24_8, back);
+    ERR();
+    G(ReadPixels, 0, 0, 4, 4, GL_RGBA, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, back);
+    ERR();
+    G(DrawPixels, 4, 4, GL_DEPTH_STENCIL, GL_FLOAT, data);
+    ERR();
+    G(DrawPixels, 4, 4, GL_DEPTH_STENCIL, GL_BITMAP, data);
+    ERR();
+    G(CopyPixels, 0, 0, 4, 4, GL_DEPTH_STENCIL);
+    ERR();
+    G(Disable, GL_DEPTH_TEST);
+    G(Disable, GL_STENCIL_TEST);
+    /* Texture commands. */
+    GLuint tex;
+    G(GenTextures, 1, &tex);
+    G(BindTexture, GL_TEXTURE_2D, tex);
+    static const GLenum bad_types[] = {GL_UNSIGNED_INT, GL_BYTE, GL_BITMAP, GL_UNSIGNED_SHORT_5_6_5, GL_FLOAT};
+    for (int i = 0; i < 5; i++) {
+        G(TexImage2D, GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 4, 4, 0, GL_DEPTH_STENCIL, bad_types[i], data);
+        ERR();
+    }
+    G(TexImage2D, GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, data);
+    ERR();
+    G(TexImage2D, GL_TEXTURE_2D, 0, GL_RGBA8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_INT_24_8, data);
+    ERR();
+    G(TexImage2D, GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 4, 4, 0, GL_RGBA, GL_UNSIGNED_BYTE, data);
+    ERR();
+    G(TexImage2D, GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, 4, 4, 0, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT_24_8, data);
+    ERR();
+    G(TexImage3D, GL_TEXTURE_3D, 0, GL_DEPTH24_STENCIL8, 4, 4, 1, 0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, data);
+    ERR();
+    static const GLint ds_formats[] = {GL_DEPTH_STENCIL, GL_DEPTH24_STENCIL8, GL_DEPTH32F_STENCIL8};
+    for (int f = 0; f < 3; f++)
+        for (int t = 0; t < 2; t++) {
+            G(TexImage2D, GL_TEXTURE_2D, 0, ds_formats[f], 4, 4, 0, GL_DEPTH_STENCIL, types[t], data);
+            ERR();
+            GLint iv = -5;
+            G(GetTexLevelParameteriv, GL_TEXTURE_2D, 0, GL_TEXTURE_DEPTH_SIZE, &iv);
+            out[(*n)++] = iv;
+            G(GetTexLevelParameteriv, GL_TEXTURE_2D, 0, GL_TEXTURE_INTERNAL_FORMAT, &iv);
+            out[(*n)++] = iv;
+        }
+    G(TexSubImage2D, GL_TEXTURE_2D, 0, 0, 0, 2, 2, GL_DEPTH_STENCIL, GL_UNSIGNED_INT, data);
+    ERR();
+    G(TexSubImage2D, GL_TEXTURE_2D, 0, 0, 0, 2, 2, GL_DEPTH_COMPONENT, GL_FLOAT, data);
+    ERR();
+    G(CopyTexImage2D, GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, 0, 0, 4, 4, 0);
+    ERR();
+    G(GetTexImage, GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT, GL_FLOAT, back);
+    ERR();
+    for (int i = 0; i < 16; i++)
+        out[(*n)++] = ((float *)back)[i];
+    G(DeleteTextures, 1, &tex);
+#undef ERR
+}
+
+TEST(depth_stencil_pixels_vs_osmesa)
+{
+    OSM_CHECK_VALUES(depth_stencil_pixels, 16, 16, 1024);
+}
+
 TEST_LIST = {
+    TEST_ENTRY(depth_stencil_pixels_vs_osmesa),
     TEST_ENTRY(nearest_every_format_func_mode),
     TEST_ENTRY(linear_every_format_func_mode),
     TEST_ENTRY(equal_reference_ties),

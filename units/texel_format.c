@@ -11,7 +11,8 @@
  *   10 (and 2); the 12- and 16-bit formats at 16.
  *
  * Upload rounds an 8-bit value to the nearest n-bit one (q = round(v (2^n
- * - 1) / 255), no ties occur for n < 8); sampling and readback expand q by
+ * - 1) / 255), no ties occur for n < 8), and an image of any other type
+ * from its floats (fs_texel_from_float); sampling and readback expand q by
  * repeating its bits (5 bits: 3 -> 24, 4 -> 33, as measured; not
  * round(q 255 / 31), which gives 25 and 33).
  */
@@ -45,7 +46,8 @@ static bool low_bits(GLint f, int rgba[4])
 
 /* Bits of every component of the formats stored above 8 bits, 8 for the
  * others. */
-static int wide_bits(GLint f)
+/* The normalized formats among them: 10 or 16 bits; 8 for the others. */
+static int unorm_wide_bits(GLint f)
 {
     switch (f) {
     case GL_RGB10: case GL_RGB10_A2: return 10;
@@ -54,6 +56,22 @@ static int wide_bits(GLint f)
     case GL_LUMINANCE12_ALPHA4: case GL_LUMINANCE12_ALPHA12: case GL_LUMINANCE16_ALPHA16: case GL_R16:
     case GL_RG16:
         return 16;
+    default: return 8;
+    }
+}
+
+static int wide_bits(GLint f)
+{
+    if (unorm_wide_bits(f) != 8)
+        return unorm_wide_bits(f);
+    switch (f) {
+    /* ARB_texture_float's sizes (GL_TEXTURE_*_SIZE; the model keeps 8 bits). */
+    case GL_ALPHA16F_ARB: case GL_LUMINANCE16F_ARB: case GL_LUMINANCE_ALPHA16F_ARB: case GL_INTENSITY16F_ARB:
+    case GL_R16F: case GL_RG16F: case GL_RGB16F: case GL_RGBA16F:
+        return 16;
+    case GL_ALPHA32F_ARB: case GL_LUMINANCE32F_ARB: case GL_LUMINANCE_ALPHA32F_ARB: case GL_INTENSITY32F_ARB:
+    case GL_R32F: case GL_RG32F: case GL_RGB32F: case GL_RGBA32F:
+        return 32;
     default: return 8;
     }
 }
@@ -110,7 +128,7 @@ static uint8_t requantize(uint8_t v, int n, bool truncate)
 bool fs_texel_float_bits(GLint f, int bits[4])
 {
     int lb[4];
-    const int w = wide_bits(f);
+    const int w = unorm_wide_bits(f); /* the float formats are kept at 8 bits */
     if (low_bits(f, lb)) {
         for (int k = 0; k < 4; k++) /* RGB10_A2: 10 bits of colour from floats */
             bits[k] = lb[k] == 8 && w > 8 ? w : lb[k];

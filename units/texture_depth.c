@@ -10,6 +10,10 @@
  *   measured; its reference not clamped); unsized DEPTH_COMPONENT at the
  *   size that matches the client type (measured: UNSIGNED_SHORT 16,
  *   UNSIGNED_INT 32, others 24).
+ * - EXT_packed_depth_stencil's DEPTH_STENCIL and DEPTH24_STENCIL8 are
+ *   stored at 24 bits, ARB_depth_buffer_float's DEPTH32F_STENCIL8 as a
+ *   float; the stencil is not kept (GL 1.x samples the depth only).
+ *   GL_DEPTH_STENCIL client data converts by ds_to_storage.
  * - Upload: a client type equal to the storage (UNSIGNED_SHORT into 16
  *   bits, UNSIGNED_INT into 32) is copied; UNSIGNED_INT into 16 bits keeps
  *   the top 16, UNSIGNED_SHORT into 32 repeats its 16 bits; everything else
@@ -48,7 +52,8 @@
 bool fs_tex_depth_format(GLint f)
 {
     return f == GL_DEPTH_COMPONENT || f == GL_DEPTH_COMPONENT16 || f == GL_DEPTH_COMPONENT24 ||
-           f == GL_DEPTH_COMPONENT32 || f == GL_DEPTH_COMPONENT32F;
+           f == GL_DEPTH_COMPONENT32 || f == GL_DEPTH_COMPONENT32F || f == GL_DEPTH_STENCIL ||
+           f == GL_DEPTH24_STENCIL8 || f == GL_DEPTH32F_STENCIL8;
 }
 
 int fs_tex_depth_bits(GLint f, GLenum type)
@@ -56,7 +61,10 @@ int fs_tex_depth_bits(GLint f, GLenum type)
     switch (f) {
     case GL_DEPTH_COMPONENT16: return 16;
     case GL_DEPTH_COMPONENT24: return 24;
-    case GL_DEPTH_COMPONENT32: case GL_DEPTH_COMPONENT32F: return 32;
+    case GL_DEPTH_COMPONENT32: case GL_DEPTH_COMPONENT32F: case GL_DEPTH32F_STENCIL8: return 32;
+    /* Z24_UNORM_S8_UINT whatever the client type (measured: TEXTURE_DEPTH_SIZE
+     * 24 for unsized DEPTH_STENCIL from FLOAT_32_UNSIGNED_INT_24_8_REV). */
+    case GL_DEPTH_STENCIL: case GL_DEPTH24_STENCIL8: return 24;
     case GL_DEPTH_COMPONENT: return type == GL_UNSIGNED_SHORT ? 16 : type == GL_UNSIGNED_INT ? 32 : 24;
     default: return 0;
     }
@@ -73,7 +81,10 @@ static void put_texel(uint8_t *texel, uint32_t v) { memcpy(texel, &v, 4); }
 
 /* ARB_depth_buffer_float's DEPTH_COMPONENT32F, which llvmpipe offers: the
  * texel is the float itself (Z32_FLOAT). */
-static bool float_image(const fs_tex_image *img) { return img->internal_format == GL_DEPTH_COMPONENT32F; }
+static bool float_image(const fs_tex_image *img)
+{
+    return img->internal_format == GL_DEPTH_COMPONENT32F || img->internal_format == GL_DEPTH32F_STENCIL8;
+}
 
 static uint32_t float_bits(float f)
 {
@@ -148,22 +159,48 @@ static uint32_t client_to_storage(const fs_context *c, uint32_t raw, GLenum type
     return is_float ? float_bits(f) : float_to_storage(f, bits);
 }
 
+/* One DEPTH_STENCIL group's depth (fs_pixel_unpack_depth_stencil) to
+ * the storage of a bits-wide image (measured through glGetTexImage on
+ * OSMesa, tests/test_texture_depth.c): 24 bits into 24 bits is copied; a
+ * 24-bit depth becomes the float product d * (float)(1 / (2^24 - 1))
+ * (the double product is 1 ulp low for some), a float depth is clamped to
+ * [0, 1] (NaN to 0), for the float formats too; the float is then stored
+ * as an upload stores it (float_to_storage). */
+static uint32_t ds_to_storage(uint32_t d, GLenum type, int bits, bool is_float)
+{
+    if (type == GL_UNSIGNED_INT_24_8 && bits == 24 && !is_float)
+        return d;
+    float f = type == GL_UNSIGNED_INT_24_8 ? (float)d * (float)(1.0 / 16777215.0) : bits_to_float(d);
+    f = !(f > 0.0f) ? 0.0f : f > 1.0f ? 1.0f : f;
+    return is_float ? float_bits(f) : float_to_storage(f, bits);
+}
+
 void fs_tex_depth_unpack(fs_context *c, fs_tex_image *img, int dims, const int off[3], int w, int h, int d,
-                         GLenum type, const void *pixels)
+                         GLenum format, GLenum type, const void *pixels)
 {
     fs_pixel_store ps = fs_pixel_store_unpack(c);
     fs_pixel_layout l;
-    if (!fs_pixel_layout_init(&l, &ps, dims, w, h, d, GL_DEPTH_COMPONENT, type))
+    if (!fs_pixel_layout_init(&l, &ps, dims, w, h, d, format, type))
         return;
+    bool ds = format == GL_DEPTH_STENCIL;
+    if (ds && (c->px.depth_scale != 1.0f || c->px.depth_bias != 0.0f))
+        fs_unsupported(c, "glTexImage(GL_DEPTH_STENCIL) with depth scale or bias");
     for (int z = 0; z < d; z++)
         for (int y = 0; y < h; y++) {
             const uint8_t *src = (const uint8_t *)pixels + l.origin + z * l.image_stride + y * l.row_stride;
             uint8_t *dst = img->texels + (((size_t)(off[2] + z) * (size_t)img->height + (size_t)(off[1] + y)) *
                                               (size_t)img->width + (size_t)off[0]) * 4;
-            for (int x = 0; x < w; x++, src += l.group_bytes)
-                put_texel(dst + 4 * x,
-                          client_to_storage(c, fs_pixel_load_elem(src, l.elem_bytes, l.swap_bytes), type, img->depth_bits,
-                                            float_image(img)));
+            for (int x = 0; x < w; x++, src += l.group_bytes) {
+                uint32_t v;
+                if (ds) {
+                    fs_pixel_unpack_depth_stencil(&l, pixels, z, y, x, 1, &v, NULL);
+                    v = ds_to_storage(v, type, img->depth_bits, float_image(img));
+                } else {
+                    v = client_to_storage(c, fs_pixel_load_elem(src, l.elem_bytes, l.swap_bytes), type,
+                                          img->depth_bits, float_image(img));
+                }
+                put_texel(dst + 4 * x, v);
+            }
         }
 }
 

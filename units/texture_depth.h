@@ -27,11 +27,11 @@ bool fs_tex_depth_format(GLint internalformat);
  * depth buffer or a proxy, 24).  Measured through OSMesa (TEXTURE_DEPTH_SIZE). */
 int fs_tex_depth_bits(GLint internalformat, GLenum type);
 
-/* Unpacks a w x h x d DEPTH_COMPONENT client image into img at off, as
- * glTexImage and glTexSubImage take it (3.8.1: as glDrawPixels, depth
- * scale and bias applied). */
+/* Unpacks a w x h x d DEPTH_COMPONENT (or DEPTH_STENCIL: its depth)
+ * client image into img at off, as glTexImage and glTexSubImage take it
+ * (3.8.1: as glDrawPixels, depth scale and bias applied). */
 void fs_tex_depth_unpack(fs_context *c, struct fs_tex_image *img, int dims, const int off[3], int w, int h, int d,
-                         GLenum type, const void *pixels);
+                         GLenum format, GLenum type, const void *pixels);
 /* Stores a depth buffer value (fb_bits bits) as texel (x, y) of img, as
  * glCopyTexImage does. */
 void fs_tex_depth_store_copy(struct fs_tex_image *img, uint8_t *texel, uint32_t z, int fb_bits);

@@ -292,24 +292,30 @@ GLboolean fs_exec_IsTexture(fs_context *c, GLuint texture)
 static GLenum tex_format_error(GLenum format, GLenum type)
 {
     GLenum err = fs_pixel_check(format, type);
-    if (err == GL_NO_ERROR && (fs_pixel_format_kind(format) & (FS_PIXEL_STENCIL | FS_PIXEL_DEPTH)))
+    if (err == GL_NO_ERROR && (fs_pixel_format_kind(format) & (FS_PIXEL_STENCIL | FS_PIXEL_DEPTH | FS_PIXEL_DEPTH_STENCIL)))
         return GL_INVALID_OPERATION;
     return err;
 }
 
-/* The same for the image commands, which take DEPTH_COMPONENT (GL 1.4
+/* Whether a client format holds depth: DEPTH_COMPONENT, or
+ * EXT_packed_depth_stencil's DEPTH_STENCIL, which llvmpipe takes into
+ * every depth internal format and DEPTH_COMPONENT into the depth-stencil
+ * ones (measured on OSMesa). */
+static bool depth_data(GLenum format) { return format == GL_DEPTH_COMPONENT || format == GL_DEPTH_STENCIL; }
+
+/* The same for the image commands, which take depth data (GL 1.4
  * 3.8.1: with a depth internal format only, which the caller checks with
  * depth_mismatch once the image's other arguments passed). */
 static GLenum image_format_error(GLenum format, GLenum type)
 {
-    return format == GL_DEPTH_COMPONENT ? fs_pixel_check(format, type) : tex_format_error(format, type);
+    return depth_data(format) ? fs_pixel_check(format, type) : tex_format_error(format, type);
 }
 
-/* 3.8.1: DEPTH_COMPONENT data with a colour internal format, or other
+/* 3.8.1: depth data with a colour internal format, or other
  * data with a depth one, is INVALID_OPERATION. */
 static bool depth_mismatch(bool depth_image, GLenum format)
 {
-    return depth_image != (format == GL_DEPTH_COMPONENT);
+    return depth_image != depth_data(format);
 }
 
 /* Bytes glTexImage2D/glTexSubImage2D read (GL 1.5 spec 3.6.4, unpacking by
@@ -358,12 +364,48 @@ static GLenum base_format(GLint f)
         return GL_RED;
     case GL_RG: case GL_RG8: case GL_RG16:
         return GL_RG;
+    /* ARB_texture_float (and ARB_texture_rg's float formats), which
+     * llvmpipe accepts in a compatibility context (measured); the model
+     * keeps their texels at 8 bits (float_format). */
+    case GL_ALPHA16F_ARB: case GL_ALPHA32F_ARB: return GL_ALPHA;
+    case GL_LUMINANCE16F_ARB: case GL_LUMINANCE32F_ARB: return GL_LUMINANCE;
+    case GL_LUMINANCE_ALPHA16F_ARB: case GL_LUMINANCE_ALPHA32F_ARB: return GL_LUMINANCE_ALPHA;
+    case GL_INTENSITY16F_ARB: case GL_INTENSITY32F_ARB: return GL_INTENSITY;
+    case GL_R16F: case GL_R32F: return GL_RED;
+    case GL_RG16F: case GL_RG32F: return GL_RG;
+    case GL_RGB16F: case GL_RGB32F: return GL_RGB;
+    case GL_RGBA16F: case GL_RGBA32F: return GL_RGBA;
     /* GL 1.4 depth textures (units/texture_depth.c). */
     case GL_DEPTH_COMPONENT: case GL_DEPTH_COMPONENT16: case GL_DEPTH_COMPONENT24: case GL_DEPTH_COMPONENT32:
     case GL_DEPTH_COMPONENT32F:
+    /* EXT_packed_depth_stencil and ARB_depth_buffer_float: depth textures
+     * whose sampling reads the depth (GL 3.0 3.8.14), stencil not kept. */
+    case GL_DEPTH_STENCIL: case GL_DEPTH24_STENCIL8: case GL_DEPTH32F_STENCIL8:
         return GL_DEPTH_COMPONENT;
     default:
         return 0;
+    }
+}
+
+/* Whether an internal format is a float one (ARB_texture_float,
+ * ARB_texture_rg): llvmpipe keeps floats, unclamped, and samples them in
+ * its float path; the model keeps 8 bits.  A copy from the 8-bit colour
+ * buffer keeps every value (a half float holds v / 255 to better than half
+ * a step of 1/255; the float snapshots of gl12-copyteximage_3d are exact),
+ * but data outside [0, 1] or between the 8-bit steps does not: a
+ * glTexImage or glTexSubImage with data into one is counted as
+ * unsupported.  (Filtering copied texels in llvmpipe's float path is not
+ * compared yet.) */
+static bool float_format(GLint f)
+{
+    switch (f) {
+    case GL_ALPHA16F_ARB: case GL_ALPHA32F_ARB: case GL_LUMINANCE16F_ARB: case GL_LUMINANCE32F_ARB:
+    case GL_LUMINANCE_ALPHA16F_ARB: case GL_LUMINANCE_ALPHA32F_ARB: case GL_INTENSITY16F_ARB:
+    case GL_INTENSITY32F_ARB: case GL_R16F: case GL_R32F: case GL_RG16F: case GL_RG32F: case GL_RGB16F:
+    case GL_RGB32F: case GL_RGBA16F: case GL_RGBA32F:
+        return true;
+    default:
+        return false;
     }
 }
 
@@ -396,7 +438,7 @@ static void unpack_image(fs_context *c, fs_tex_image *img, int dims, const int o
                          GLenum format, GLenum type, const uint8_t *pixels)
 {
     if (img->base_format == GL_DEPTH_COMPONENT) {
-        fs_tex_depth_unpack(c, img, dims, off, w, h, d, type, pixels);
+        fs_tex_depth_unpack(c, img, dims, off, w, h, d, format, type, pixels);
         return;
     }
     fs_pixel_store ps = fs_pixel_store_unpack(c);
@@ -672,6 +714,8 @@ void fs_tex_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLint 
         img->depth_bits = fs_tex_depth_bits(internalformat, type);
     if (img && keeps_wide_texels(internalformat, format, type))
         fs_unsupported(c, "16/10-bit texels, unsized internal format (stored at 8 bits)");
+    if (img && pixels && float_format(internalformat))
+        fs_unsupported(c, "glTexImage data into a float internal format (stored at 8 bits)");
     if (img && img->texels && pixels)
         unpack_inner(c, img, dims, border, size, format, type, pixels);
     if (img)
@@ -731,6 +775,8 @@ void fs_tex_subimage_nd(fs_context *c, int dims, GLenum target, GLint level, con
     }
     if (fs_tex_compressed_block_bytes(img->internal_format, NULL)) /* llvmpipe compresses into the blocks */
         fs_unsupported(c, "glTexSubImage into a compressed level (units/texture_compressed.c)");
+    if (pixels && float_format(img->internal_format))
+        fs_unsupported(c, "glTexImage data into a float internal format (stored at 8 bits)");
     if (w > 0 && h > 0 && d > 0 && pixels)
         unpack_image(c, img, dims, off, w, h, d, format, type, pixels);
     fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], ti.face, level);
@@ -1532,7 +1578,7 @@ static const fs_tex_image *get_image_level(fs_context *c, const fs_tex_target_in
 int64_t fs_gettexImage_bytes(fs_context *c, GLenum target, GLint level, GLenum format, GLenum type)
 {
     fs_tex_target_info ti;
-    bool depth_ok = format == GL_DEPTH_COMPONENT && fs_pixel_check(format, type) == GL_NO_ERROR;
+    bool depth_ok = depth_data(format) && fs_pixel_check(format, type) == GL_NO_ERROR;
     if (!fs_tex_image_target_of(target, &ti) || (!depth_ok && get_image_format_error(format, type) != GL_NO_ERROR))
         return 0;
     const fs_tex_image *img = get_image_level(c, &ti, level);
@@ -1573,10 +1619,10 @@ void fs_exec_GetTexImage(fs_context *c, GLenum target, GLint level, GLenum forma
      * depth texture is read as depth (INVALID_OPERATION otherwise). */
     const fs_tex_image *img = get_image_level(c, &ti, level);
     bool depth_image = img && img->base_format == GL_DEPTH_COMPONENT;
-    GLenum err = format == GL_DEPTH_COMPONENT ? fs_pixel_check(format, type) : get_image_format_error(format, type);
+    GLenum err = depth_data(format) ? fs_pixel_check(format, type) : get_image_format_error(format, type);
     if (err == GL_NO_ERROR && img && depth_mismatch(depth_image, format))
         err = GL_INVALID_OPERATION;
-    if (err == GL_NO_ERROR && !img && format == GL_DEPTH_COMPONENT)
+    if (err == GL_NO_ERROR && !img && depth_data(format))
         err = GL_INVALID_OPERATION; /* no depth texture to read */
     if (err != GL_NO_ERROR) {
         fs_error(c, err);
@@ -1584,6 +1630,10 @@ void fs_exec_GetTexImage(fs_context *c, GLenum target, GLint level, GLenum forma
     }
     if (!img || !pixels)
         return; /* an undefined level writes nothing */
+    if (depth_image && format == GL_DEPTH_STENCIL) { /* accepted by llvmpipe; the model keeps no stencil */
+        fs_unsupported(c, "glGetTexImage(GL_DEPTH_STENCIL)");
+        return;
+    }
     if (depth_image) {
         fs_tex_depth_get_image(c, img, ti.dims, type, pixels);
         return;
