@@ -271,4 +271,20 @@ static inline void osm_frustum_scene(fs_context *c, int w, int h, float r, float
     G(MatrixMode, GL_MODELVIEW);
     G0(LoadIdentity);
 }
+/* The textured-quad tests' view: a w x h viewport cleared to one colour,
+ * the texture environment env, a frustum, and the quad's plane 3 units
+ * away tilted about x. */
+static inline void osm_tilted_view(fs_context *c, int w, int h, GLenum env, float tilt)
+{
+    G(Viewport, 0, 0, w, h);
+    G(ClearColor, 0.3f, 0.1f, 0.2f, 1);
+    G(Clear, GL_COLOR_BUFFER_BIT);
+    G(TexEnvi, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, (GLint)env);
+    G(MatrixMode, GL_PROJECTION);
+    G(Frustum, -1.0, 1.0, -(double)h / w, (double)h / w, 2.0, 40.0);
+    G(MatrixMode, GL_MODELVIEW);
+    G(Translatef, 0, 0, -3);
+    G(Rotatef, -tilt, 1, 0, 0);
+}
+
 #endif

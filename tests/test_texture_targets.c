@@ -109,15 +109,7 @@ static void draw_target_case(fs_context *c, const void *user, int w, int h)
 {
     const target_case *k = user;
     define_texture(c, k);
-    G(Viewport, 0, 0, w, h);
-    G(ClearColor, 0.3f, 0.1f, 0.2f, 1);
-    G(Clear, GL_COLOR_BUFFER_BIT);
-    G(TexEnvi, GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, (GLint)k->env);
-    G(MatrixMode, GL_PROJECTION);
-    G(Frustum, -1.0, 1.0, -(double)h / w, (double)h / w, 2.0, 40.0);
-    G(MatrixMode, GL_MODELVIEW);
-    G(Translatef, 0, 0, -3);
-    G(Rotatef, -k->tilt, 1, 0, 0);
+    osm_tilted_view(c, w, h, k->env, k->tilt);
     /* s across, t up, r along the diagonal, q per corner (projective). */
     static const float corner[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     G(Begin, GL_QUADS);
