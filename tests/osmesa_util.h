@@ -287,4 +287,32 @@ static inline void osm_tilted_view(fs_context *c, int w, int h, GLenum env, floa
     G(Rotatef, -tilt, 1, 0, 0);
 }
 
+/* Texture level queries for the texture tests: the pnames' values at
+ * (target, level), then the error. */
+static inline void osm_level_params(fs_context *c, GLenum target, int level, const GLenum *pn, int npn, double *v,
+                                    int *n)
+{
+    for (int i = 0; i < npn; i++) {
+        GLint iv = -5;
+        G(GetTexLevelParameteriv, target, level, pn[i], &iv);
+        v[(*n)++] = iv;
+    }
+    v[(*n)++] = (double)(c ? fsglGetError(c) : glGetError());
+}
+
+/* glGetTexImage of a level into a buffer with guard bytes: the checksum
+ * of the whole buffer, then the error. */
+static inline void osm_get_image(fs_context *c, GLenum target, int level, GLenum format, GLenum type, double *v,
+                                 int *n)
+{
+    static uint8_t out[40000];
+    memset(out, 0xa5, sizeof out);
+    G(GetTexImage, target, level, format, type, out);
+    uint32_t sum = 0;
+    for (size_t i = 0; i < sizeof out; i++)
+        sum = sum * 31u + out[i];
+    v[(*n)++] = sum;
+    v[(*n)++] = (double)(c ? fsglGetError(c) : glGetError());
+}
+
 #endif

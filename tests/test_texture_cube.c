@@ -205,29 +205,12 @@ static void level_params(fs_context *c, GLenum target, int level, double *v, int
 {
     static const GLenum pn[] = {GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_BORDER, GL_TEXTURE_INTERNAL_FORMAT,
                                 GL_TEXTURE_RED_SIZE, GL_TEXTURE_ALPHA_SIZE};
-    for (int i = 0; i < 6; i++) {
-        GLint iv = -5;
-        G(GetTexLevelParameteriv, target, level, pn[i], &iv);
-        v[(*n)++] = iv;
-    }
-    v[(*n)++] = GERR();
-}
-
-static uint32_t checksum(const uint8_t *p, size_t n)
-{
-    uint32_t sum = 0;
-    for (size_t i = 0; i < n; i++)
-        sum = sum * 31u + p[i];
-    return sum;
+    osm_level_params(c, target, level, pn, 6, v, n);
 }
 
 static void get_image(fs_context *c, GLenum target, int level, double *v, int *n)
 {
-    static uint8_t out[4096];
-    memset(out, 0xa5, sizeof out);
-    G(GetTexImage, target, level, GL_RGBA, GL_UNSIGNED_BYTE, out);
-    v[(*n)++] = checksum(out, sizeof out);
-    v[(*n)++] = GERR();
+    osm_get_image(c, target, level, GL_RGBA, GL_UNSIGNED_BYTE, v, n);
 }
 
 static void cube_state(fs_context *c, double *v, int *n)

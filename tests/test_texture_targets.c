@@ -237,31 +237,9 @@ static void level_params(fs_context *c, GLenum target, int level, double *v, int
     static const GLenum pn[] = {GL_TEXTURE_WIDTH, GL_TEXTURE_HEIGHT, GL_TEXTURE_DEPTH, GL_TEXTURE_BORDER,
                                 GL_TEXTURE_INTERNAL_FORMAT, GL_TEXTURE_RED_SIZE, GL_TEXTURE_ALPHA_SIZE,
                                 GL_TEXTURE_LUMINANCE_SIZE};
-    for (int i = 0; i < 8; i++) {
-        GLint iv = -5;
-        G(GetTexLevelParameteriv, target, level, pn[i], &iv);
-        v[(*n)++] = iv;
-    }
-    v[(*n)++] = GERR();
+    osm_level_params(c, target, level, pn, 8, v, n);
 }
 
-static uint32_t checksum(const uint8_t *p, size_t n)
-{
-    uint32_t sum = 0;
-    for (size_t i = 0; i < n; i++)
-        sum = sum * 31u + p[i];
-    return sum;
-}
-
-/* glGetTexImage of a level into a buffer with guard bytes, its checksum. */
-static void get_image(fs_context *c, GLenum target, int level, GLenum format, GLenum type, double *v, int *n)
-{
-    static uint8_t out[40000];
-    memset(out, 0xa5, sizeof out);
-    G(GetTexImage, target, level, format, type, out);
-    v[(*n)++] = checksum(out, sizeof out);
-    v[(*n)++] = GERR();
-}
 
 static void image_commands(fs_context *c, double *v, int *n)
 {
@@ -285,18 +263,18 @@ static void image_commands(fs_context *c, double *v, int *n)
     G(TexImage1D, GL_TEXTURE_1D, 0, GL_RGBA, 16, 0, GL_RGBA, GL_UNSIGNED_BYTE, px);
     G(TexSubImage1D, GL_TEXTURE_1D, 0, 3, 7, GL_RGB, GL_UNSIGNED_BYTE, px + 100);
     level_params(c, GL_TEXTURE_1D, 0, v, n);
-    get_image(c, GL_TEXTURE_1D, 0, GL_RGBA, GL_UNSIGNED_BYTE, v, n);
+    osm_get_image(c, GL_TEXTURE_1D, 0, GL_RGBA, GL_UNSIGNED_BYTE, v, n);
     G(CopyTexSubImage1D, GL_TEXTURE_1D, 0, 2, 5, 3, 9);
-    get_image(c, GL_TEXTURE_1D, 0, GL_RGBA, GL_UNSIGNED_BYTE, v, n);
+    osm_get_image(c, GL_TEXTURE_1D, 0, GL_RGBA, GL_UNSIGNED_BYTE, v, n);
     G(CopyTexImage1D, GL_TEXTURE_1D, 1, GL_RGB, 4, 6, 8, 0);
     level_params(c, GL_TEXTURE_1D, 1, v, n);
-    get_image(c, GL_TEXTURE_1D, 1, GL_RGBA, GL_UNSIGNED_BYTE, v, n);
+    osm_get_image(c, GL_TEXTURE_1D, 1, GL_RGBA, GL_UNSIGNED_BYTE, v, n);
     G(CopyTexImage1D, GL_TEXTURE_1D, 2, GL_LUMINANCE, 1, 2, 6, 1);
     level_params(c, GL_TEXTURE_1D, 2, v, n);
-    get_image(c, GL_TEXTURE_1D, 2, GL_LUMINANCE, GL_UNSIGNED_BYTE, v, n);
+    osm_get_image(c, GL_TEXTURE_1D, 2, GL_LUMINANCE, GL_UNSIGNED_BYTE, v, n);
     G(TexImage1D, GL_TEXTURE_1D, 3, GL_LUMINANCE_ALPHA, 10, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
     level_params(c, GL_TEXTURE_1D, 3, v, n);
-    get_image(c, GL_TEXTURE_1D, 3, GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE, v, n);
+    osm_get_image(c, GL_TEXTURE_1D, 3, GL_LUMINANCE_ALPHA, GL_UNSIGNED_BYTE, v, n);
     /* 3D: an image with unpack image height and skipped images, parts. */
     G(BindTexture, GL_TEXTURE_3D, 5);
     G(PixelStorei, GL_UNPACK_IMAGE_HEIGHT, 10);
@@ -305,17 +283,17 @@ static void image_commands(fs_context *c, double *v, int *n)
     G(PixelStorei, GL_UNPACK_IMAGE_HEIGHT, 0);
     G(PixelStorei, GL_UNPACK_SKIP_IMAGES, 0);
     level_params(c, GL_TEXTURE_3D, 0, v, n);
-    get_image(c, GL_TEXTURE_3D, 0, GL_RGBA, GL_UNSIGNED_BYTE, v, n);
+    osm_get_image(c, GL_TEXTURE_3D, 0, GL_RGBA, GL_UNSIGNED_BYTE, v, n);
     G(TexSubImage3D, GL_TEXTURE_3D, 0, 1, 2, 1, 5, 2, 3, GL_RGBA, GL_UNSIGNED_BYTE, px + 400);
     G(CopyTexSubImage3D, GL_TEXTURE_3D, 0, 2, 1, 3, 4, 5, 6, 3);
     G(PixelStorei, GL_PACK_IMAGE_HEIGHT, 6);
     G(PixelStorei, GL_PACK_SKIP_IMAGES, 2);
-    get_image(c, GL_TEXTURE_3D, 0, GL_RGBA, GL_UNSIGNED_BYTE, v, n);
+    osm_get_image(c, GL_TEXTURE_3D, 0, GL_RGBA, GL_UNSIGNED_BYTE, v, n);
     G(PixelStorei, GL_PACK_IMAGE_HEIGHT, 0);
     G(PixelStorei, GL_PACK_SKIP_IMAGES, 0);
     G(TexImage3D, GL_TEXTURE_3D, 1, GL_INTENSITY, 6, 4, 4, 1, GL_RGBA, GL_UNSIGNED_BYTE, px);
     level_params(c, GL_TEXTURE_3D, 1, v, n);
-    get_image(c, GL_TEXTURE_3D, 1, GL_LUMINANCE, GL_UNSIGNED_BYTE, v, n);
+    osm_get_image(c, GL_TEXTURE_3D, 1, GL_LUMINANCE, GL_UNSIGNED_BYTE, v, n);
     /* Proxies: a size accepted, one refused (no error), an error. */
     G(TexImage1D, GL_PROXY_TEXTURE_1D, 0, GL_RGB, 64, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
     level_params(c, GL_PROXY_TEXTURE_1D, 0, v, n);
@@ -372,8 +350,8 @@ static void image_commands(fs_context *c, double *v, int *n)
     v[(*n)++] = GERR();
     G(GetIntegerv, GL_TEXTURE_BINDING_3D, &iv);
     v[(*n)++] = iv;
-    get_image(c, GL_TEXTURE_3D, 0, GL_RGBA, GL_UNSIGNED_BYTE, v, n);
-    get_image(c, GL_TEXTURE_1D, 0, GL_RGBA, GL_UNSIGNED_BYTE, v, n);
+    osm_get_image(c, GL_TEXTURE_3D, 0, GL_RGBA, GL_UNSIGNED_BYTE, v, n);
+    osm_get_image(c, GL_TEXTURE_1D, 0, GL_RGBA, GL_UNSIGNED_BYTE, v, n);
 }
 
 TEST(image_commands_vs_osmesa) { OSM_CHECK_VALUES(image_commands, 32, 24, 512); }
