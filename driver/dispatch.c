@@ -246,6 +246,7 @@ void fs_driver_state_free(fs_context *c)
  * asked for 6.5 GB before the command's own bound was reached) is
  * GL_OUT_OF_MEMORY and the command is not executed (GL 1.5 spec 2.5). */
 #define FS_SCRATCH_MAX ((int64_t)1 << 30)
+_Static_assert(FS_GEN_NAMES_MAX == FS_MAX_NAMES, "FS_GEN_COUNT bounds by the context's name limit");
 #define FS_CK_OUT(k, name, cnt, esize) \
     if (name == NULL) {                                                        \
         int64_t need_ = (int64_t)(cnt) > 16 ? (int64_t)(cnt) : 16;             \

@@ -96,6 +96,13 @@ enum fs_kind {
 /* A trace pseudo-call (apitrace's memcpy), no GL entry point: the shim does
  * not export it (rows written FS_CMD_TRACE). */
 #define FS_F_TRACE 0x40u
+/* The elements glGen{Textures,Buffers,Queries} write: n, but no more than
+ * one past the most names a context holds (FS_MAX_NAMES, pipeline/
+ * context.h), since beyond it the command is GL_OUT_OF_MEMORY with nothing
+ * written.  A bad trace's n = 2^28 so costs no gigabyte of output space
+ * before the command refuses it (make fuzz found 3.5 s units). */
+#define FS_GEN_NAMES_MAX 1048576
+#define FS_GEN_COUNT(n) ((int64_t)(n) > FS_GEN_NAMES_MAX ? (int64_t)FS_GEN_NAMES_MAX + 1 : (int64_t)(n))
 #define LIST FS_F_LIST
 #define NOLIST FS_F_NOLIST
 

@@ -165,6 +165,30 @@ void fs_exec_LightModeli(fs_context *c, GLenum pname, GLint param)
     fs_exec_LightModelf(c, pname, (float)param);
 }
 
+/* Whether GL_COLOR_MATERIAL tracks colour property prop (GL_AMBIENT,
+ * GL_DIFFUSE, GL_SPECULAR or GL_EMISSION) of face f (0 front, 1 back):
+ * it is enabled, and glColorMaterial named the face and the property
+ * (GL 1.5 spec 2.14.3). */
+static bool color_material_tracks(const fs_context *c, int f, GLenum prop)
+{
+    const fs_lighting_state *L = &c->lighting;
+    if (!L->color_material || L->color_material_face == (f ? GL_FRONT : GL_BACK))
+        return false;
+    GLenum mode = L->color_material_mode;
+    return mode == prop || (mode == GL_AMBIENT_AND_DIFFUSE && (prop == GL_AMBIENT || prop == GL_DIFFUSE));
+}
+
+/* glMaterial of a property GL_COLOR_MATERIAL tracks has no effect on
+ * llvmpipe: Mesa's glMaterial leaves out the tracked properties, which
+ * follow the current colour (measured on OSMesa: with GL_FRONT, GL_DIFFUSE
+ * tracked, glMaterialfv(GL_FRONT_AND_BACK, GL_DIFFUSE) changes only the
+ * back diffuse). */
+static void set_untracked(const fs_context *c, int f, GLenum prop, float dst[4], const float *p)
+{
+    if (!color_material_tracks(c, f, prop))
+        memcpy(dst, p, 16);
+}
+
 static void material_v(fs_context *c, GLenum face, GLenum pname, const float *p)
 {
     int mask;
@@ -185,11 +209,14 @@ static void material_v(fs_context *c, GLenum face, GLenum pname, const float *p)
             continue;
         fs_material *m = &c->lighting.material[f];
         switch (pname) {
-        case GL_AMBIENT: memcpy(m->ambient, p, 16); break;
-        case GL_DIFFUSE: memcpy(m->diffuse, p, 16); break;
-        case GL_SPECULAR: memcpy(m->specular, p, 16); break;
-        case GL_EMISSION: memcpy(m->emission, p, 16); break;
-        case GL_AMBIENT_AND_DIFFUSE: memcpy(m->ambient, p, 16); memcpy(m->diffuse, p, 16); break;
+        case GL_AMBIENT: set_untracked(c, f, GL_AMBIENT, m->ambient, p); break;
+        case GL_DIFFUSE: set_untracked(c, f, GL_DIFFUSE, m->diffuse, p); break;
+        case GL_SPECULAR: set_untracked(c, f, GL_SPECULAR, m->specular, p); break;
+        case GL_EMISSION: set_untracked(c, f, GL_EMISSION, m->emission, p); break;
+        case GL_AMBIENT_AND_DIFFUSE:
+            set_untracked(c, f, GL_AMBIENT, m->ambient, p);
+            set_untracked(c, f, GL_DIFFUSE, m->diffuse, p);
+            break;
         case GL_SHININESS: m->shininess = p[0]; break;
         case GL_COLOR_INDEXES: break; /* colour-index mode only */
         default: fs_error(c, GL_INVALID_ENUM); return;

@@ -440,11 +440,39 @@ TEST(bad_call_sets_are_errors)
     }
 }
 
+/* A trace's glGenTextures/glGenBuffers/glGenQueries with a huge n and no
+ * output buffer: GL_OUT_OF_MEMORY (more than FS_MAX_NAMES names), and the
+ * dispatcher's output space stays within FS_GEN_COUNT's bound, so the
+ * context's scratch is not grown to gigabytes first (make fuzz's slow
+ * units: 3.5 s and 1 GB each before FS_GEN_COUNT). */
+TEST(huge_gen_counts_refused_without_scratch)
+{
+    static const uint16_t cmds[] = {FS_CMD_GenTextures, FS_CMD_GenBuffers, FS_CMD_GenQueries};
+    static const int64_t counts[] = {(int64_t)1 << 28, 0x7fffffff, FS_GEN_NAMES_MAX + 1};
+    for (size_t i = 0; i < sizeof cmds / sizeof cmds[0]; i++)
+        for (size_t k = 0; k < sizeof counts / sizeof counts[0]; k++) {
+            fs_context *c = fs_context_create(NULL, 8, 8);
+            CHECK(c != NULL);
+            fs_call call;
+            memset(&call, 0, sizeof call);
+            call.cmd = cmds[i];
+            call.nargs = 2;
+            call.a[0].i = counts[k];
+            call.a[1].out = NULL; /* as from a trace */
+            fs_submit(c, &call);
+            CHECK_EQ_INT(fsglGetError(c), GL_OUT_OF_MEMORY);
+            /* Space for FS_GEN_NAMES_MAX + 1 names at most, not n. */
+            CHECK(c->scratch_size <= (size_t)(FS_GEN_NAMES_MAX + 1) * sizeof(GLuint));
+            fs_context_destroy(c);
+        }
+}
+
 TEST_LIST = {
     TEST_ENTRY(error_log_names_the_call),
     TEST_ENTRY(replay_errors_numbered_as_apitrace_dump),
     TEST_ENTRY(snapshot_call_sets_match_apitrace_dump),
     TEST_ENTRY(bad_call_sets_are_errors),
+    TEST_ENTRY(huge_gen_counts_refused_without_scratch),
     TEST_END,
 };
 

@@ -92,6 +92,8 @@ static const GLenum light_pnames[] = {GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_PO
                                       GL_LINEAR_ATTENUATION, GL_QUADRATIC_ATTENUATION};
 static const GLenum material_pnames[] = {GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION, GL_SHININESS};
 
+static void dump_materials(fs_context *c, rec *r);
+
 /* The lights and materials (GL_LIGHTING_BIT state without a glGet name),
  * through glGetLight{f,i}v and glGetMaterial{f,i}v. */
 static void dump_lighting(fs_context *c, rec *r)
@@ -108,6 +110,15 @@ static void dump_lighting(fs_context *c, rec *r)
                 put(r, "glGetLightiv", iv[k]);
             }
         }
+    dump_materials(c, r);
+    put_error(c, r, "glGetLight/glGetMaterial");
+}
+
+/* Both faces' materials through glGetMaterial{f,i}v. */
+static void dump_materials(fs_context *c, rec *r)
+{
+    GLfloat fv[4];
+    GLint iv[4];
     for (int f = 0; f < 2; f++)
         for (int p = 0; p < 5; p++) {
             int n = fs_material_param_count(material_pnames[p]);
@@ -121,7 +132,6 @@ static void dump_lighting(fs_context *c, rec *r)
                 put(r, names[f][p], iv[k]);
             }
         }
-    put_error(c, r, "glGetLight/glGetMaterial");
 }
 
 /* ---- random valid state ---- */
@@ -162,7 +172,7 @@ static void random_enables(fs_context *c, unsigned *s)
          * current colour only when vertices are flushed, where the model
          * stores glMaterial and tracks glColor at once (a known difference
          * of the lighting stage, not of the state table). */
-        if ((rows[i].cap == FS_CAP_NO && rows[i].name != GL_TEXTURE_2D) || rows[i].name == GL_COLOR_MATERIAL)
+        if ((rows[i].cap == FS_CAP_NO && rows[i].name != GL_TEXTURE_2D) )
             continue;
         if (pick(s, 3) != 0)
             continue;
@@ -186,11 +196,16 @@ static void random_colour(unsigned *s, float *v, float lo, float hi)
 
 /* A few lights, and materials unless scramble (the modelview matrix stays
  * the identity, so positions and directions are stored as given).
- * Materials set between a push and its pop are a known difference not yet
- * understood: llvmpipe's glPopAttrib(GL_LIGHTING_BIT) sometimes leaves them
- * as set (seeds 6 and 31 of push_pop_restores_vs_osmesa, also after
- * glColorMaterial with GL_COLOR_MATERIAL off), where simple sequences
- * restore them; the model restores them always. */
+ * Materials set between a push and its pop are a known difference of
+ * Mesa's immediate-mode buffer, not of the state table (measured,
+ * deferred_material_known_difference): glMaterial outside Begin/End is a
+ * vertex attribute of Mesa's vbo module, copied into the lighting state
+ * only when the vbo flushes.  A state call after a flush of the current
+ * values (glPushAttrib(GL_LIGHTING_BIT) is one) empties it; a glMaterial
+ * after that stays pending through glPopAttrib, which restores the pushed
+ * materials, and lands on them at the next flush.  So glLight, glMaterial,
+ * glPopAttrib leaves the material as set, while glMaterial, glLight,
+ * glPopAttrib restores it.  The model restores it always. */
 static void random_lights(fs_context *c, unsigned *s, bool scramble)
 {
     float v[4];
@@ -215,11 +230,9 @@ static void random_lights(fs_context *c, unsigned *s, bool scramble)
 }
 
 /* Current values, transformation and lighting state; glColorMaterial only
- * when color_material is set.  The tests leave it unset, as llvmpipe's
- * glPopAttrib(GL_LIGHTING_BIT) may then leave materials unrestored
- * (measured with GL_COLOR_MATERIAL off: glColorMaterial(GL_FRONT,
- * GL_DIFFUSE), GL_SPECULAR set, pushed, set again, popped: the second value
- * stays; see random_lights). */
+ * when color_material is set.  The tests leave it unset: glColorMaterial
+ * between a push and a glMaterial empties Mesa's vbo as glLight does, and
+ * the material then stays pending through the pop (random_lights). */
 static void random_vertex_state(fs_context *c, unsigned *s, bool color_material)
 {
     float v[4];
@@ -628,6 +641,83 @@ TEST(stack_depths_and_errors_vs_osmesa)
     CHECK_ONCE_VS_OSMESA(seq_stack_errors);
 }
 
+/* glMaterial under GL_COLOR_MATERIAL, for every face and mode of
+ * glColorMaterial and every face and property of glMaterial: llvmpipe
+ * leaves the tracked properties alone (pipeline/lighting.c
+ * set_untracked), the others take the value. */
+static void seq_color_material_tracking(fs_context *c, rec *r, unsigned seed)
+{
+    (void)seed;
+    static const GLenum faces[] = {GL_FRONT, GL_BACK, GL_FRONT_AND_BACK};
+    static const GLenum modes[] = {GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION, GL_AMBIENT_AND_DIFFUSE};
+    static const GLenum props[] = {GL_AMBIENT, GL_DIFFUSE, GL_SPECULAR, GL_EMISSION, GL_AMBIENT_AND_DIFFUSE};
+    float v = 0.0f;
+    for (int cf = 0; cf < 3; cf++)
+        for (int m = 0; m < 5; m++)
+            for (int mf = 0; mf < 3; mf++)
+                for (int p = 0; p < 5; p++) {
+                    G(Color4f, 0.25f, 0.5f, 0.75f, 1.0f);
+                    G(ColorMaterial, faces[cf], modes[m]);
+                    G(PushAttrib, GL_ENABLE_BIT);
+                    G(Enable, GL_COLOR_MATERIAL);
+                    v += 0.001f;
+                    const float val[4] = {v, -v, 2 * v, 1.0f};
+                    G(Materialfv, faces[mf], props[p], val);
+                    G0(PopAttrib);
+                    dump_materials(c, r);
+                    put_error(c, r, "glMaterial under GL_COLOR_MATERIAL");
+                }
+}
+
+TEST(color_material_tracking_vs_osmesa)
+{
+    CHECK_ONCE_VS_OSMESA(seq_color_material_tracking);
+}
+
+/* The known difference of random_lights: glLightf, glMaterialfv,
+ * glPopAttrib leaves OSMesa's material as set (0.9), the model restores
+ * it (0.1); glMaterialfv, glLightf, glPopAttrib restores it on both.
+ * Fails when either library changes its answer. */
+static void seq_deferred_material(fs_context *c, rec *r, unsigned seed)
+{
+    (void)seed;
+    const float a[4] = {0.1f, 0, 0, 1}, b[4] = {0.9f, 0, 0, 1};
+    for (int order = 0; order < 2; order++) {
+        G(Materialfv, GL_FRONT, GL_AMBIENT, a);
+        G(PushAttrib, GL_LIGHTING_BIT);
+        if (order == 0)
+            G(Lightf, GL_LIGHT0, GL_SPOT_EXPONENT, 3.0f + (float)order);
+        G(Materialfv, GL_FRONT, GL_AMBIENT, b);
+        if (order == 1)
+            G(Lightf, GL_LIGHT0, GL_SPOT_EXPONENT, 3.0f + (float)order);
+        G0(PopAttrib);
+        float v[4];
+        G(GetMaterialfv, GL_FRONT, GL_AMBIENT, v);
+        put(r, "front GL_AMBIENT after the pop", v[0]);
+    }
+}
+
+TEST(deferred_material_known_difference)
+{
+    static rec a, b;
+    a.n = b.n = 0;
+    osm o;
+    if (!osm_open(&o, 32, 32)) {
+        osm_close(&o);
+        SKIP("no OSMesa context");
+    }
+    seq_deferred_material(NULL, &a, 0);
+    osm_close(&o);
+    fs_context *c = fs_context_create(NULL, 32, 32);
+    CHECK(c != NULL);
+    seq_deferred_material(c, &b, 0);
+    fs_context_destroy(c);
+    CHECK_EQ_INT(a.n, 2);
+    CHECK_EQ_INT(b.n, 2);
+    CHECK(a.v[0] == 0.9f && a.v[1] == 0.1f); /* OSMesa: pending, then restored */
+    CHECK(b.v[0] == 0.1f && b.v[1] == 0.1f); /* the model: restored both times */
+}
+
 /* The errors of the setters of stored-only state (GL 1.5 spec 2.5: the
  * call has no other effect), Begin/End, and what display lists compile. */
 static void seq_setter_errors(fs_context *c, rec *r, unsigned seed)
@@ -758,6 +848,8 @@ TEST_LIST = {
     TEST_ENTRY(push_pop_restores_vs_osmesa),
     TEST_ENTRY(stack_depths_and_errors_vs_osmesa),
     TEST_ENTRY(setter_errors_vs_osmesa),
+    TEST_ENTRY(color_material_tracking_vs_osmesa),
+    TEST_ENTRY(deferred_material_known_difference),
     TEST_ENTRY(pop_marks_groups_dirty),
     TEST_END,
 };
@@ -773,6 +865,7 @@ static int print_sequences(void)
     static const struct { seq_fn fn; const char *name; unsigned seeds; } seqs[] = {
         {seq_initial, "initial", 1}, {seq_random, "random", 4}, {seq_push_pop, "push-pop", 2 * N(groups) + 8},
         {seq_stack_errors, "stack-errors", 1}, {seq_setter_errors, "setter-errors", 1},
+        {seq_color_material_tracking, "color-material", 1},
     };
     static rec a;
     long values = 0;
