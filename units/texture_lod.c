@@ -215,6 +215,8 @@ void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int face, int level)
         fs_unsupported(c, "GL_GENERATE_MIPMAP on a depth texture");
         return;
     }
+    if (b->wide) /* its generated levels are kept at 8 bits (no fs_tex_image.wide) */
+        fs_unsupported(c, "GL_GENERATE_MIPMAP on a texture stored above 8 bits");
     int w = b->width, h = b->height;
     for (int l = level + 1; l < FS_TEX_MAX_LEVELS && l <= t->max_level && (w > 1 || h > 1); l++) {
         w = w > 1 ? w / 2 : 1;
@@ -225,7 +227,7 @@ void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int face, int level)
             fs_error(c, GL_OUT_OF_MEMORY);
             return;
         }
-        free(img->texels);
+        fs_tex_image_free(img);
         img->texels = texels;
         img->width = w;
         img->height = h;
