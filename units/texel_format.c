@@ -11,10 +11,12 @@
  *   10 (and 2); the 12- and 16-bit formats at 16.
  *
  * Upload rounds an 8-bit value to the nearest n-bit one (q = round(v (2^n
- * - 1) / 255), no ties occur for n < 8), and an image of any other type
- * from its floats (fs_texel_from_float); sampling and readback expand q by
- * repeating its bits (5 bits: 3 -> 24, 4 -> 33, as measured; not
- * round(q 255 / 31), which gives 25 and 33).
+ * - 1) / 255), no ties occur for n < 8), integer data of other types
+ * through 8 bits first, float data from its floats (fs_texel_from_float);
+ * readback and the fixed-point sampler expand q by repeating its bits
+ * (5 bits: 3 -> 24, 4 -> 33, as measured; not round(q 255 / 31), which
+ * gives 25 and 33); the float sampler reads q / (2^n - 1) (texture_priv.h
+ * fs_tex_image.wide).
  */
 #include "texel_format.h"
 #include <math.h>

@@ -215,7 +215,9 @@ void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int face, int level)
         fs_unsupported(c, "GL_GENERATE_MIPMAP on a depth texture");
         return;
     }
-    if (b->wide) /* its generated levels are kept at 8 bits (no fs_tex_image.wide) */
+    /* The generated levels keep 8-bit texels only (no fs_tex_image.wide,
+     * as before it existed); above 8 bits that is visibly not llvmpipe's. */
+    if (b->wide && (b->wide_bits[0] > 8 || b->wide_bits[3] > 8))
         fs_unsupported(c, "GL_GENERATE_MIPMAP on a texture stored above 8 bits");
     int w = b->width, h = b->height;
     for (int l = level + 1; l < FS_TEX_MAX_LEVELS && l <= t->max_level && (w > 1 || h > 1); l++) {

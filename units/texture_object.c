@@ -456,12 +456,13 @@ void fs_tex_wide_from_texels(fs_tex_image *img, size_t i, size_t n)
     }
 }
 
-/* The bits of each stored component of a wide format (fs_tex_image.wide),
- * 0 for the constants of the expansion; false for another format. */
+/* The bits of each stored component of a format not stored at 8 bits
+ * (fs_tex_image.wide), 0 for the constants of the expansion; false for
+ * another format. */
 static bool wide_layout(GLint internalformat, GLenum base, uint8_t out[4])
 {
     int bits[4];
-    if (!fs_texel_wide_bits(internalformat, bits))
+    if (!fs_texel_float_bits(internalformat, bits))
         return false;
     for (int k = 0; k < 4; k++) {
         int src = texel_source(base, k);
@@ -509,15 +510,22 @@ static void unpack_image(fs_context *c, fs_tex_image *img, int dims, const int o
     /* A format stored at other than 8 bits is rounded from the floats, not
      * from 8-bit values (units/texel_format.c). */
     wide_conv wc;
-    const bool from_float = fs_texel_float_bits(img->internal_format, wc.bits);
-    if (img->wide) {
-        fs_texel_wide_bits(img->internal_format, wc.wbits);
-        wc.bytes = type == GL_UNSIGNED_BYTE && format != GL_COLOR_INDEX && !fs_pixel_xfer_color(c);
-    }
+    /* Above 8 bits the stored values come from the floats; below, from the
+     * 8-bit texels, which keep them exactly (texel_format.c). */
+    const bool above8 = img->wide && fs_texel_wide_bits(img->internal_format, wc.wbits);
+    const bool no_xfer = format != GL_COLOR_INDEX && !fs_pixel_xfer_color(c);
+    wc.bytes = type == GL_UNSIGNED_BYTE && no_xfer;
+    /* Below 8 bits llvmpipe rounds integer data to 8 bits first, then to
+     * n bits (measured through OSMesa, GL_UNSIGNED_SHORT into RGB5,
+     * RGB5_A1, R3_G3_B2: 0 of 16,384 values differ per component; from
+     * the 16-bit value directly 497 differ in RGB5); float data and data
+     * through transfer operations from its floats. */
+    const bool float_data = type == GL_FLOAT || type == GL_HALF_FLOAT || !no_xfer;
+    const bool from_float = fs_texel_float_bits(img->internal_format, wc.bits) && (above8 || float_data);
     for (int z = 0; z < d; z++)
         for (int y = 0; y < h; y++) {
             uint8_t *dst = texel_addr(img, off[0], off[1] + y, off[2] + z);
-            uint16_t *wdst = img->wide ? img->wide + (dst - img->texels) : NULL;
+            uint16_t *wdst = above8 ? img->wide + (dst - img->texels) : NULL;
             /* The pixel transfer operations of 3.6.5 (3.8.1: the image is
              * taken as by glDrawPixels up to the final conversion). */
             if (wdst) {
@@ -538,6 +546,8 @@ static void unpack_image(fs_context *c, fs_tex_image *img, int dims, const int o
             /* llvmpipe's precision for the format (units/texel_format.c). */
             if (!from_float)
                 fs_texel_quantize(img->internal_format, dst, (size_t)w, false);
+            if (img->wide && !above8)
+                fs_tex_wide_from_texels(img, (size_t)(dst - img->texels) / 4, (size_t)w);
         }
 }
 

@@ -31,13 +31,16 @@ typedef struct fs_tex_image {
     /* A DEPTH_COMPONENT image (base_format GL_DEPTH_COMPONENT) keeps one
      * uint32 depth of depth_bits bits per texel (units/texture_depth.h). */
     int depth_bits;
-    /* A format llvmpipe stores above 8 bits and filters in float (RGB10,
-     * RGB10_A2, the 12- and 16-bit normalized ones; units/texel_format.c)
-     * also keeps each texel as stored: 4 values per texel beside texels[]
-     * (same order, same expansion), component k an unsigned value of
-     * wide_bits[k] bits, or for wide_bits[k] 0 the constant 0 or 1 of the
-     * expansion.  The sampler reads these; texels[] holds the nearest
-     * 8-bit values for the other readers.  NULL for the other formats. */
+    /* A format llvmpipe stores at other than 8 bits (RGB10, RGB10_A2, the
+     * 12- and 16-bit normalized ones, RGB5, RGBA4, R3_G3_B2 ...;
+     * units/texel_format.c fs_texel_float_bits) also keeps each texel as
+     * stored: 4 values per texel beside texels[] (same order, same
+     * expansion), component k an unsigned value of wide_bits[k] bits, or
+     * for wide_bits[k] 0 the constant 0 or 1 of the expansion.  The float
+     * sampler reads these as q / (2^n - 1), as gallivm converts them (a
+     * format above 8 bits is always filtered in float); texels[] holds the
+     * 8-bit values the fixed-point sampler and the other readers use.
+     * NULL for the formats stored at 8 bits. */
     uint16_t *wide;
     uint8_t wide_bits[4];
 } fs_tex_image;

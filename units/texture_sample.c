@@ -894,7 +894,11 @@ static bool nearest_via_linear(const fs_tex_object *t, const fs_tex_lod *lp, int
  * (texture_priv.h): llvmpipe filters only 8-bit normalized formats in
  * fixed point (gallivm's AoS path needs a format that fits 8-bit unorm),
  * these always in float, whatever the wraps. */
-static bool tex_wide(const fs_tex_object *t) { return t->level[t->first_level].wide && !t->mpgrid; }
+static bool tex_wide(const fs_tex_object *t)
+{
+    const fs_tex_image *b = &t->level[t->first_level];
+    return b->wide && !t->mpgrid && (b->wide_bits[0] > 8 || b->wide_bits[3] > 8);
+}
 
 /* One pixel's texel from the selected levels: the float path or the 8-bit
  * one, the two levels blended for a MIPMAP_LINEAR filter. */
