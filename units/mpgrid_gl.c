@@ -128,7 +128,7 @@ void fs_exec_MPGridTexture(fs_context *c, GLenum target, GLsizei n, GLsizei m, G
      * no texels of their own: the sampler reads through the CTR. */
     for (int l = 0; l < FS_TEX_MAX_LEVELS; l++) {
         fs_tex_image *img = &t->level[l];
-        free(img->texels);
+        fs_tex_image_free(img);
         memset(img, 0, sizeof *img);
         if (l < L.levels) {
             img->width = L.n * fs_mpgrid_level_w(&L, l);

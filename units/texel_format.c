@@ -11,10 +11,12 @@
  *   10 (and 2); the 12- and 16-bit formats at 16.
  *
  * Upload rounds an 8-bit value to the nearest n-bit one (q = round(v (2^n
- * - 1) / 255), no ties occur for n < 8), and an image of any other type
- * from its floats (fs_texel_from_float); sampling and readback expand q by
- * repeating its bits (5 bits: 3 -> 24, 4 -> 33, as measured; not
- * round(q 255 / 31), which gives 25 and 33).
+ * - 1) / 255), no ties occur for n < 8), integer data of other types
+ * through 8 bits first, float data from its floats (fs_texel_from_float);
+ * readback and the fixed-point sampler expand q by repeating its bits
+ * (5 bits: 3 -> 24, 4 -> 33, as measured; not round(q 255 / 31), which
+ * gives 25 and 33); the float sampler reads q / (2^n - 1) (texture_priv.h
+ * fs_tex_image.wide).
  */
 #include "texel_format.h"
 #include <math.h>
@@ -179,4 +181,42 @@ void fs_texel_quantize(GLint f, uint8_t *rgba, size_t n, bool copy)
         for (int k = 0; k < 4; k++)
             if (bits[k] > 0 && bits[k] < 8)
                 rgba[4 * i + k] = requantize(rgba[4 * i + k], bits[k], truncate);
+}
+
+bool fs_texel_wide_bits(GLint f, int bits[4])
+{
+    const int w = unorm_wide_bits(f);
+    for (int k = 0; k < 4; k++)
+        bits[k] = w;
+    if (f == GL_RGB10_A2) /* GL_UNSIGNED_INT_2_10_10_10_REV's 2 alpha bits */
+        bits[3] = 2;
+    return w != 8;
+}
+
+/* A byte into 10 or 16 bits repeats its bits (measured through OSMesa,
+ * glGetTexImage as GL_FLOAT of RGB10 after GL_UNSIGNED_BYTE data: 0 of 768
+ * values differ; rounding v (2^n - 1) / 255 differs in 101: Mesa widens
+ * the 8-bit values, it does not go through float); into fewer bits
+ * (RGB10_A2's alpha) it rounds (0 of 256 differ). */
+unsigned fs_texel_wide_from8(unsigned v, int n)
+{
+    if (n < 8)
+        return (v * ((1u << n) - 1u) + 127u) / 255u;
+    unsigned q = v << (n - 8);
+    return q | (v >> (16 - n));
+}
+
+/* The floats round as into the other formats not stored at 8 bits,
+ * floor(f (2^n - 1) + 1/2) in float (fs_texel_from_float; measured through
+ * OSMesa glGetTexImage as GL_FLOAT, which gives q / (2^n - 1) exactly, for
+ * each of the 15 formats: 0 of 1024 values differ, GL_FLOAT and
+ * GL_UNSIGNED_SHORT data; tests/test_texture_wide.c samples them). */
+void fs_texel_wide_from_float(const int bits[4], const float *f, size_t n, bool bytes, uint16_t *out)
+{
+    for (size_t i = 0; i < 4 * n; i++) {
+        const float v = f[i] > 0.0f ? (f[i] < 1.0f ? f[i] : 1.0f) : 0.0f; /* NaN: 0 */
+        const int nb = bits[i % 4];
+        out[i] = (uint16_t)(bytes ? fs_texel_wide_from8((unsigned)lrintf(v * 255.0f), nb)
+                                  : (unsigned)floorf(v * (float)((1u << nb) - 1u) + 0.5f));
+    }
 }

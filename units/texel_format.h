@@ -31,4 +31,23 @@ bool fs_texel_float_bits(GLint internalformat, int bits[4]);
  * (an int[4] from fs_texel_float_bits) as llvmpipe rounds them at upload,
  * kept as RGBA8 (texture_priv.h). */
 void fs_texel_from_float(const void *bits, const float *f, size_t n, uint8_t *out);
+
+/* For a format llvmpipe stores above 8 bits and filters in float (RGB10,
+ * RGB10_A2, the 12- and 16-bit normalized formats): true, with the bits it
+ * keeps of R, G, B, A (of the RGBA group, before the base format's
+ * expansion).  False for the others. */
+bool fs_texel_wide_bits(GLint internalformat, int bits[4]);
+/* n RGBA float groups (after unpacking and transfer) as the values such a
+ * format stores (bits from fs_texel_wide_bits), RGBA per group; bytes: the
+ * groups came from GL_UNSIGNED_BYTE data without transfer operations. */
+void fs_texel_wide_from_float(const int bits[4], const float *f, size_t n, bool bytes, uint16_t *out);
+/* An 8-bit value v as an n-bit one as llvmpipe stores a byte (see there). */
+unsigned fs_texel_wide_from8(unsigned v, int n);
+/* A stored value q of n bits as the sampler's float (n 0: q is the
+ * constant itself), as gallivm converts a normalized channel: q times
+ * 1 / (2^n - 1) in float. */
+static inline float fs_texel_wide_float(unsigned q, int n)
+{
+    return n ? (float)q * (1.0f / (float)((1u << n) - 1u)) : (float)q;
+}
 #endif

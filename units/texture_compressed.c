@@ -296,8 +296,7 @@ static void compressed_image(fs_context *c, int dims, GLenum target, GLint level
             return;
         }
     }
-    free(img->texels);
-    free(img->compressed);
+    fs_tex_image_free(img);
     *img = (fs_tex_image){.width = texels ? w : 0, .height = texels ? h : 0, .depth = texels ? 1 : 0,
                           .internal_format = (GLint)internalformat, .base_format = base, .texels = texels,
                           .compressed = blocks, .compressed_size = blocks ? (size_t)imageSize : 0};

@@ -215,6 +215,10 @@ void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int face, int level)
         fs_unsupported(c, "GL_GENERATE_MIPMAP on a depth texture");
         return;
     }
+    /* The generated levels keep 8-bit texels only (no fs_tex_image.wide,
+     * as before it existed); above 8 bits that is visibly not llvmpipe's. */
+    if (b->wide && (b->wide_bits[0] > 8 || b->wide_bits[3] > 8))
+        fs_unsupported(c, "GL_GENERATE_MIPMAP on a texture stored above 8 bits");
     int w = b->width, h = b->height;
     for (int l = level + 1; l < FS_TEX_MAX_LEVELS && l <= t->max_level && (w > 1 || h > 1); l++) {
         w = w > 1 ? w / 2 : 1;
@@ -225,7 +229,7 @@ void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int face, int level)
             fs_error(c, GL_OUT_OF_MEMORY);
             return;
         }
-        free(img->texels);
+        fs_tex_image_free(img);
         img->texels = texels;
         img->width = w;
         img->height = h;

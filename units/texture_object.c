@@ -38,10 +38,8 @@ static void object_release(fs_tex_object *t)
 {
     fs_mpgrid_gl_release(t);
     for (int f = 0; f < FS_TEX_FACES; f++)
-        for (int i = 0; i < FS_TEX_MAX_LEVELS; i++) {
-            free(fs_tex_levels(t, f)[i].texels);
-            free(fs_tex_levels(t, f)[i].compressed);
-        }
+        for (int i = 0; i < FS_TEX_MAX_LEVELS; i++)
+            fs_tex_image_free(&fs_tex_levels(t, f)[i]);
 }
 
 int fs_texture_init(fs_context *c)
@@ -409,21 +407,85 @@ static bool float_format(GLint f)
     }
 }
 
-/* Keeps the components of the base internal format (table 3.15) and
- * expands them as the sampler reads them (see fs_tex_image). */
-static void store_texel(uint8_t *dst, const uint8_t rgba[4], GLenum base)
+/* The source of component k of a stored texel of base format `base`
+ * (table 3.15's components, expanded as the sampler reads them, see
+ * fs_tex_image): a component 0-3 of the RGBA group or a constant. */
+enum { SRC_ZERO = 4, SRC_ONE = 5 };
+static int texel_source(GLenum base, int k)
 {
     switch (base) {
-    case GL_LUMINANCE: dst[0] = dst[1] = dst[2] = rgba[0]; dst[3] = 255; break;
-    case GL_LUMINANCE_ALPHA: dst[0] = dst[1] = dst[2] = rgba[0]; dst[3] = rgba[3]; break;
-    case GL_ALPHA: dst[0] = dst[1] = dst[2] = 0; dst[3] = rgba[3]; break;
-    case GL_INTENSITY: dst[0] = dst[1] = dst[2] = dst[3] = rgba[0]; break;
-    case GL_RGB: dst[0] = rgba[0]; dst[1] = rgba[1]; dst[2] = rgba[2]; dst[3] = 255; break;
+    case GL_LUMINANCE: return k < 3 ? 0 : SRC_ONE;
+    case GL_LUMINANCE_ALPHA: return k < 3 ? 0 : 3;
+    case GL_ALPHA: return k < 3 ? SRC_ZERO : 3;
+    case GL_INTENSITY: return 0;
+    case GL_RGB: return k < 3 ? k : SRC_ONE;
     /* ARB_texture_rg: the missing components read as G = B = 0, A = 1. */
-    case GL_RED: dst[0] = rgba[0]; dst[1] = dst[2] = 0; dst[3] = 255; break;
-    case GL_RG: dst[0] = rgba[0]; dst[1] = rgba[1]; dst[2] = 0; dst[3] = 255; break;
-    default: memcpy(dst, rgba, 4); break;
+    case GL_RED: return k == 0 ? 0 : k < 3 ? SRC_ZERO : SRC_ONE;
+    case GL_RG: return k < 2 ? k : k == 2 ? SRC_ZERO : SRC_ONE;
+    default: return k;
     }
+}
+
+static void store_texel(uint8_t *dst, const uint8_t rgba[4], GLenum base)
+{
+    uint8_t in[4];
+    memcpy(in, rgba, 4);
+    for (int k = 0; k < 4; k++) {
+        int src = texel_source(base, k);
+        dst[k] = src == SRC_ZERO ? 0 : src == SRC_ONE ? 255 : in[src];
+    }
+}
+
+/* The same for the stored values of a wide image (fs_tex_image.wide). */
+static void store_wide(uint16_t *dst, const uint16_t rgba[4], GLenum base)
+{
+    uint16_t in[4];
+    memcpy(in, rgba, sizeof in);
+    for (int k = 0; k < 4; k++) {
+        int src = texel_source(base, k);
+        dst[k] = src == SRC_ZERO ? 0 : src == SRC_ONE ? 1 : in[src];
+    }
+}
+
+void fs_tex_wide_from_texels(fs_tex_image *img, size_t i, size_t n)
+{
+    /* A component of the expansion is 0 or 255 in texels[]. */
+    for (size_t j = 4 * i; j < 4 * (i + n); j++) {
+        int nb = img->wide_bits[j % 4];
+        img->wide[j] = (uint16_t)(nb ? fs_texel_wide_from8(img->texels[j], nb) : img->texels[j] == 255);
+    }
+}
+
+/* The bits of each stored component of a format not stored at 8 bits
+ * (fs_tex_image.wide), 0 for the constants of the expansion; false for
+ * another format. */
+static bool wide_layout(GLint internalformat, GLenum base, uint8_t out[4])
+{
+    int bits[4];
+    if (!fs_texel_float_bits(internalformat, bits))
+        return false;
+    for (int k = 0; k < 4; k++) {
+        int src = texel_source(base, k);
+        out[k] = (uint8_t)(src >= SRC_ZERO ? 0 : bits[src]);
+    }
+    return true;
+}
+
+/* The final conversion of a row of a wide image's upload: the 8-bit
+ * texels (fs_texel_from_float) and the stored values, unexpanded. */
+typedef struct wide_conv {
+    int bits[4];        /* fs_texel_float_bits */
+    int wbits[4];       /* fs_texel_wide_bits */
+    bool bytes;         /* GL_UNSIGNED_BYTE data without transfer */
+    const uint8_t *row; /* the row's first 8-bit texel */
+    uint16_t *wide;     /* its first stored value */
+} wide_conv;
+
+static void wide_from_float(const void *arg, const float *f, size_t n, uint8_t *out)
+{
+    const wide_conv *w = arg;
+    fs_texel_from_float(w->bits, f, n, out);
+    fs_texel_wide_from_float(w->wbits, f, n, w->bytes, w->wide + (out - w->row));
 }
 
 /* Texel (x, y, z) of an image (slices of 3D images follow each other). */
@@ -447,26 +509,45 @@ static void unpack_image(fs_context *c, fs_tex_image *img, int dims, const int o
         return;
     /* A format stored at other than 8 bits is rounded from the floats, not
      * from 8-bit values (units/texel_format.c). */
-    int fbits[4];
-    const bool from_float = fs_texel_float_bits(img->internal_format, fbits);
+    wide_conv wc;
+    /* Above 8 bits the stored values come from the floats; below, from the
+     * 8-bit texels, which keep them exactly (texel_format.c). */
+    const bool above8 = img->wide && fs_texel_wide_bits(img->internal_format, wc.wbits);
+    const bool no_xfer = format != GL_COLOR_INDEX && !fs_pixel_xfer_color(c);
+    wc.bytes = type == GL_UNSIGNED_BYTE && no_xfer;
+    /* Below 8 bits llvmpipe rounds integer data to 8 bits first, then to
+     * n bits (measured through OSMesa, GL_UNSIGNED_SHORT into RGB5,
+     * RGB5_A1, R3_G3_B2: 0 of 16,384 values differ per component; from
+     * the 16-bit value directly 497 differ in RGB5); float data and data
+     * through transfer operations from its floats. */
+    const bool float_data = type == GL_FLOAT || type == GL_HALF_FLOAT || !no_xfer;
+    const bool from_float = fs_texel_float_bits(img->internal_format, wc.bits) && (above8 || float_data);
     for (int z = 0; z < d; z++)
         for (int y = 0; y < h; y++) {
             uint8_t *dst = texel_addr(img, off[0], off[1] + y, off[2] + z);
+            uint16_t *wdst = above8 ? img->wide + (dst - img->texels) : NULL;
             /* The pixel transfer operations of 3.6.5 (3.8.1: the image is
              * taken as by glDrawPixels up to the final conversion). */
-            if (from_float)
-                fs_pixel_unpack_transfer_conv(c, &l, pixels, z, y, 0, w, dst, fs_texel_from_float, fbits);
-            else
+            if (wdst) {
+                wc.row = dst;
+                wc.wide = wdst;
+                fs_pixel_unpack_transfer_conv(c, &l, pixels, z, y, 0, w, dst, wide_from_float, &wc);
+            } else if (from_float) {
+                fs_pixel_unpack_transfer_conv(c, &l, pixels, z, y, 0, w, dst, fs_texel_from_float, wc.bits);
+            } else {
                 fs_pixel_unpack_transfer_rgba8(c, &l, pixels, z, y, 0, w, dst);
+            }
             if (img->base_format != GL_RGBA)
                 for (int x = 0; x < w; x++) {
-                    uint8_t rgba[4];
-                    memcpy(rgba, dst + 4 * x, 4);
-                    store_texel(dst + 4 * x, rgba, img->base_format);
+                    store_texel(dst + 4 * x, dst + 4 * x, img->base_format);
+                    if (wdst)
+                        store_wide(wdst + 4 * x, wdst + 4 * x, img->base_format);
                 }
             /* llvmpipe's precision for the format (units/texel_format.c). */
             if (!from_float)
                 fs_texel_quantize(img->internal_format, dst, (size_t)w, false);
+            if (img->wide && !above8)
+                fs_tex_wide_from_texels(img, (size_t)(dst - img->texels) / 4, (size_t)w);
         }
 }
 
@@ -484,17 +565,27 @@ static void unpack_inner(fs_context *c, fs_tex_image *img, int dims, int border,
     }
     fs_tex_image whole = {.width = w, .height = h, .depth = d, .base_format = img->base_format,
                           .internal_format = img->internal_format, .depth_bits = img->depth_bits};
-    whole.texels = malloc((size_t)w * (size_t)h * (size_t)d * 4);
-    if (!whole.texels) {
+    memcpy(whole.wide_bits, img->wide_bits, sizeof whole.wide_bits);
+    const size_t n = (size_t)w * (size_t)h * (size_t)d * 4;
+    whole.texels = malloc(n);
+    whole.wide = img->wide ? malloc(n * sizeof *whole.wide) : NULL;
+    if (!whole.texels || (img->wide && !whole.wide)) {
+        fs_tex_image_free(&whole);
         fs_error(c, GL_OUT_OF_MEMORY);
         return;
     }
     unpack_image(c, &whole, dims, no_offset, w, h, d, format, type, pixels);
     int by = dims > 1 ? border : 0, bz = dims > 2 ? border : 0;
     for (int z = 0; z < img->depth; z++)
-        for (int y = 0; y < img->height; y++)
-            memcpy(texel_addr(img, 0, y, z), texel_addr(&whole, border, y + by, z + bz), (size_t)img->width * 4);
-    free(whole.texels);
+        for (int y = 0; y < img->height; y++) {
+            uint8_t *to = texel_addr(img, 0, y, z);
+            const uint8_t *from = texel_addr(&whole, border, y + by, z + bz);
+            memcpy(to, from, (size_t)img->width * 4);
+            if (img->wide)
+                memcpy(img->wide + (to - img->texels), whole.wide + (from - whole.texels),
+                       (size_t)img->width * 4 * sizeof *img->wide);
+        }
+    fs_tex_image_free(&whole);
 }
 
 GLenum fs_tex_base_format(GLint internalformat)
@@ -592,18 +683,25 @@ static fs_tex_image *define_level(fs_context *c, fs_tex_object *t, int face, GLi
 {
     fs_tex_image *img = &fs_tex_levels(t, face)[level];
     uint8_t *texels = NULL;
+    uint16_t *wide = NULL;
+    uint8_t wide_bits[4];
+    const bool is_wide = wide_layout(internalformat, base_format(internalformat), wide_bits);
     if (size[0] > 0 && size[1] > 0 && size[2] > 0) {
-        texels = calloc((size_t)size[0] * (size_t)size[1] * (size_t)size[2], 4);
-        if (!texels) {
+        const size_t n = (size_t)size[0] * (size_t)size[1] * (size_t)size[2];
+        texels = calloc(n, 4);
+        wide = is_wide ? calloc(n, 4 * sizeof *wide) : NULL;
+        if (!texels || (is_wide && !wide)) {
+            free(texels);
+            free(wide);
             fs_error(c, GL_OUT_OF_MEMORY);
             return NULL;
         }
     }
-    free(img->texels);
-    free(img->compressed); /* an uncompressed image replaces a compressed one */
-    img->compressed = NULL;
-    img->compressed_size = 0;
+    fs_tex_image_free(img); /* an uncompressed image replaces a compressed one */
     img->texels = texels;
+    img->wide = wide;
+    if (wide)
+        memcpy(img->wide_bits, wide_bits, sizeof wide_bits);
     img->width = texels ? size[0] : 0;
     img->height = texels ? size[1] : 0;
     img->depth = texels ? size[2] : 0;
@@ -815,6 +913,10 @@ static void copy_from_framebuffer(fs_context *c, fs_tex_image *img, const int ds
             uint8_t *t = texel_addr(img, dst[0] + i, dst[1] + j, dst[2]);
             store_texel(t, src, img->base_format);
             fs_texel_quantize(img->internal_format, t, 1, true);
+            /* A wide format's stored values as from a byte upload (not
+             * measured for copies). */
+            if (img->wide)
+                fs_tex_wide_from_texels(img, (size_t)(t - img->texels) / 4, 1);
         }
     }
 }

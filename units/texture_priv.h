@@ -5,6 +5,7 @@
 #ifndef FS_TEXTURE_PRIV_H
 #define FS_TEXTURE_PRIV_H
 #include <stddef.h>
+#include <stdlib.h>
 #include "texture_unit.h"
 #include "../pipeline/context.h"
 
@@ -30,7 +31,34 @@ typedef struct fs_tex_image {
     /* A DEPTH_COMPONENT image (base_format GL_DEPTH_COMPONENT) keeps one
      * uint32 depth of depth_bits bits per texel (units/texture_depth.h). */
     int depth_bits;
+    /* A format llvmpipe stores at other than 8 bits (RGB10, RGB10_A2, the
+     * 12- and 16-bit normalized ones, RGB5, RGBA4, R3_G3_B2 ...;
+     * units/texel_format.c fs_texel_float_bits) also keeps each texel as
+     * stored: 4 values per texel beside texels[] (same order, same
+     * expansion), component k an unsigned value of wide_bits[k] bits, or
+     * for wide_bits[k] 0 the constant 0 or 1 of the expansion.  The float
+     * sampler reads these as q / (2^n - 1), as gallivm converts them (a
+     * format above 8 bits is always filtered in float); texels[] holds the
+     * 8-bit values the fixed-point sampler and the other readers use.
+     * NULL for the formats stored at 8 bits. */
+    uint16_t *wide;
+    uint8_t wide_bits[4];
 } fs_tex_image;
+
+/* Frees an image's texels (both copies) and blocks, leaving it undefined. */
+static inline void fs_tex_image_free(fs_tex_image *img)
+{
+    free(img->texels);
+    free(img->wide);
+    free(img->compressed);
+    img->texels = NULL;
+    img->wide = NULL;
+    img->compressed = NULL;
+    img->compressed_size = 0;
+}
+/* Sets the stored values of n texels from texel i on of a wide image
+ * (fs_tex_image.wide) from its 8-bit texels (texture_object.c). */
+void fs_tex_wide_from_texels(fs_tex_image *img, size_t i, size_t n);
 
 /* The texture targets as indices into a unit's bindings and enables and
  * the default objects (GL 1.5 spec 3.8.12: each target has its own texture

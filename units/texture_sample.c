@@ -40,6 +40,7 @@
 #include "mpgrid_gl.h"
 #include "texture_reads.h"
 #include "texture_depth.h"
+#include "texel_format.h"
 #include "../pipeline/context.h"
 #include "../glext/GL_FRAGSIM_footprint_filter.h"
 
@@ -480,6 +481,13 @@ static void fetch_f(tex_fetch *f, const fs_tex_image *img, const int xyz[3], flo
     }
     uint8_t tmp[4];
     const uint8_t *p = texel_at(f, img, xyz, tmp);
+    if (img->wide && !f->mpgrid) {
+        /* A format stored above 8 bits: its own values (texture_priv.h). */
+        const uint16_t *q = img->wide + (p - img->texels);
+        for (int k = 0; k < 4; k++)
+            out[k] = fs_texel_wide_float(q[k], img->wide_bits[k]);
+        return;
+    }
     for (int k = 0; k < 4; k++)
         out[k] = (float)p[k] * (1.0f / 255.0f);
 }
@@ -882,6 +890,16 @@ static bool nearest_via_linear(const fs_tex_object *t, const fs_tex_lod *lp, int
     return other.minified == min_linear;
 }
 
+/* Whether a texture is sampled from its stored values above 8 bits
+ * (texture_priv.h): llvmpipe filters only 8-bit normalized formats in
+ * fixed point (gallivm's AoS path needs a format that fits 8-bit unorm),
+ * these always in float, whatever the wraps. */
+static bool tex_wide(const fs_tex_object *t)
+{
+    const fs_tex_image *b = &t->level[t->first_level];
+    return b->wide && !t->mpgrid && (b->wide_bits[0] > 8 || b->wide_bits[3] > 8);
+}
+
 /* One pixel's texel from the selected levels: the float path or the 8-bit
  * one, the two levels blended for a MIPMAP_LINEAR filter. */
 static void sample_pixel(tex_fetch *f, const lod_result *lr, GLenum img_filter, bool mip_linear, bool float_path,
@@ -959,7 +977,7 @@ static bool sample_unit(fs_context *c, fs_quad *q, int u, const fs_quad_tex *qt,
      * target has takes the float path, whatever the filter (its MIPmap
      * blend then rounds differently, and LINEAR may reach the border). */
     bool depth = t->level[t->first_level].base_format == GL_DEPTH_COMPONENT;
-    bool float_path = !fs_tex_simple_wraps(t) || depth; /* depth: texture_depth.c */
+    bool float_path = !fs_tex_simple_wraps(t) || depth || tex_wide(t); /* depth: texture_depth.c */
     bool via_linear = float_path && img_filter == GL_NEAREST && c->raster.tex_pair_lod && fs_tex_pair_decides(t) &&
                       nearest_via_linear(t, &lp, dims, qt);
     fs_tex_reads reads;
