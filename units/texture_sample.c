@@ -999,9 +999,32 @@ static inline void nearest_axis4(const float s[4], int len, GLenum wrap, bool po
 static inline void linear_axis4(const float s[4], int len, GLenum wrap, bool pot, int i0[4], int i1[4],
                                 int frac[4])
 {
+    bool npot = wrap == GL_REPEAT && !pot;
+#if defined(__SSE2__)
+    if (!npot) {
+        /* linear_pos8 and linear_pair8 in four lanes, the same operations
+         * (the subtraction wraps as the uint32 one does, srai is >>). */
+        __m128i v = _mm_cvtps_epi32(_mm_mul_ps(_mm_loadu_ps(s), _mm_set1_ps((float)(len << 8))));
+        v = _mm_sub_epi32(v, _mm_set1_epi32(128));
+        _mm_storeu_si128((__m128i *)frac, _mm_and_si128(v, _mm_set1_epi32(0xff)));
+        __m128i hi = _mm_set1_epi32(len - 1);
+        __m128i x[2] = {_mm_srai_epi32(v, 8), _mm_add_epi32(_mm_srai_epi32(v, 8), _mm_set1_epi32(1))};
+        for (int k = 0; k < 2; k++) {
+            if (wrap == GL_REPEAT) {
+                x[k] = _mm_and_si128(x[k], hi);
+            } else { /* above len - 1: len - 1; then below 0: 0 */
+                __m128i above = _mm_cmpgt_epi32(x[k], hi);
+                x[k] = _mm_or_si128(_mm_andnot_si128(above, x[k]), _mm_and_si128(above, hi));
+                x[k] = _mm_andnot_si128(_mm_cmpgt_epi32(_mm_setzero_si128(), x[k]), x[k]);
+            }
+        }
+        _mm_storeu_si128((__m128i *)i0, x[0]);
+        _mm_storeu_si128((__m128i *)i1, x[1]);
+        return;
+    }
+#endif
     float u[4];
     int32_t v[4];
-    bool npot = wrap == GL_REPEAT && !pot;
     for (int i = 0; i < 4; i++)
         u[i] = npot ? linear_pos8(s[i], len, GL_REPEAT, false) : linear_pos8(s[i], len, GL_CLAMP_TO_EDGE, true);
     round_even4(u, v);
