@@ -139,6 +139,11 @@ struct fs_texture_state {
     size_t count, cap;
     GLuint next_name;           /* where glGenTextures starts looking */
     uint64_t quads_sampled, quads_incomplete;
+    /* Sampling takes the reference path only (fs_texture_set_generic);
+     * quads_fast counts the quads that took the 8-bit quad path
+     * (texture_sample.c). */
+    bool generic;
+    uint64_t quads_fast;
     /* The proxy targets' levels (3.8.11), by target: state only, no texels. */
     fs_tex_image proxy[FS_TEX_TARGETS][FS_TEX_MAX_LEVELS];
     /* Footprint filters (units/footprint.h) by M (8, 16, 32, 64), snapping

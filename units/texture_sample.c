@@ -43,6 +43,9 @@
 #include "texel_format.h"
 #include "../pipeline/context.h"
 #include "../glext/GL_FRAGSIM_footprint_filter.h"
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #ifdef __clang__
 /* Every float operation must round separately, as llvmpipe's do. */
@@ -360,35 +363,43 @@ static inline const uint8_t *texel_at(tex_fetch *f, const fs_tex_image *img, con
     return img->texels + (((size_t)xyz[2] * (size_t)img->height + (size_t)y) * (size_t)img->width + (size_t)x) * 4;
 }
 
+/* NEAREST's texel on one axis of the 8-bit path from s: floor(s * len)
+ * wrapped, or fract(s)'s on a repeated non-power-of-two axis. */
+static inline int nearest_coord8(float s, int len, GLenum wrap, bool pot)
+{
+    return wrap == GL_REPEAT && !pot ? repeat_npot_nearest(s, len) : wrap_nearest(to_int_floor(s * (float)len), len, wrap);
+}
+
 static void sample_nearest8(tex_fetch *f, const fs_tex_image *img, const float st[3], uint8_t out[4])
 {
     int xyz[3];
-    for (int a = 0; a < 3; a++) {
-        int len = image_len(img, a);
-        xyz[a] = f->wrap[a] == GL_REPEAT && !f->pot[a] ? repeat_npot_nearest(st[a], len)
-                                                       : wrap_nearest(to_int_floor(st[a] * (float)len), len, f->wrap[a]);
-    }
+    for (int a = 0; a < 3; a++)
+        xyz[a] = nearest_coord8(st[a], image_len(img, a), f->wrap[a], f->pot[a]);
     uint8_t tmp[4];
     memcpy(out, texel_at(f, img, xyz, tmp), 4);
 }
 
-static void linear_coord8(float s, int len, GLenum wrap, bool pot, int *i0, int *i1, int *frac)
+/* LINEAR's texel position on one axis of the 8-bit path before rounding:
+ * s * len in 8.8 fixed point, or on a repeated axis that is not a power of
+ * two fract(s)'s (gallivm lp_build_coord_repeat_npot_linear_int). */
+static inline float linear_pos8(float s, int len, GLenum wrap, bool pot)
 {
-    if (wrap == GL_REPEAT && !pot) {
-        /* Not a power of two: fract(s) in 8.8 fixed point, less half a
-         * texel (gallivm lp_build_coord_repeat_npot_linear_int). */
-        float fr = s - floorf(s);
-        int32_t v = to_int_round_even(fr * (float)len * 256.0f);
-        v = (int32_t)((uint32_t)v - 128u);
-        *frac = v & 0xff;
-        repeat_npot_pair((int)(v >> 8), len, i0, i1);
-        return;
-    }
-    int32_t v = to_int_round_even(s * (float)(len << 8));
+    if (wrap == GL_REPEAT && !pot)
+        return (s - floorf(s)) * (float)len * 256.0f;
+    return s * (float)(len << 8);
+}
+
+/* The pair and weight from the rounded position v: less half a texel, the
+ * 8 fraction bits the weight, the pair wrapped (a power-of-two REPEAT by
+ * mask) or clamped. */
+static inline void linear_pair8(int32_t v, int len, GLenum wrap, bool pot, int *i0, int *i1, int *frac)
+{
     v = (int32_t)((uint32_t)v - 128u);
     *frac = v & 0xff;
     int x0 = (int)(v >> 8);
-    if (wrap == GL_REPEAT) {
+    if (wrap == GL_REPEAT && !pot) {
+        repeat_npot_pair(x0, len, i0, i1);
+    } else if (wrap == GL_REPEAT) {
         *i0 = x0 & (len - 1);
         *i1 = (x0 + 1) & (len - 1);
     } else {
@@ -396,6 +407,11 @@ static void linear_coord8(float s, int len, GLenum wrap, bool pot, int *i0, int 
         int x1 = x0 + 1;
         *i1 = x1 < 0 ? 0 : x1 > len - 1 ? len - 1 : x1;
     }
+}
+
+static void linear_coord8(float s, int len, GLenum wrap, bool pot, int *i0, int *i1, int *frac)
+{
+    linear_pair8(to_int_round_even(linear_pos8(s, len, wrap, pot)), len, wrap, pot, i0, i1, frac);
 }
 
 /* The texel pair i[axis][0..1] and weight w[axis] of LINEAR on each axis. */
@@ -864,12 +880,12 @@ static void footprint_quad(fs_context *c, fs_tex_object *t, fs_quad *q, const fl
  * (tex_fetch). */
 static void project_coords(int dims, const float (*v[4])[4], float st[3][4])
 {
-    for (int i = 0; i < 4; i++) {
-        const float *tc = *v[i];
-        float oq = 1.0f / tc[3];
-        for (int a = 0; a < 3; a++)
-            st[a][i] = a < dims ? tc[a] * oq : 0.0f;
-    }
+    float oq[4];
+    for (int i = 0; i < 4; i++)
+        oq[i] = 1.0f / (*v[i])[3];
+    for (int a = 0; a < 3; a++)
+        for (int i = 0; i < 4; i++)
+            st[a][i] = a < dims ? (*v[i])[a] * oq[i] : 0.0f;
 }
 
 /* Whether this NEAREST quad in llvmpipe's float path goes through the
@@ -926,6 +942,183 @@ static void sample_pixel(tex_fetch *f, const lod_result *lr, GLenum img_filter, 
     for (int k = 0; k < 4; k++)
         tex[k] = (float)v[k] * (1.0f / 255.0f);
 }
+
+/* ---- the quad's 8-bit path (issue 23) ---- */
+
+/* What sample_pixel computes on its 8-bit path, for the four pixels of a
+ * quad at once, when nothing but the texels is wanted: a 1D or 2D texture
+ * of 8-bit texels (not depth, not MP-Grid, whose reads go through the CTR)
+ * with no observer recording the reads.  The same conversions, wraps and
+ * lerps as sample_level8's (shared helpers above), so the same bits
+ * (tests/test_texture_fast.c holds the two paths equal; a context can keep
+ * the reference path, fs_texture_set_generic).  Pixels outside the quad's
+ * mask are sampled too: every index is wrapped or clamped into the image
+ * whatever the coordinate, and their texels are not used. */
+
+/* to_int_round_even and to_int_floor of four values. */
+static inline void round_even4(const float v[4], int32_t out[4])
+{
+#if defined(__SSE2__)
+    /* cvtps2dq rounds in the current mode (nearest even, as nearbyintf
+     * does) and gives INT32_MIN out of range or for NaN. */
+    _mm_storeu_si128((__m128i *)out, _mm_cvtps_epi32(_mm_loadu_ps(v)));
+#else
+    for (int i = 0; i < 4; i++)
+        out[i] = to_int_round_even(v[i]);
+#endif
+}
+
+static inline void floor4(const float v[4], int32_t out[4])
+{
+#if defined(__SSE2__)
+    /* Truncation less 1 where it rounded up (negative non-integers); below
+     * -2^31 truncation's INT32_MIN would become INT32_MAX, so those take
+     * INT32_MIN again; 2^31 and up and NaN stay INT32_MIN. */
+    __m128 x = _mm_loadu_ps(v);
+    __m128i t = _mm_cvttps_epi32(x);
+    t = _mm_add_epi32(t, _mm_castps_si128(_mm_cmpgt_ps(_mm_cvtepi32_ps(t), x)));
+    __m128i low = _mm_castps_si128(_mm_cmplt_ps(x, _mm_set1_ps(-2147483648.0f)));
+    t = _mm_or_si128(_mm_andnot_si128(low, t), _mm_and_si128(low, _mm_set1_epi32(INT32_MIN)));
+    _mm_storeu_si128((__m128i *)out, t);
+#else
+    for (int i = 0; i < 4; i++)
+        out[i] = to_int_floor(v[i]);
+#endif
+}
+
+/* lerp8 without its wrap: a + ((w (b - a) + 128) >> 8) is
+ * (a (256 - w) + b w + 128) >> 8, whose terms are never negative and
+ * whose sum stays below 2^16 for a, b <= 255 and w <= 256, so it is
+ * computed modulo 2^16 (eight to a vector register, pmullw). */
+static inline uint16_t lerp8u(uint16_t w, uint16_t a, uint16_t b)
+{
+    uint16_t sum = (uint16_t)((uint16_t)(a * (uint16_t)(256 - w)) + (uint16_t)(b * w) + 128u);
+    return (uint16_t)(sum >> 8);
+}
+
+/* One axis of the quad: NEAREST's texels or LINEAR's pairs and weights.
+ * Each loop calls the shared helper with the common wraps as constants, so
+ * that the compiler specialises it (one helper, no copies). */
+static inline void nearest_axis4(const float s[4], int len, GLenum wrap, bool pot, int32_t x[4])
+{
+    if (wrap == GL_REPEAT && !pot) {
+        for (int i = 0; i < 4; i++)
+            x[i] = nearest_coord8(s[i], len, GL_REPEAT, false);
+        return;
+    }
+    float u[4];
+    for (int i = 0; i < 4; i++)
+        u[i] = s[i] * (float)len;
+    floor4(u, x);
+    for (int i = 0; i < 4; i++)
+        x[i] = wrap_nearest(x[i], len, wrap);
+}
+
+static inline void linear_axis4(const float s[4], int len, GLenum wrap, bool pot, int i0[4], int i1[4],
+                                int frac[4])
+{
+    bool npot = wrap == GL_REPEAT && !pot;
+#if defined(__SSE2__)
+    if (!npot) {
+        /* linear_pos8 and linear_pair8 in four lanes, the same operations
+         * (the subtraction wraps as the uint32 one does, srai is >>). */
+        __m128i v = _mm_cvtps_epi32(_mm_mul_ps(_mm_loadu_ps(s), _mm_set1_ps((float)(len << 8))));
+        v = _mm_sub_epi32(v, _mm_set1_epi32(128));
+        _mm_storeu_si128((__m128i *)frac, _mm_and_si128(v, _mm_set1_epi32(0xff)));
+        __m128i hi = _mm_set1_epi32(len - 1);
+        __m128i x[2] = {_mm_srai_epi32(v, 8), _mm_add_epi32(_mm_srai_epi32(v, 8), _mm_set1_epi32(1))};
+        for (int k = 0; k < 2; k++) {
+            if (wrap == GL_REPEAT) {
+                x[k] = _mm_and_si128(x[k], hi);
+            } else { /* above len - 1: len - 1; then below 0: 0 */
+                __m128i above = _mm_cmpgt_epi32(x[k], hi);
+                x[k] = _mm_or_si128(_mm_andnot_si128(above, x[k]), _mm_and_si128(above, hi));
+                x[k] = _mm_andnot_si128(_mm_cmpgt_epi32(_mm_setzero_si128(), x[k]), x[k]);
+            }
+        }
+        _mm_storeu_si128((__m128i *)i0, x[0]);
+        _mm_storeu_si128((__m128i *)i1, x[1]);
+        return;
+    }
+#endif
+    float u[4];
+    int32_t v[4];
+    for (int i = 0; i < 4; i++)
+        u[i] = npot ? linear_pos8(s[i], len, GL_REPEAT, false) : linear_pos8(s[i], len, GL_CLAMP_TO_EDGE, true);
+    round_even4(u, v);
+    if (npot) {
+        for (int i = 0; i < 4; i++)
+            linear_pair8(v[i], len, GL_REPEAT, false, &i0[i], &i1[i], &frac[i]);
+    } else if (wrap == GL_REPEAT) {
+        for (int i = 0; i < 4; i++)
+            linear_pair8(v[i], len, GL_REPEAT, true, &i0[i], &i1[i], &frac[i]);
+    } else {
+        for (int i = 0; i < 4; i++)
+            linear_pair8(v[i], len, GL_CLAMP_TO_EDGE, true, &i0[i], &i1[i], &frac[i]);
+    }
+}
+
+/* The quad's texels of one level, RGBA per pixel (sample_level8). */
+static void level_quad8(const fs_tex_image *img, GLenum filter, const GLenum wrap[2], const bool pot[2],
+                        const float (*st)[4], uint16_t out[16])
+{
+    const uint8_t *tx = img->texels;
+    size_t w = (size_t)img->width;
+    if (filter == GL_NEAREST) {
+        int32_t x[4], y[4];
+        nearest_axis4(st[0], img->width, wrap[0], pot[0], x);
+        nearest_axis4(st[1], img->height, wrap[1], pot[1], y);
+        uint8_t t8[16];
+        for (int i = 0; i < 4; i++)
+            memcpy(&t8[4 * i], tx + ((size_t)y[i] * w + (size_t)x[i]) * 4, 4);
+        for (int k = 0; k < 16; k++)
+            out[k] = t8[k];
+        return;
+    }
+    int x[2][4], y[2][4], fx[4], fy[4];
+    linear_axis4(st[0], img->width, wrap[0], pot[0], x[0], x[1], fx);
+    linear_axis4(st[1], img->height, wrap[1], pot[1], y[0], y[1], fy);
+    /* tap[j]: the texels (x[j & 1], y[j >> 1]) of the four pixels, as
+     * bilinear8 takes them, a texel to a 4-byte copy. */
+    uint8_t tap[4][16];
+    uint16_t wx[16], wy[16];
+    for (int i = 0; i < 4; i++) {
+        const uint8_t *row0 = tx + (size_t)y[0][i] * w * 4, *row1 = tx + (size_t)y[1][i] * w * 4;
+        size_t x0 = (size_t)x[0][i] * 4, x1 = (size_t)x[1][i] * 4;
+        memcpy(&tap[0][4 * i], row0 + x0, 4);
+        memcpy(&tap[1][4 * i], row0 + x1, 4);
+        memcpy(&tap[2][4 * i], row1 + x0, 4);
+        memcpy(&tap[3][4 * i], row1 + x1, 4);
+        for (int k = 0; k < 4; k++) {
+            wx[4 * i + k] = (uint16_t)fx[i];
+            wy[4 * i + k] = (uint16_t)fy[i];
+        }
+    }
+    for (int k = 0; k < 16; k++)
+        out[k] = lerp8u(wy[k], lerp8u(wx[k], tap[0][k], tap[1][k]), lerp8u(wx[k], tap[2][k], tap[3][k]));
+}
+
+/* sample_pixel's 8-bit path for the quad: the levels, their blend, the
+ * texel as c/255, into texel[pixel][u]. */
+static void sample_quad8(const fs_tex_object *t, const lod_result *lr, GLenum img_filter, bool mip_linear,
+                         const GLenum wrap[2], const bool pot[2], const float (*st)[4],
+                         float (*texel)[FS_MAX_TEXTURE_UNITS][4], int u)
+{
+    uint16_t v[16];
+    level_quad8(&t->level[lr->level0], img_filter, wrap, pot, st, v);
+    if (mip_linear && lr->weight8 > 0) {
+        uint16_t v1[16];
+        level_quad8(&t->level[lr->level1], img_filter, wrap, pot, st, v1);
+        for (int k = 0; k < 16; k++)
+            v[k] = lerp8u((uint16_t)lr->weight8, v[k], v1[k]);
+    }
+    for (int i = 0; i < 4; i++)
+        for (int k = 0; k < 4; k++)
+            texel[i][u][k] = (float)v[4 * i + k] * (1.0f / 255.0f);
+}
+
+void fs_texture_set_generic(fs_context *c, bool generic) { c->texture->generic = generic; }
+uint64_t fs_texture_quads_fast(const fs_context *c) { return c->texture->quads_fast; }
 
 /* The texels of enabled unit u for the covered pixels of a quad whose
  * coordinates for the unit are qt, into texel[pixel][u] (RGBA in [0, 1]);
@@ -986,6 +1179,12 @@ static bool sample_unit(fs_context *c, fs_quad *q, int u, const fs_quad_tex *qt,
     for (int a = 0; a < 3; a++) {
         int len = image_len(&t->level[t->first_level], a);
         f.pot[a] = (len & (len - 1)) == 0;
+    }
+    if (!float_path && !st->generic && (t->target == FS_TEX_2D || t->target == FS_TEX_1D) && !f.mpgrid &&
+        !c->observer) {
+        st->quads_fast++;
+        sample_quad8(t, &lr, img_filter, mip_linear, f.wrap, f.pot, (const float(*)[4])str, texel, u);
+        return true;
     }
     if (c->observer)
         memset(reads.n, 0, sizeof reads.n);

@@ -130,4 +130,11 @@ void fs_texture_quad(fs_context *c, fs_quad *q);
  * untextured because the bound texture is incomplete (GL 1.5 spec 3.8.10). */
 uint64_t fs_texture_quads_sampled(const fs_context *c);
 uint64_t fs_texture_quads_incomplete(const fs_context *c);
+
+/* Whether sampling keeps to the reference path (generic true) or may take
+ * the 8-bit quad path of the common textures (units/texture_sample.c; the
+ * same bits either way, tests/test_texture_fast.c), and the count of quads
+ * that took the latter. */
+void fs_texture_set_generic(fs_context *c, bool generic);
+uint64_t fs_texture_quads_fast(const fs_context *c);
 #endif
