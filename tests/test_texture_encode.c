@@ -216,6 +216,30 @@ static void check_format(check_state *check_st_, int f)
     CHECK_EQ_INT(db, 0);
 }
 
+/* glCompressedTexImage2D of random RGTC / LATC blocks (both endpoint
+ * orders, every code), read back by glGetTexImage and drawn: the decoder
+ * of the blocks alone. */
+static void given_blocks(fs_context *c, double *v, int *n)
+{
+    enum { S = 16 };
+    static uint8_t data[S * S], out[S * S * 4];
+    rng r = {77};
+    for (int f = 0; f < NFMT; f++) {
+        int bytes = (S / 4) * (S / 4) * (f % 2 ? 16 : 8);
+        for (int i = 0; i < bytes; i++)
+            data[i] = (uint8_t)rnd(&r);
+        G(BindTexture, GL_TEXTURE_2D, 100 + (GLuint)f);
+        G(CompressedTexImage2D, GL_TEXTURE_2D, 0, fmts[f].stored, S, S, 0, bytes, data);
+        put(v, n, err_of(c));
+        memset(out, 0, sizeof out);
+        G(GetTexImage, GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, out);
+        for (int i = 0; i < S * S * 4; i++)
+            put(v, n, out[i]);
+    }
+}
+
+TEST(given_blocks_vs_osmesa) { OSM_CHECK_VALUES(given_blocks, 8, 8, NFMT * (16 * 16 * 4 + 1)); }
+
 /* Sampling: each format's texture of every pattern, 32 x 32, drawn
  * NEAREST at one texel per pixel and LINEAR tilted and minified, with
  * GL_REPLACE; the images compared at tolerance 0. */
@@ -266,6 +290,7 @@ TEST_LIST = {
     TEST_ENTRY(luminance_latc1_vs_osmesa),
     TEST_ENTRY(luminance_alpha_latc2_vs_osmesa),
     TEST_ENTRY(sampled_vs_osmesa),
+    TEST_ENTRY(given_blocks_vs_osmesa),
     TEST_END,
 };
 

@@ -3,10 +3,15 @@
  * EXT_texture_compression_s3tc): glCompressedTexImage1D/2D/3D,
  * glCompressedTexSubImage1D/2D/3D and glGetCompressedTexImage.
  *
- * The four S3TC formats are decoded at upload into the level's RGBA8
- * texels (units/texture_priv.h), which the sampler reads as it reads any
- * other image; the blocks are kept as given, for glGetCompressedTexImage
- * and for sub-image updates.
+ * The four S3TC formats and RGTC1/RGTC2/LATC1/LATC2 are decoded at
+ * upload into the level's RGBA8 texels (units/texture_priv.h), which the
+ * sampler reads as it reads any other image; the blocks are kept as
+ * given, for glGetCompressedTexImage and for sub-image updates.  The RGTC
+ * and LATC formats are also what llvmpipe stores the generic
+ * GL_COMPRESSED_RED, _RG, _LUMINANCE, _LUMINANCE_ALPHA as on 2D, cube map
+ * and 3D images: the uncompressed upload paths (texture_object.c) store
+ * the texels, then fs_tex_compress_box encodes the blocks as Mesa does
+ * (texture_encode.c) and decodes them back into the texels.
  *
  * The decoding is llvmpipe's, which is what OSMesa samples (Mesa 22.3,
  * gallivm lp_bld_format_s3tc.c, read for its rules; measured through
@@ -38,11 +43,12 @@
  * them (GL_INVALID_ENUM, as OSMesa: EXT_texture_compression_s3tc names
  * CompressedTexImage2D only).
  *
- * Not modelled: glTexImage with an S3TC internal format (llvmpipe then
- * compresses the image with its own encoder), glTexSubImage and
- * glCopyTexSubImage into a compressed level, and GL_GENERATE_MIPMAP of a
- * compressed level; the first is refused as any unknown internal format
- * is, the others are counted as unsupported (texture_object.c, here).
+ * Not modelled: glTexImage with an S3TC or generic RGB / RGBA internal
+ * format on 2D and 3D (llvmpipe compresses with its S3TC encoder, which
+ * the model does not have), glTexSubImage and glCopyTexSubImage into an
+ * S3TC level, and GL_GENERATE_MIPMAP of a compressed level; the first is
+ * refused as any unknown internal format is, the others are counted as
+ * unsupported (texture_object.c, texture_lod.c).
  * docs/compressed_textures.md sums this up.
  */
 #include <stdlib.h>
