@@ -3,10 +3,15 @@
  * EXT_texture_compression_s3tc): glCompressedTexImage1D/2D/3D,
  * glCompressedTexSubImage1D/2D/3D and glGetCompressedTexImage.
  *
- * The four S3TC formats are decoded at upload into the level's RGBA8
- * texels (units/texture_priv.h), which the sampler reads as it reads any
- * other image; the blocks are kept as given, for glGetCompressedTexImage
- * and for sub-image updates.
+ * The four S3TC formats and RGTC1/RGTC2/LATC1/LATC2 are decoded at
+ * upload into the level's RGBA8 texels (units/texture_priv.h), which the
+ * sampler reads as it reads any other image; the blocks are kept as
+ * given, for glGetCompressedTexImage and for sub-image updates.  The RGTC
+ * and LATC formats are also what llvmpipe stores the generic
+ * GL_COMPRESSED_RED, _RG, _LUMINANCE, _LUMINANCE_ALPHA as on 2D, cube map
+ * and 3D images: the uncompressed upload paths (texture_object.c) store
+ * the texels, then fs_tex_compress_box encodes the blocks as Mesa does
+ * (texture_encode.c) and decodes them back into the texels.
  *
  * The decoding is llvmpipe's, which is what OSMesa samples (Mesa 22.3,
  * gallivm lp_bld_format_s3tc.c, read for its rules; measured through
@@ -38,11 +43,12 @@
  * them (GL_INVALID_ENUM, as OSMesa: EXT_texture_compression_s3tc names
  * CompressedTexImage2D only).
  *
- * Not modelled: glTexImage with an S3TC internal format (llvmpipe then
- * compresses the image with its own encoder), glTexSubImage and
- * glCopyTexSubImage into a compressed level, and GL_GENERATE_MIPMAP of a
- * compressed level; the first is refused as any unknown internal format
- * is, the others are counted as unsupported (texture_object.c, here).
+ * Not modelled: glTexImage with an S3TC or generic RGB / RGBA internal
+ * format on 2D and 3D (llvmpipe compresses with its S3TC encoder, which
+ * the model does not have), glTexSubImage and glCopyTexSubImage into an
+ * S3TC level, and GL_GENERATE_MIPMAP of a compressed level; the first is
+ * refused as any unknown internal format is, the others are counted as
+ * unsupported (texture_object.c, texture_lod.c).
  * docs/compressed_textures.md sums this up.
  */
 #include <stdlib.h>
@@ -64,6 +70,14 @@ int fs_tex_compressed_block_bytes(GLint internalformat, GLenum *base)
     case GL_COMPRESSED_RGBA_S3TC_DXT1_EXT: b = GL_RGBA, n = 8; break;
     case GL_COMPRESSED_RGBA_S3TC_DXT3_EXT: b = GL_RGBA, n = 16; break;
     case GL_COMPRESSED_RGBA_S3TC_DXT5_EXT: b = GL_RGBA, n = 16; break;
+    /* RGTC (ARB_texture_compression_rgtc) and LATC
+     * (EXT_texture_compression_latc): one (two) 8-byte channel blocks,
+     * each coded as DXT5's alpha; what Mesa stores the generic
+     * GL_COMPRESSED_RED, _RG, _LUMINANCE, _LUMINANCE_ALPHA as. */
+    case GL_COMPRESSED_RED_RGTC1: b = GL_RED, n = 8; break;
+    case GL_COMPRESSED_RG_RGTC2: b = GL_RG, n = 16; break;
+    case GL_COMPRESSED_LUMINANCE_LATC1_EXT: b = GL_LUMINANCE, n = 8; break;
+    case GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT: b = GL_LUMINANCE_ALPHA, n = 16; break;
     default: return 0;
     }
     if (base)
@@ -154,30 +168,65 @@ static void alpha_table(const uint8_t *blk, uint8_t a[8])
     }
 }
 
+/* The sixteen values of a channel block (8 bytes: two endpoints, 3-bit
+ * codes from bit 16): DXT5's alpha and each RGTC / LATC channel, which
+ * llvmpipe decodes alike (gallivm lp_bld_format_s3tc.c decodes RGTC
+ * through its DXT5 alpha channel). */
+static void channel_values(const uint8_t *blk, uint8_t out[16])
+{
+    uint8_t a[8];
+    alpha_table(blk, a);
+    uint64_t bits = 0;
+    for (int i = 7; i >= 2; i--)
+        bits = bits << 8 | blk[i];
+    for (int p = 0; p < 16; p++)
+        out[p] = a[(bits >> (3 * p)) & 7];
+}
+
 /* Decodes one block of `fmt` into the texels of img at (x0, y0) of slice
- * z, the part of it inside the image. */
+ * z, the part of it inside the image, expanded as the sampler reads the
+ * base format (fs_tex_image): RED (R,0,0,1), RG (R,G,0,1), LUMINANCE
+ * (L,L,L,1), LUMINANCE_ALPHA (L,L,L,A). */
 static void decode_block(GLint fmt, const uint8_t *blk, fs_tex_image *img, int x0, int y0, int z)
 {
+    uint8_t px[16][4], ch0[16], ch1[16];
     bool dxt1 = fmt == GL_COMPRESSED_RGB_S3TC_DXT1_EXT || fmt == GL_COMPRESSED_RGBA_S3TC_DXT1_EXT;
-    const uint8_t *cb = dxt1 ? blk : blk + 8;
-    uint8_t col[4][4], alpha[8];
-    colour_table(cb, dxt1, fmt == GL_COMPRESSED_RGBA_S3TC_DXT1_EXT, col);
-    uint32_t codes = cb[4] | (uint32_t)cb[5] << 8 | (uint32_t)cb[6] << 16 | (uint32_t)cb[7] << 24;
-    uint64_t abits = 0;
-    for (int i = 7; i >= 0; i--)
-        abits = abits << 8 | blk[i];
-    if (fmt == GL_COMPRESSED_RGBA_S3TC_DXT5_EXT)
-        alpha_table(blk, alpha);
+    bool s3tc = dxt1 || fmt == GL_COMPRESSED_RGBA_S3TC_DXT3_EXT || fmt == GL_COMPRESSED_RGBA_S3TC_DXT5_EXT;
+    if (s3tc) {
+        const uint8_t *cb = dxt1 ? blk : blk + 8;
+        uint8_t col[4][4];
+        colour_table(cb, dxt1, fmt == GL_COMPRESSED_RGBA_S3TC_DXT1_EXT, col);
+        uint32_t codes = cb[4] | (uint32_t)cb[5] << 8 | (uint32_t)cb[6] << 16 | (uint32_t)cb[7] << 24;
+        uint64_t abits = 0;
+        for (int i = 7; i >= 0; i--)
+            abits = abits << 8 | blk[i];
+        if (fmt == GL_COMPRESSED_RGBA_S3TC_DXT5_EXT)
+            channel_values(blk, ch0);
+        for (int p = 0; p < 16; p++) {
+            memcpy(px[p], col[(codes >> (2 * p)) & 3], 4);
+            if (fmt == GL_COMPRESSED_RGBA_S3TC_DXT3_EXT)
+                px[p][3] = (uint8_t)(((abits >> (4 * p)) & 15) * 17);
+            else if (fmt == GL_COMPRESSED_RGBA_S3TC_DXT5_EXT)
+                px[p][3] = ch0[p];
+        }
+    } else {
+        bool two = fs_tex_compressed_block_bytes(fmt, NULL) == 16;
+        bool lum = fmt == GL_COMPRESSED_LUMINANCE_LATC1_EXT || fmt == GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT;
+        channel_values(blk, ch0);
+        if (two)
+            channel_values(blk + 8, ch1);
+        for (int p = 0; p < 16; p++) {
+            px[p][0] = ch0[p];
+            px[p][1] = lum ? ch0[p] : two ? ch1[p] : 0;
+            px[p][2] = lum ? ch0[p] : 0;
+            px[p][3] = lum && two ? ch1[p] : 255;
+        }
+    }
     for (int j = 0; j < 4 && y0 + j < img->height; j++)
         for (int i = 0; i < 4 && x0 + i < img->width; i++) {
-            int p = 4 * j + i;
             uint8_t *t = img->texels +
                          (((size_t)z * (size_t)img->height + (size_t)(y0 + j)) * (size_t)img->width + (size_t)(x0 + i)) * 4;
-            memcpy(t, col[(codes >> (2 * p)) & 3], 4);
-            if (fmt == GL_COMPRESSED_RGBA_S3TC_DXT3_EXT)
-                t[3] = (uint8_t)(((abits >> (4 * p)) & 15) * 17);
-            else if (fmt == GL_COMPRESSED_RGBA_S3TC_DXT5_EXT)
-                t[3] = alpha[(abits >> (16 + 3 * p)) & 7];
+            memcpy(t, px[4 * j + i], 4);
         }
 }
 
@@ -198,6 +247,130 @@ static void store_blocks(fs_tex_image *img, int x, int y, int z, int w, int h, i
                     memcpy(dst, src, (size_t)bytes);
                 decode_block(img->internal_format, src, img, x + 4 * bx, y + 4 * by, z + k);
             }
+}
+
+/* ---- compression at upload (the encoders: texture_encode.c) ---- */
+
+GLint fs_tex_generic_compressed_format(GLint f)
+{
+    /* What llvmpipe stores a generic compressed format (table 3.17) as on
+     * a 2D, cube map or 3D image (measured through OSMesa:
+     * GL_TEXTURE_INTERNAL_FORMAT and glGetCompressedTexImage). */
+    switch (f) {
+    case GL_COMPRESSED_RED: return GL_COMPRESSED_RED_RGTC1;
+    case GL_COMPRESSED_RG: return GL_COMPRESSED_RG_RGTC2;
+    case GL_COMPRESSED_LUMINANCE: return GL_COMPRESSED_LUMINANCE_LATC1_EXT;
+    case GL_COMPRESSED_LUMINANCE_ALPHA: return GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT;
+    default: return 0;
+    }
+}
+
+GLenum fs_tex_compressed_upload_base(GLint f)
+{
+    GLenum base = 0;
+    switch (f) {
+    case GL_COMPRESSED_RED_RGTC1: case GL_COMPRESSED_RG_RGTC2: case GL_COMPRESSED_LUMINANCE_LATC1_EXT:
+    case GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT:
+        fs_tex_compressed_block_bytes(f, &base);
+        return base;
+    default:
+        return 0;
+    }
+}
+
+/* One block's channel c of the texels at (x0, y0) of slice z: component
+ * `comp` of each texel inside the image, into v[4 j + i]. */
+static void gather_channel(const fs_tex_image *img, int x0, int y0, int z, int nx, int ny, int comp, uint8_t v[16])
+{
+    memset(v, 0, 16);
+    for (int j = 0; j < ny; j++)
+        for (int i = 0; i < nx; i++)
+            v[4 * j + i] = img->texels[(((size_t)z * (size_t)img->height + (size_t)(y0 + j)) * (size_t)img->width +
+                                        (size_t)(x0 + i)) * 4 + (size_t)comp];
+}
+
+bool fs_tex_compress_box(fs_tex_image *img, int x, int y, int z, int w, int h, int d)
+{
+    int bytes = fs_tex_compressed_block_bytes(img->internal_format, NULL);
+    if (!bytes || !fs_tex_compressed_upload_base(img->internal_format) || !img->texels)
+        return true;
+    int64_t bw = (img->width + 3) / 4, bh = (img->height + 3) / 4;
+    if (!img->compressed) {
+        img->compressed_size = (size_t)(bw * bh * bytes * img->depth);
+        img->compressed = calloc(img->compressed_size, 1);
+        if (!img->compressed) {
+            img->compressed_size = 0;
+            return false;
+        }
+    }
+    /* The second channel: G of RG, A of LUMINANCE_ALPHA (the texels hold
+     * L in R, G and B). */
+    int second = img->internal_format == GL_COMPRESSED_RG_RGTC2 ? 1 : 3;
+    for (int k = z; k < z + d; k++)
+        for (int y0 = y; y0 < y + h; y0 += 4)
+            for (int x0 = x; x0 < x + w; x0 += 4) {
+                int nx = img->width - x0 < 4 ? img->width - x0 : 4, ny = img->height - y0 < 4 ? img->height - y0 : 4;
+                uint8_t *blk = img->compressed + ((k * bh + y0 / 4) * bw + x0 / 4) * bytes;
+                uint8_t v[16];
+                gather_channel(img, x0, y0, k, nx, ny, 0, v);
+                fs_tex_encode_rgtc_channel(blk, v, nx, ny);
+                if (bytes == 16) {
+                    gather_channel(img, x0, y0, k, nx, ny, second, v);
+                    fs_tex_encode_rgtc_channel(blk + 8, v, nx, ny);
+                }
+                decode_block(img->internal_format, blk, img, x0, y0, k);
+            }
+    return true;
+}
+
+/* One channel value as Mesa's CPU decoder gives it (util_format's RGTC
+ * fetch, src/util/texcompress_rgtc_tmp.h): the interpolations divided by
+ * 7 and 5, truncated, instead of the sampler's weights. */
+static uint8_t cpu_channel(const uint8_t *blk, int p)
+{
+    int a0 = blk[0], a1 = blk[1];
+    uint64_t bits = 0;
+    for (int i = 7; i >= 2; i--)
+        bits = bits << 8 | blk[i];
+    int code = (int)((bits >> (3 * p)) & 7);
+    if (code < 2)
+        return (uint8_t)(code ? a1 : a0);
+    if (a0 > a1)
+        return (uint8_t)((a0 * (8 - code) + a1 * (code - 1)) / 7);
+    if (code < 6)
+        return (uint8_t)((a0 * (6 - code) + a1 * (code - 1)) / 5);
+    return code == 6 ? 0 : 255;
+}
+
+bool fs_tex_compressed_readback(const fs_tex_image *img, int y, int z, uint8_t *row)
+{
+    /* Measured through OSMesa: glGetTexImage of a LATC2 level gives the
+     * CPU decoder's values (luminance 111 where sampling, and every other
+     * format's readback, gives 112), so Mesa reads it back by decoding in
+     * software rather than by its sampler. */
+    if (img->internal_format != GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT || !img->compressed)
+        return false;
+    int64_t bw = (img->width + 3) / 4, bh = (img->height + 3) / 4;
+    for (int x = 0; x < img->width; x++) {
+        const uint8_t *blk = img->compressed + ((z * bh + y / 4) * bw + x / 4) * 16;
+        int p = 4 * (y % 4) + x % 4;
+        row[4 * x] = row[4 * x + 1] = row[4 * x + 2] = cpu_channel(blk, p);
+        row[4 * x + 3] = cpu_channel(blk + 8, p);
+    }
+    return true;
+}
+
+bool fs_tex_compressed_box_aligned(const fs_tex_image *img, const GLint off[3], const GLsizei size[3])
+{
+    /* Mesa's rule for every sub-image command into a compressed level
+     * (measured through OSMesa: glTexSubImage2D and glCopyTexSubImage2D
+     * at x 2, or 3 wide short of the edge, are INVALID_OPERATION): the
+     * box starts on the 4x4 grid and ends on it or at the image's edge. */
+    const int dim[2] = {img->width, img->height};
+    for (int i = 0; i < 2; i++)
+        if (off[i] % 4 != 0 || (size[i] % 4 != 0 && off[i] + size[i] != dim[i]))
+            return false;
+    return true;
 }
 
 /* ---- the commands ---- */
@@ -243,16 +416,6 @@ static GLenum check_image(const fs_tex_target_info *ti, GLint level, GLenum inte
             return GL_INVALID_VALUE;
         }
     return GL_NO_ERROR;
-}
-
-/* A compressed level was defined or updated: GL_GENERATE_MIPMAP of its
- * base level is not modelled (llvmpipe recompresses the levels). */
-static void level_changed(fs_context *c, fs_tex_object *t, int face, GLint level)
-{
-    if (t->generate_mipmap && level == t->base_level)
-        fs_unsupported(c, "GL_GENERATE_MIPMAP of a compressed texture (llvmpipe recompresses the levels)");
-    else
-        fs_tex_image_changed(c, t, face, level);
 }
 
 static void compressed_image(fs_context *c, int dims, GLenum target, GLint level, GLenum internalformat,
@@ -305,7 +468,7 @@ static void compressed_image(fs_context *c, int dims, GLenum target, GLint level
      * blocks here. */
     if (texels)
         store_blocks(img, 0, 0, 0, w, h, 1, data ? data : blocks);
-    level_changed(c, t, ti.face, level);
+    fs_tex_image_changed(c, t, ti.face, level);
 }
 
 void fs_exec_CompressedTexImage1D(fs_context *c, GLenum target, GLint level, GLenum internalformat, GLsizei width,
@@ -358,9 +521,8 @@ static GLenum check_subimage(fs_context *c, int dims, GLenum target, GLint level
     for (int i = 0; i < 2; i++)
         if (off[i] < 0 || (int64_t)off[i] + size[i] > dim[i])
             return GL_INVALID_VALUE;
-    for (int i = 0; i < 2; i++)
-        if (off[i] % 4 != 0 || (size[i] % 4 != 0 && off[i] + size[i] != dim[i]))
-            return GL_INVALID_OPERATION;
+    if (!fs_tex_compressed_box_aligned(img, off, size))
+        return GL_INVALID_OPERATION;
     *out = img;
     return GL_NO_ERROR;
 }
@@ -379,7 +541,7 @@ static void compressed_subimage(fs_context *c, int dims, GLenum target, GLint le
     fs_tex_image_target_of(target, &ti);
     if (w > 0 && h > 0 && d > 0 && data)
         store_blocks(img, off[0], off[1], off[2], w, h, d, data);
-    level_changed(c, fs_tex_active(c)->bound[ti.k], ti.face, level);
+    fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], ti.face, level);
 }
 
 void fs_exec_CompressedTexSubImage1D(fs_context *c, GLenum target, GLint level, GLint xoffset, GLsizei width,

@@ -210,6 +210,12 @@ void fs_tex_image_changed(fs_context *c, fs_tex_object *t, int face, int level)
         fs_unsupported(c, "GL_GENERATE_MIPMAP on a 3D texture");
         return;
     }
+    if (fs_tex_compressed_block_bytes(b->internal_format, NULL)) {
+        /* llvmpipe decodes, filters and compresses each level again
+         * (units/texture_compressed.c); not modelled. */
+        fs_unsupported(c, "GL_GENERATE_MIPMAP of a compressed texture (llvmpipe recompresses the levels)");
+        return;
+    }
     if (b->base_format == GL_DEPTH_COMPONENT) {
         /* Depth texels are not RGBA8 (units/texture_depth.h). */
         fs_unsupported(c, "GL_GENERATE_MIPMAP on a depth texture");

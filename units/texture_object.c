@@ -381,7 +381,8 @@ static GLenum base_format(GLint f)
     case GL_DEPTH_STENCIL: case GL_DEPTH24_STENCIL8: case GL_DEPTH32F_STENCIL8:
         return GL_DEPTH_COMPONENT;
     default:
-        return 0;
+        /* the compressed formats the model encodes (texture_compressed.c) */
+        return fs_tex_compressed_upload_base(f);
     }
 }
 
@@ -756,9 +757,10 @@ static bool image_target(fs_context *c, GLenum target, int dims, bool proxy_ok, 
  * GL_TEXTURE_COMPRESSED 0, TEXTURE_INTERNAL_FORMAT, sizes and glGetTexImage
  * as for the base format) for GL_COMPRESSED_ALPHA and _INTENSITY on every
  * target and for every generic one on a 1D target, whose images no block
- * format of Mesa's takes.  Returns the format the image is stored as;
- * the other generic formats on 2D targets Mesa compresses (RGTC, LATC,
- * DXT1, DXT5), which the model does not (docs/compressed_textures.md). */
+ * format of Mesa's takes.  Returns the format the image is stored as:
+ * the other generic formats on 2D, cube map and 3D images Mesa compresses
+ * (RGTC, LATC, DXT1, DXT5: fs_tex_generic_compressed_format, encoded at
+ * upload; docs/compressed_textures.md). */
 static GLint generic_compressed_storage(GLint f, int dims)
 {
     switch (f) {
@@ -767,7 +769,7 @@ static GLint generic_compressed_storage(GLint f, int dims)
     default: break;
     }
     if (dims != 1)
-        return f;
+        return fs_tex_generic_compressed_format(f) ? fs_tex_generic_compressed_format(f) : f;
     switch (f) {
     case GL_COMPRESSED_RED: return GL_RED;
     case GL_COMPRESSED_RG: return GL_RG;
@@ -777,6 +779,40 @@ static GLint generic_compressed_storage(GLint f, int dims)
     case GL_COMPRESSED_RGBA: return GL_RGBA;
     default: return f;
     }
+}
+
+/* A level of a compressed format just stored: its blocks as llvmpipe
+ * encodes the texels, and the texels as they decode (texture_compressed.c;
+ * nothing for another format).  False with GL_OUT_OF_MEMORY set. */
+static bool compress_box(fs_context *c, fs_tex_image *img, const GLint off[3], const GLsizei size[3])
+{
+    if (fs_tex_compress_box(img, off[0], off[1], off[2], size[0], size[1], size[2]))
+        return true;
+    fs_error(c, GL_OUT_OF_MEMORY);
+    return false;
+}
+
+static bool compress_all(fs_context *c, fs_tex_image *img)
+{
+    const GLsizei all[3] = {img->width, img->height, img->depth};
+    return compress_box(c, img, no_offset, all);
+}
+
+/* A sub-image command into a compressed level: the box on the block grid
+ * (else GL_INVALID_OPERATION, as OSMesa), and the level one the model
+ * encodes (else the blocks are not updated: counted as unsupported). */
+static bool compressed_box_ok(fs_context *c, const fs_tex_image *img, const GLint off[3], const GLsizei size[3],
+                              const char *what)
+{
+    if (!fs_tex_compressed_block_bytes(img->internal_format, NULL))
+        return true;
+    if (!fs_tex_compressed_box_aligned(img, off, size)) {
+        fs_error(c, GL_INVALID_OPERATION);
+        return false;
+    }
+    if (!fs_tex_compressed_upload_base(img->internal_format))
+        fs_unsupported(c, what);
+    return true;
 }
 
 void fs_tex_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLint internalformat, GLsizei w, GLsizei h,
@@ -794,6 +830,10 @@ void fs_tex_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLint 
      * answers INVALID_OPERATION for 3D, proxy included; measured). */
     bool depth = fs_tex_depth_format(internalformat);
     if (err == GL_NO_ERROR && (depth_mismatch(depth, format) || (depth && dims == 3)))
+        err = GL_INVALID_OPERATION;
+    /* The block formats are for 2D, cube map and 3D images (OSMesa: a 1D
+     * image of one is INVALID_OPERATION). */
+    if (err == GL_NO_ERROR && dims == 1 && fs_tex_compressed_block_bytes(internalformat, NULL))
         err = GL_INVALID_OPERATION;
     if (ti.proxy && proxy_image(c, &ti, err, level, internalformat, size, border))
         return;
@@ -816,6 +856,8 @@ void fs_tex_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLint 
         fs_unsupported(c, "glTexImage data into a float internal format (stored at 8 bits)");
     if (img && img->texels && pixels)
         unpack_inner(c, img, dims, border, size, format, type, pixels);
+    if (img && !compress_all(c, img))
+        return;
     if (img)
         fs_tex_image_changed(c, t, ti.face, level);
 }
@@ -871,12 +913,16 @@ void fs_tex_subimage_nd(fs_context *c, int dims, GLenum target, GLint level, con
         fs_error(c, err);
         return;
     }
-    if (fs_tex_compressed_block_bytes(img->internal_format, NULL)) /* llvmpipe compresses into the blocks */
-        fs_unsupported(c, "glTexSubImage into a compressed level (units/texture_compressed.c)");
+    /* llvmpipe compresses the box into the level's blocks */
+    if (!compressed_box_ok(c, img, off, size, "glTexSubImage into a compressed level (units/texture_compressed.c)"))
+        return;
     if (pixels && float_format(img->internal_format))
         fs_unsupported(c, "glTexImage data into a float internal format (stored at 8 bits)");
-    if (w > 0 && h > 0 && d > 0 && pixels)
+    if (w > 0 && h > 0 && d > 0 && pixels) {
         unpack_image(c, img, dims, off, w, h, d, format, type, pixels);
+        if (!compress_box(c, img, off, size))
+            return;
+    }
     fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], ti.face, level);
 }
 
@@ -950,6 +996,8 @@ void fs_tex_copy_image_nd(fs_context *c, int dims, GLenum target, GLint level, G
     GLint bx = x < INT_MAX ? x + border : x, by = dims > 1 && y < INT_MAX ? y + border : y;
     if (img && img->texels)
         copy_from_framebuffer(c, img, no_offset, bx, by, img->width, img->height);
+    if (img && !compress_all(c, img))
+        return;
     if (img && internalformat == GL_R3_G3_B2)
         fs_unsupported(c, "glCopyTexImage into GL_R3_G3_B2 (llvmpipe's rounding not modelled)");
     if (img)
@@ -972,13 +1020,15 @@ void fs_tex_copy_subimage_nd(fs_context *c, int dims, GLenum target, GLint level
     fs_tex_image *img = subimage_target(c, &ti, level, off, size);
     if (!img)
         return;
-    if (fs_tex_compressed_block_bytes(img->internal_format, NULL))
-        fs_unsupported(c, "glCopyTexSubImage into a compressed level (units/texture_compressed.c)");
+    if (!compressed_box_ok(c, img, off, size, "glCopyTexSubImage into a compressed level (units/texture_compressed.c)"))
+        return;
     if (img->base_format == GL_DEPTH_COMPONENT && c->fb.depth_bits == 0) {
         fs_error(c, GL_INVALID_OPERATION); /* no depth buffer to copy (GL 1.4 3.8.2) */
         return;
     }
     copy_from_framebuffer(c, img, off, x, y, w, h);
+    if (!compress_box(c, img, off, size))
+        return;
     fs_tex_image_changed(c, fs_tex_active(c)->bound[ti.k], ti.face, level);
 }
 
@@ -1757,6 +1807,8 @@ void fs_exec_GetTexImage(fs_context *c, GLenum target, GLint level, GLenum forma
     for (int z = 0; z < img->depth; z++)
         for (int y = 0; y < img->height; y++) {
             const uint8_t *src = texel_addr(img, 0, y, z);
+            if (fs_tex_compressed_readback(img, y, z, row))
+                src = row; /* texel_for_get converts in place */
             for (int x = 0; x < img->width; x++)
                 texel_for_get(src + 4 * x, img->base_format, row + 4 * x);
             fs_pixel_pack_rgba8(&l, (uint8_t *)pixels + (size_t)z * (size_t)l.image_stride, y, 0, img->width, row,

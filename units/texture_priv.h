@@ -204,6 +204,26 @@ void fs_tex_copy_subimage_nd(fs_context *c, int dims, GLenum target, GLint level
 int fs_tex_compressed_block_bytes(GLint internalformat, GLenum *base);
 /* GL_TEXTURE_COMPRESSED_IMAGE_SIZE of a level (0: not compressed). */
 int64_t fs_tex_compressed_image_size(const fs_tex_image *img);
+/* Compression at upload (llvmpipe compresses what glTexImage,
+ * glCopyTexImage and the sub-image commands store into a compressed
+ * format): the block format a generic compressed internal format is
+ * stored as on a 2D, cube map or 3D image (0: stored uncompressed); the
+ * base format of a compressed format the model can encode (0: none);
+ * encoding the blocks covering a box of the level's texels (x, y on the
+ * 4x4 grid) and decoding them back into the texels, the blocks allocated
+ * on first use (false: out of memory; true doing nothing for a level of
+ * another format); whether a sub-image box is on the block grid. */
+GLint fs_tex_generic_compressed_format(GLint f);
+GLenum fs_tex_compressed_upload_base(GLint f);
+bool fs_tex_compress_box(fs_tex_image *img, int x, int y, int z, int w, int h, int d);
+bool fs_tex_compressed_box_aligned(const fs_tex_image *img, const GLint off[3], const GLsizei size[3]);
+/* glGetTexImage's texels of row y of slice z when they are not the
+ * sampler's (a LATC2 level, which Mesa decodes in software): true with
+ * row filled (width texels, expanded as stored). */
+bool fs_tex_compressed_readback(const fs_tex_image *img, int y, int z, uint8_t *row);
+/* texture_encode.c: one RGTC / LATC channel block from v[4 j + i], the
+ * nx x ny pixels inside the image. */
+void fs_tex_encode_rgtc_channel(uint8_t blk[8], const uint8_t v[16], int nx, int ny);
 
 /* ---- level of detail (texture_lod.c) ---- */
 void fs_tex_lod_defaults(fs_tex_object *t);
