@@ -17,10 +17,15 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "check.h"
 #include "../pipeline/context.h"
 #include "../driver/run_config.h"
 #include "../driver/gl_call.h"
+#include "../driver/cli.h"
+#include "../driver/replay.h"
+#include "../driver/trace.h"
+#include "trace_build.h"
 #include "../rtl_model/cycle_internal.h"
 #include "../pipeline/vertex_internal.h"
 #include "../glext/GL_FRAGSIM_occlusion_unit.h"
@@ -1089,6 +1094,102 @@ TEST(frame_clusters_kinds_not_repeats)
     CHECK(fabs(err) < 0.05);
 }
 
+/* A trace of frames drawing tris[f] triangles each (frame 0 also sets the
+ * viewport), written with the trace writer; 0 or -1. */
+static int write_kinds_trace(const char *path, const int *tris, int nf)
+{
+    char err[256];
+    fs_trace_writer *w = fs_trace_create(path, err, sizeof err);
+    if (!w)
+        return -1;
+    fs_tval vp[4] = {tb_ival(0), tb_ival(0), tb_ival(WN), tb_ival(WN)};
+    tb_write_call(w, "glViewport", 4, vp, 0);
+    fs_tval cap = tb_eval(GL_DEPTH_TEST, "GL_DEPTH_TEST");
+    tb_write_call(w, "glEnable", 1, &cap, 0);
+    for (int f = 0; f < nf; f++) {
+        fs_tval mask = tb_ival(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        tb_write_call(w, "glClear", 1, &mask, 0);
+        for (int t = 0; t < tris[f]; t++) {
+            fs_tval m = tb_eval(GL_TRIANGLES, "GL_TRIANGLES");
+            tb_write_call(w, "glBegin", 1, &m, 0);
+            static const float v[3][2] = {{-1, -1}, {1, -1}, {-1, 1}};
+            for (int i = 0; i < 3; i++) {
+                fs_tval a[3] = {tb_fval(v[i][0]), tb_fval(v[i][1]), tb_fval(0.9 - 0.05 * t)};
+                tb_write_call(w, "glVertex3f", 3, a, 0);
+            }
+            tb_write_call(w, "glEnd", 0, NULL, 0);
+        }
+        fs_tval sw[2] = {tb_ival(0), tb_ival(0)};
+        tb_write_call(w, "glXSwapBuffers", 2, sw, 0);
+    }
+    return fs_trace_finish(w);
+}
+
+/* Replays a trace as `fragsim replay --mode` does (the driver's
+ * signatures, its skipping of the frames sampled mode interpolates);
+ * the total cycles, *est the error estimate, *simulated the frames run. */
+static uint64_t replay_cycles(const char *path, const fs_run_config *cfg, fs_cycle_mode mode, double *est,
+                              int *simulated)
+{
+    char err[256];
+    fs_replayer *r = fs_replay_open(path, NULL, err, sizeof err);
+    if (!r)
+        return 0;
+    const fs_replay_info *info = fs_replay_info_get(r);
+    fs_context *c = fs_context_create(&cfg->gl, info->width, info->height);
+    fs_cli_cycle *h = c ? fs_cli_cycle_begin(mode, &cfg->cycle, c, NULL, r, false, err, sizeof err) : NULL;
+    uint64_t total = 0;
+    *simulated = 0;
+    if (h) {
+        fs_call call;
+        fs_replay_event ev;
+        bool drew = false;
+        while ((ev = fs_replay_next(r, &call)) == FS_REPLAY_CALL || ev == FS_REPLAY_FRAME_END) {
+            if (ev == FS_REPLAY_FRAME_END) {
+                *simulated += drew;
+                drew = false;
+                fs_cli_cycle_frame(h, 0);
+            } else if (!fs_cli_cycle_skip(h, c, call.cmd)) {
+                drew |= call.cmd == FS_CMD_Begin;
+                fs_submit(c, &call);
+            }
+        }
+        fs_cycle_stats t;
+        *est = fs_cli_cycle_totals(h, &t);
+        total = t.cycles;
+        fs_cli_cycle_end(h);
+    }
+    fs_context_destroy(c);
+    fs_replay_close(r);
+    return total;
+}
+
+TEST(frame_clusters_from_a_trace)
+{
+    /* End to end: a trace whose frames come in three kinds, A (1
+     * triangle), B (3), C (6), each an exact repeat, replayed through the
+     * driver's signatures (pass 1 hashes the calls) and frame skipping.
+     * Sampled mode simulates frame 0 and the first and last frame of each
+     * kind (7 of 20) and its total equals full cycle mode's, estimate 0. */
+    static const int tris[20] = {2, 1, 3, 6, 1, 3, 6, 1, 1, 3, 6, 1, 3, 1, 6, 1, 3, 1, 6, 1};
+    char path[256];
+    snprintf(path, sizeof path, "/tmp/fragsim_test_cycle_kinds_%d.trace", (int)getpid());
+    REQUIRE(write_kinds_trace(path, tris, 20) == 0);
+    fs_run_config cfg;
+    fs_run_config_defaults(&cfg);
+    cfg.cycle.sampling_frame_tiles = 1; /* simulated frames exact */
+    double est_full, est;
+    int sim_full, sim;
+    uint64_t full = replay_cycles(path, &cfg, FS_CYCLE_FULL, &est_full, &sim_full);
+    uint64_t smp = replay_cycles(path, &cfg, FS_CYCLE_SAMPLED, &est, &sim);
+    CHECK(full > 0);
+    CHECK_EQ_INT(sim_full, 20);
+    CHECK_EQ_INT(sim, 7);
+    CHECK_EQ_UINT(smp, full);
+    CHECK(est == 0.0);
+    unlink(path);
+}
+
 TEST_LIST = {
     TEST_ENTRY(readback_reproduces_footnote_5),
     TEST_ENTRY(readback_closed_form),
@@ -1112,6 +1213,7 @@ TEST_LIST = {
     TEST_ENTRY(frame_clusters_repeated_kinds),
     TEST_ENTRY(frame_clusters_weights),
     TEST_ENTRY(frame_clusters_kinds_not_repeats),
+    TEST_ENTRY(frame_clusters_from_a_trace),
     TEST_END,
 };
 
