@@ -24,8 +24,10 @@ typedef struct fs_cli_cycle fs_cli_cycle;
 /* "functional" -> -1, "cycle", "sampled" -> an fs_cycle_mode; returns -1 for
  * an unknown name. */
 int fs_cli_cycle_mode(const char *name, int *mode);
+struct fs_replayer;
+/* r: the trace's replayer, for its frame count and frame signatures */
 fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_cycle_config *cfg, fs_context *c, const char *csv_path,
-                                 uint64_t trace_frames, bool draw_stats, char *err, size_t errlen);
+                                 const struct fs_replayer *r, bool draw_stats, char *err, size_t errlen);
 /* Sampled mode: true for a call the replay skips (fs_cycle_frame_skipped, fs_cmd_skippable). */
 bool fs_cli_cycle_skip(const fs_cli_cycle *h, const fs_context *c, int cmd);
 void fs_cli_cycle_frame(fs_cli_cycle *h, long frame);

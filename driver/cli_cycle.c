@@ -11,6 +11,7 @@
 #include <jansson.h>
 #include "cli.h"
 #include "gl_call.h"
+#include "replay.h"
 #include "../pipeline/context.h"
 
 struct fs_cli_cycle {
@@ -90,7 +91,7 @@ bool fs_cli_cycle_skip(const fs_cli_cycle *h, const fs_context *c, int cmd)
 }
 
 fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_cycle_config *cfg, fs_context *c, const char *csv_path,
-                                 uint64_t trace_frames, bool draw_stats, char *err, size_t errlen)
+                                 const fs_replayer *r, bool draw_stats, char *err, size_t errlen)
 {
     fs_cli_cycle *h = calloc(1, sizeof *h);
     if (!h) {
@@ -119,7 +120,10 @@ fs_cli_cycle *fs_cli_cycle_begin(int mode, const fs_cycle_config *cfg, fs_contex
         fputc('\n', h->csv);
     }
     fs_cycle_set_record_fn(h->cy, on_record, h, draw_stats);
-    fs_cycle_set_frames(h->cy, trace_frames);
+    const uint64_t *kind, *exact;
+    uint64_t nsig = fs_replay_frame_signatures(r, &kind, &exact);
+    fs_cycle_set_frame_signatures(h->cy, kind, exact, nsig);
+    fs_cycle_set_frames(h->cy, fs_replay_info_get(r)->frames);
     fs_cycle_attach(h->cy, c);
     return h;
 }

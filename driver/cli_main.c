@@ -758,7 +758,7 @@ static int replay_session_open(replay_session *S, cli_opts *o, bool check)
         rc = 1;
         goto fail;
     }
-    if ((o->mode >= 0 && !(o->cycle = fs_cli_cycle_begin(o->mode, &S->cfg.cycle, S->c, o->csv_file, S->info->frames,
+    if ((o->mode >= 0 && !(o->cycle = fs_cli_cycle_begin(o->mode, &S->cfg.cycle, S->c, o->csv_file, S->r,
                                                          o->draw_stats, err, sizeof err))) ||
         (S->sig && fs_cli_signals_attach(S->sig, o->cycle, err, sizeof err) != 0)) {
         fprintf(stderr, "%s: %s\n", prog, err);
@@ -1054,7 +1054,7 @@ again:;
     }
     if (B->c && B->o->cycle_mode >= 0) {
         /* A fresh model per repetition: each reports the same cycles. */
-        B->cy = fs_cli_cycle_begin(B->o->cycle_mode, &pass, B->c, NULL, info->frames, false, err, sizeof err);
+        B->cy = fs_cli_cycle_begin(B->o->cycle_mode, &pass, B->c, NULL, r, false, err, sizeof err);
         if (!B->cy) {
             fprintf(stderr, "%s: %s\n", prog, err);
             fs_replay_close(r);

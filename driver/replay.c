@@ -75,6 +75,16 @@ struct fs_replayer {
     uint64_t calls_since_frame;
     uint64_t frames_done;
     uint64_t p1_swaps, p1_finishes, p1_named; /* pass 1 counts */
+    /* Pass 1's signatures of each frame's work (fs_replay_frame_signatures),
+     * for each way of ending frames (swap, the named call, glFinish): the
+     * open frame's and the ended frames'. */
+    struct frame_sigs {
+        uint64_t kind, exact;    /* the open frame's */
+        uint64_t *k, *e;         /* per ended frame */
+        size_t n, cap;
+        bool failed;             /* out of memory: none */
+    } sigs[3];
+    int sig_end;                 /* the sigs[] of the frame end chosen */
     const char *user_frame_end;
     char err[512];
     skip_entry *skips;
@@ -790,6 +800,96 @@ static int64_t rec_payload(const fs_call *call, int k)
     return es ? (int64_t)(es * a->count) : -1;
 }
 
+/* ---- signatures of frames (sampled mode's frame clustering) ---- */
+
+static uint64_t sig_mix(uint64_t h, uint64_t v)
+{
+    /* splitmix64's finaliser over the running value and the next word */
+    h ^= v + 0x9e3779b97f4a7c15ull;
+    h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+    h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+    return h ^ (h >> 31);
+}
+
+static uint64_t sig_bytes(uint64_t h, const unsigned char *p, size_t n)
+{
+    size_t i = 0;
+    for (; i + 8 <= n; i += 8) {
+        uint64_t v;
+        memcpy(&v, p + i, 8);
+        h = sig_mix(h, v);
+    }
+    uint64_t v = 0;
+    memcpy(&v, p + i, n - i);
+    return sig_mix(h, v ^ (uint64_t)n << 56);
+}
+
+/* A call's two signatures: `kind`, of the command and its integer
+ * arguments (counts, modes, enums, names) and its arrays' lengths but not
+ * their contents nor floating-point arguments, so that the frames of a
+ * camera path or an animation are of one kind; `exact`, of everything the
+ * record holds (array and blob contents included). */
+static void call_signature(const fs_call *call, uint64_t *kind, uint64_t *exact)
+{
+    uint64_t k = sig_mix(0, call->cmd), e = k;
+    for (int i = 0; i < call->nargs; i++) {
+        const fs_arg *a = &call->a[i];
+        int kd = fs_cmd_table[call->cmd].kinds[i];
+        int64_t n = rec_payload(call, i);
+        uint64_t v;
+        memcpy(&v, &a->i, 8);
+        if (n < 0) {
+            e = sig_mix(e, v);
+            if (kd != FS_K_F && kd != FS_K_D && kd != FS_K_CF && kd != FS_K_CD && a->is_data != FS_ARG_ADDR)
+                k = sig_mix(k, v);
+            continue;
+        }
+        k = sig_mix(k, a->count);
+        e = sig_mix(e, a->count);
+        /* an array of index pointers (glMultiDrawElements): its counts only */
+        if (kd != FS_K_AP)
+            e = sig_bytes(e, a->p, (size_t)n);
+    }
+    *kind = k;
+    *exact = e;
+}
+
+/* Pass 1: a call (NULL: a name that is no command) into the open frames
+ * of each way of ending frames, and the frames it ends. */
+static void sig_call(fs_replayer *r, const fs_call *call, const name_info *ni)
+{
+    uint64_t k = 0, e = 0;
+    if (call)
+        call_signature(call, &k, &e);
+    bool ends[3] = {ni->swap, ni->user_end, call && call->cmd == FS_CMD_Finish};
+    for (int m = 0; m < 3; m++) {
+        struct frame_sigs *g = &r->sigs[m];
+        if (call) {
+            g->kind = sig_mix(g->kind, k);
+            g->exact = sig_mix(g->exact, e);
+        }
+        if (!ends[m] || g->failed)
+            continue;
+        if (g->n == g->cap) {
+            size_t cap = g->cap ? 2 * g->cap : 64;
+            uint64_t *nk = realloc(g->k, cap * sizeof *nk);
+            if (nk)
+                g->k = nk;
+            uint64_t *ne = nk ? realloc(g->e, cap * sizeof *ne) : NULL;
+            if (ne)
+                g->e = ne;
+            if (!ne) {
+                g->failed = true;
+                continue;
+            }
+            g->cap = cap;
+        }
+        g->k[g->n] = g->kind;
+        g->e[g->n++] = g->exact;
+        g->kind = g->exact = 0;
+    }
+}
+
 /* Appends a call (call NULL: a name fragsim cannot execute).  Out of
  * memory, over rec_max, or given a call it cannot hold exactly, the record
  * is dropped (pass 2 reads the file), not the replay. */
@@ -941,6 +1041,8 @@ static int decode_next(fs_replayer *r, fs_call *call, bool pass1, const name_inf
     if (cmd < 0) {
         if (r->rec_on)
             rec_add(r, tc.name, NULL, false);
+        if (pass1)
+            sig_call(r, NULL, ni);
         return 1;
     }
     if (pass1 && cmd == FS_CMD_Finish)
@@ -972,6 +1074,8 @@ static int decode_next(fs_replayer *r, fs_call *call, bool pass1, const name_inf
     *unsafe = (fs_cmd_table[cmd].flags & FS_F_DRAW) && !draw_is_safe(r, call);
     if (r->rec_on)
         rec_add(r, tc.name, call, *unsafe);
+    if (pass1)
+        sig_call(r, call, ni);
     return 1;
 }
 
@@ -1079,11 +1183,14 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
         r->frame_end_is_swap = false;
         snprintf(r->info.frame_end, sizeof r->info.frame_end, "%s", r->user_frame_end);
         r->info.frames = r->p1_named;
+        r->sig_end = 1;
     } else if (r->p1_swaps > 0) {
         r->frame_end_is_swap = true;
         snprintf(r->info.frame_end, sizeof r->info.frame_end, "swap buffers");
         r->info.frames = r->p1_swaps;
+        r->sig_end = 0;
     } else {
+        r->sig_end = 2;
         /* Captures of programs that swap through EGL have no swap calls; each
          * of their frames ends with glFinish (shared/reference-notes.md). */
         snprintf(r->info.frame_end, sizeof r->info.frame_end, "glFinish");
@@ -1115,6 +1222,14 @@ fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *
 }
 
 const fs_replay_info *fs_replay_info_get(const fs_replayer *r) { return &r->info; }
+
+uint64_t fs_replay_frame_signatures(const fs_replayer *r, const uint64_t **kind, const uint64_t **exact)
+{
+    const struct frame_sigs *g = &r->sigs[r->sig_end];
+    *kind = g->k;
+    *exact = g->e;
+    return g->failed ? 0 : g->n;
+}
 uint64_t fs_replay_call_no(const fs_replayer *r) { return r->call_no; }
 const char *fs_replay_call_name(const fs_replayer *r) { return r->call_name; }
 unsigned fs_replay_call_flags(const fs_replayer *r) { return r->call_flags; }
@@ -1212,6 +1327,10 @@ void fs_replay_close(fs_replayer *r)
     }
     free(r->names);
     forget_names(r);
+    for (int m = 0; m < 3; m++) {
+        free(r->sigs[m].k);
+        free(r->sigs[m].e);
+    }
     free(r->path);
     free(r);
 }

@@ -57,6 +57,12 @@ typedef struct fs_replayer fs_replayer;
  * message naming the file and byte offset in err. */
 fs_replayer *fs_replay_open(const char *path, const fs_replay_opts *opts, char *err, size_t errlen);
 const fs_replay_info *fs_replay_info_get(const fs_replayer *r);
+/* Each frame's signatures of work, from pass 1's hash of its calls
+ * without executing them (sampled mode's frame clustering,
+ * fs_cycle_set_frame_signatures): *kind without floating-point arguments
+ * and array contents, *exact of everything.  Returns the frames (0: none,
+ * e.g. out of memory); the arrays live until fs_replay_close. */
+uint64_t fs_replay_frame_signatures(const fs_replayer *r, const uint64_t **kind, const uint64_t **exact);
 /* Next event of the second pass.  A FS_REPLAY_CALL's call stays valid
  * until the next call of this function. */
 fs_replay_event fs_replay_next(fs_replayer *r, fs_call *call);

@@ -67,6 +67,7 @@ typedef struct fs_cyc_pool {
 /* the normal quantile of a two-sided 95% interval (the error estimate) */
 #define FS_CYC_Z95 1.96
 #define FS_CYC_POOL_MIN 64.0
+#define FS_CYC_NO_SEQ UINT32_MAX
 
 /* What spread timing rounds to whole cycles, bytes and counts. */
 enum {
@@ -168,7 +169,17 @@ struct fs_cycle {
 
     /* sampled mode, frame sampling */
     uint64_t nframes_trace;
-    uint64_t frame_step;        /* sampling.frames, or less on a short trace */
+    uint64_t frame_step;        /* the largest step of the frame sequences (fs_cycle_set_frames) */
+    /* Frame clustering (fs_cycle_set_frame_signatures): per frame of the
+     * trace its signatures (kind: the calls without floating-point
+     * arguments or array contents; exact: everything), and the plan made
+     * from them: the sequence a frame is interpolated in (frame 0, the
+     * warm-up, in none: FS_CYC_NO_SEQ) and whether it is simulated. */
+    uint64_t *sig_kind, *sig_exact, nsig;
+    uint32_t *plan_seq;
+    bool *plan_sim;
+    uint64_t nplan;
+    uint32_t nseqs;
     bool frame_sampling, frame_skipped, finished;
     bool too_short;             /* 3+ frames, too few to sample: simulated in full */
     uint64_t *frame_cycles;     /* per frame; skipped frames filled by fs_cycle_finish */
@@ -176,10 +187,9 @@ struct fs_cycle {
     uint64_t frame_cap, frames_done;
     double frame_error;         /* absolute error estimate of the interpolated cycles */
     double *frame_tile_err;     /* per frame: tile sampling's standard error of its cycles */
-    /* fs_cycle_finish: the frames' standard error from the interpolation
-     * residuals of the simulated frames and its degrees of freedom */
-    double frame_sd;
-    int frame_df;
+    /* fs_cycle_finish: the frames' 95% half-width (curvature or scatter of
+     * the simulated frames), summed over the sequences */
+    double frame_half;
 
     /* sampled mode, tile sampling: work (unscaled service cycles) and
      * fragments per tile of the screen in this frame (pairs), for the

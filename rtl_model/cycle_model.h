@@ -66,7 +66,15 @@ int fs_cycle_signals_attach(fs_cycle *cy, struct fs_signals *w);
 bool fs_cycle_quad_skipped(const fs_cycle *cy, int x, int y);
 
 /* ---- calls from the driver ---- */
-/* Sampled mode: the trace's frame count (decides frame or draw sampling). */
+/* Sampled mode, before fs_cycle_set_frames: each frame's signatures of
+ * work, from its calls (the driver hashes them without executing any):
+ * `kind` without floating-point arguments and array contents, `exact` of
+ * everything.  Frames with the same signature are interpolated among
+ * themselves (docs/cycle_model.md, frame clustering); the arrays are
+ * copied.  Without signatures all frames after frame 0 are one sequence. */
+void fs_cycle_set_frame_signatures(fs_cycle *cy, const uint64_t *kind, const uint64_t *exact, uint64_t n);
+/* Sampled mode: the trace's frame count (decides frame or draw sampling,
+ * and which frames are simulated). */
 void fs_cycle_set_frames(fs_cycle *cy, uint64_t frames);
 /* Sampled mode: is the current frame interpolated, not simulated?  The
  * driver then skips its draws, clears and read-backs (fs_cmd_skippable). */

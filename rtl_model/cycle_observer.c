@@ -183,6 +183,10 @@ void fs_cycle_destroy(fs_cycle *cy)
     free(cy->seq);
     free(cy->frame_was_skipped);
     free(cy->frame_tile_err);
+    free(cy->sig_kind);
+    free(cy->sig_exact);
+    free(cy->plan_seq);
+    free(cy->plan_sim);
     free(cy->fbmem);
     free(cy->kinds);
     free(cy);

@@ -590,34 +590,145 @@ void fs_cyc_sample_frame_end(fs_cycle *cy, uint64_t frame_cycles)
 
 /* ---- sampled mode: frames ---- */
 
-/* Frames 0 and 1, every frame_step-th frame after frame 1 (sampling.frames,
- * or less on a short trace: fs_cycle_set_frames), and the last.  Frame 0 of a captured program is a warm-up more often than not (it
- * carries the uploads, list compilations and first clears: in full cycle
- * mode on O2, frame 0 of 26 of the 31 programs of the conformance corpus
- * costs 1.27-2.99x the mean of the three frames after it, polyhedra's 0.08x),
- * so it is simulated but never an end of an interpolated segment: frame 1
- * starts the steady part the skipped frames are interpolated in. */
+/* Frames are interpolated in sequences (fs_cycle_set_frames): frame 0 of
+ * a captured program is a warm-up more often than not (it carries the
+ * uploads, list compilations and first clears: in full cycle mode on O2,
+ * frame 0 of 26 of the 31 programs of the conformance corpus costs
+ * 1.27-2.99x the mean of the three frames after it, polyhedra's 0.08x),
+ * so it is simulated and in no sequence; frame 1 starts the steady part
+ * the skipped frames are interpolated in. */
 bool fs_cyc_frame_simulated(const fs_cycle *cy, uint64_t f)
 {
-    return f < 2 || (f - 1) % cy->frame_step == 0 || f + 1 >= cy->nframes_trace;
+    return f >= cy->nplan || cy->plan_sim[f];
+}
+
+void fs_cycle_set_frame_signatures(fs_cycle *cy, const uint64_t *kind, const uint64_t *exact, uint64_t n)
+{
+    free(cy->sig_kind);
+    free(cy->sig_exact);
+    cy->nsig = 0;
+    cy->sig_kind = n && kind && exact ? malloc(n * sizeof *cy->sig_kind) : NULL;
+    cy->sig_exact = cy->sig_kind ? malloc(n * sizeof *cy->sig_exact) : NULL;
+    if (!cy->sig_exact) { /* none, or out of memory: one sequence, as without signatures */
+        free(cy->sig_kind);
+        cy->sig_kind = NULL;
+        return;
+    }
+    memcpy(cy->sig_kind, kind, n * sizeof *kind);
+    memcpy(cy->sig_exact, exact, n * sizeof *exact);
+    cy->nsig = n;
+}
+
+/* Which members j of a sequence of m frames (in frame order) are
+ * simulated: the first, every step-th and the last.  A sequence of exact
+ * repeats (the same calls, arguments and data: the same work but for the
+ * state a frame finds, the texture cache, an uncleared buffer) needs only
+ * its first and last, whose difference measures that state's effect;
+ * any other the step sampling.frames, at most (m - 1) / 2: every skipped
+ * frame then lies between simulated frames with a third one beyond, which
+ * the error estimate's second difference needs (seq_finish).  A sequence
+ * of fewer frames (2 to 4 others) has no such step and is simulated in
+ * full: with two steady frames the estimate cannot see a frame that breaks
+ * the line (4-frame corpus programs: errors to 0.8% under estimates of
+ * 0.2%). */
+static void seq_plan(fs_cycle *cy, const uint64_t *f, uint64_t m, bool exact)
+{
+    uint64_t cfg = (uint64_t)cy->cfg.sampling_frames, most = exact ? m - 1 : (m - 1) / 2;
+    uint64_t step = exact || cfg > most ? most : cfg;
+    uint32_t s = cy->nseqs++;
+    for (uint64_t j = 0; j < m; j++) {
+        cy->plan_seq[f[j]] = s;
+        cy->plan_sim[f[j]] = step < 2 || j % step == 0 || j + 1 == m;
+    }
+    if (!exact && step > cy->frame_step)
+        cy->frame_step = step;
+}
+
+typedef struct sig_frame { uint64_t key, f; } sig_frame;
+
+static int sig_frame_cmp(const void *pa, const void *pb)
+{
+    const sig_frame *a = pa, *b = pb;
+    return a->key != b->key ? (a->key < b->key ? -1 : 1) : (a->f > b->f) - (a->f < b->f);
+}
+
+/* Frames 1.. not yet in a sequence whose signature key[] is shared by at
+ * least `least` of them become one sequence per signature (clusters of
+ * frames with the same work, as MEGsim clusters frames); e and members:
+ * room for the frames. */
+static void group_frames(fs_cycle *cy, const uint64_t *key, uint64_t least, bool exact, sig_frame *e,
+                         uint64_t *members)
+{
+    uint64_t n = 0;
+    for (uint64_t f = 1; f < cy->nplan; f++)
+        if (cy->plan_seq[f] == FS_CYC_NO_SEQ)
+            e[n++] = (sig_frame){key[f], f};
+    qsort(e, n, sizeof *e, sig_frame_cmp);
+    for (uint64_t i = 0, j; i < n; i = j) {
+        for (j = i + 1; j < n && e[j].key == e[i].key; j++)
+            ;
+        if (j - i < least)
+            continue;
+        for (uint64_t k = i; k < j; k++)
+            members[k - i] = e[k].f;
+        seq_plan(cy, members, j - i, exact);
+    }
 }
 
 void fs_cycle_set_frames(fs_cycle *cy, uint64_t frames)
 {
     cy->nframes_trace = frames;
-    /* The step, at most (frames - 2) / 2: every skipped frame then lies
-     * between steady simulated frames with a third one beyond, which the
-     * error estimate's second difference needs (fs_cycle_finish).  A trace
-     * of 3 to 5 frames has no such step: with two steady frames the
-     * estimate cannot see a frame that breaks the line (4-frame corpus
-     * programs: errors to 0.8% under estimates of 0.2%), so sampled mode
-     * simulates it in full and says so, rather than report an error it
-     * cannot bound; draws and tiles are not sampled either (biased there:
-     * docs/sampling.md). */
-    uint64_t step = (uint64_t)cy->cfg.sampling_frames, most = frames >= 2 ? (frames - 2) / 2 : 0;
-    cy->frame_step = step < most ? step : most;
+    free(cy->plan_seq);
+    free(cy->plan_sim);
+    cy->plan_seq = NULL;
+    cy->plan_sim = NULL;
+    cy->nplan = 0;
+    cy->nseqs = 0;
+    cy->frame_step = 0;
     bool sampled = cy->mode == FS_CYCLE_SAMPLED && frames >= 3 && cy->cfg.sampling_frames > 1;
-    cy->too_short = sampled && cy->frame_step < 2;
+    bool skips = false;
+    if (sampled) {
+        cy->plan_seq = malloc(frames * sizeof *cy->plan_seq);
+        cy->plan_sim = malloc(frames * sizeof *cy->plan_sim);
+        sig_frame *e = malloc(frames * sizeof *e);
+        uint64_t *rest = malloc(frames * sizeof *rest);
+        if (cy->plan_seq && cy->plan_sim && e && rest) {
+            cy->nplan = frames;
+            for (uint64_t f = 0; f < frames; f++) {
+                cy->plan_seq[f] = FS_CYC_NO_SEQ;
+                cy->plan_sim[f] = true;
+            }
+            /* Clusters by signature (the driver's, fs_cycle_set_frame_signatures):
+             * exact repeats of 3 or more, then kinds of 5 or more (the fewest
+             * that sample); the other frames are one sequence, interpolated in
+             * frame order as without signatures. */
+            if (cy->nsig >= frames) {
+                group_frames(cy, cy->sig_exact, 3, true, e, rest);
+                group_frames(cy, cy->sig_kind, 5, false, e, rest);
+            }
+            uint64_t m = 0;
+            for (uint64_t f = 1; f < frames; f++)
+                if (cy->plan_seq[f] == FS_CYC_NO_SEQ)
+                    rest[m++] = f;
+            if (m)
+                seq_plan(cy, rest, m, false);
+            for (uint64_t f = 0; f < frames; f++)
+                skips |= !cy->plan_sim[f];
+        }
+        free(e);
+        free(rest);
+    }
+    if (!cy->nplan) { /* no plan (out of memory too): nothing skipped */
+        free(cy->plan_seq);
+        free(cy->plan_sim);
+        cy->plan_seq = NULL;
+        cy->plan_sim = NULL;
+    }
+    /* A trace no sequence of which can skip a frame (3 to 5 frames without
+     * repeats) is simulated in full and says so, rather than report an
+     * error it cannot bound; draws and tiles are not sampled either
+     * (biased there: docs/sampling.md). */
+    cy->too_short = sampled && !skips;
     cy->frame_sampling = sampled && !cy->too_short;
     cy->frame_skipped = cy->frame_sampling && !fs_cyc_frame_simulated(cy, cy->frame);
     /* Inside sampled frames, tile sampling only on one image engine: dealing
@@ -640,42 +751,54 @@ bool fs_cycle_frame_skipped(const fs_cycle *cy)
     return cy->frame_skipped;
 }
 
-/* The frames' error as a sample's variance (fs_cycle_finish): each steady
- * simulated frame s_j between two others is a test of the interpolation,
- * its residual r_j = c(s_j) - the line through its neighbours.  If frames
- * scatter about a smooth line with variance s^2, r_j has variance
+/* Student's t, two-sided 95%, for df = 1..30 degrees of freedom; beyond,
+ * z + (z^3 + z) / (4 df) (the first term of its expansion in 1/df). */
+static double t95(int df)
+{
+    static const double t[30] = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
+                                 2.201,  2.179, 2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086,
+                                 2.080,  2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
+    return df < 1 ? FS_CYC_Z95 : df <= 30 ? t[df - 1] : FS_CYC_Z95 + 2.37 / df;
+}
+
+/* A frame of a sequence in fs_cycle_finish: its cycles, whether it was
+ * skipped, its tile error and its weight in the interpolated frames. */
+typedef struct seq_frame { double c, te, coef; bool skipped; } seq_frame;
+
+/* The frames' error as a sample's variance: each simulated frame s_j
+ * between two others is a test of the interpolation, its residual
+ * r_j = c(s_j) - the line through its neighbours.  If frames scatter
+ * about a smooth line with variance s^2, r_j has variance
  * s^2 (1 + wl^2 + wr^2) (wl, wr: the line's weights of the neighbours), so
  * s^2 is estimated from the residuals with one degree of freedom each.
  * An interpolated frame then misses by its own scatter and by its
  * endpoints': the total misses with variance
  * s^2 (skipped frames + sum over simulated frames of coef^2).  This is
- * what the curvature bound above does not see: textured on
- * InfiniteReality scatters by 1-3% from frame to frame, and the bound
- * (0.21%) was a third of the error (+0.62%, docs/sampling.md).  The tile
- * errors of the simulated frames carry into the frames interpolated from
- * them (weight 1 + coef). */
-static void frame_noise(fs_cycle *cy, uint64_t first, const double *coef)
+ * what the curvature bound does not see: textured on InfiniteReality
+ * scatters by 1-3% from frame to frame, and the bound (0.21%) was a third
+ * of the error (+0.62%, docs/sampling.md).  The tile errors of the
+ * simulated frames carry into the frames interpolated from them (weight
+ * 1 + coef).  Returns the standard error, *df its degrees of freedom. */
+static double seq_noise(fs_cycle *cy, const seq_frame *s, uint64_t m, int *df)
 {
-    uint64_t n = cy->frames_done, nskip = 0;
+    uint64_t nskip = 0;
     double r2 = 0, cs2 = 0, sum = 0, sumsq = 0;
     int nr = 0, ns = 0;
-    uint64_t p = UINT64_MAX, q = UINT64_MAX; /* the last two steady simulated frames */
-    for (uint64_t f = 0; f < n; f++) {
-        if (cy->frame_was_skipped[f]) {
+    uint64_t p = UINT64_MAX, q = UINT64_MAX; /* the last two simulated frames */
+    for (uint64_t f = 0; f < m; f++) {
+        if (s[f].skipped) {
             nskip++;
             continue;
         }
-        double k = coef ? coef[f] : 0.0, te = cy->frame_tile_err[f] * (1.0 + k);
+        double k = s[f].coef, te = s[f].te * (1.0 + k);
         cs2 += k * k;
         cy->tile_var += te * te;
-        if (f < first)
-            continue;
         ns++;
-        sum += (double)cy->frame_cycles[f];
-        sumsq += (double)cy->frame_cycles[f] * (double)cy->frame_cycles[f];
+        sum += s[f].c;
+        sumsq += s[f].c * s[f].c;
         if (p != UINT64_MAX && q != UINT64_MAX) {
             double h = (double)(f - p), wl = (double)(f - q) / h, wr = (double)(q - p) / h;
-            double r = (double)cy->frame_cycles[q] - wl * (double)cy->frame_cycles[p] - wr * (double)cy->frame_cycles[f];
+            double r = s[q].c - wl * s[p].c - wr * s[f].c;
             r2 += r * r / (1.0 + wl * wl + wr * wr);
             nr++;
         }
@@ -684,73 +807,65 @@ static void frame_noise(fs_cycle *cy, uint64_t first, const double *coef)
     }
     /* One residual can be 0 by chance (frames 1, 8, 15 of 10, 11, 12 quads
      * lie on a line; the trace between them did not, -3.0%): below two,
-     * the steady frames' scatter about their mean stands in, which
-     * overstates a trend but is what three frames can tell. */
+     * the simulated frames' scatter about their mean stands in, which
+     * overstates a trend but is what three frames can tell (two: the
+     * first and last of exact repeats, one degree of freedom). */
     double s2 = nr > 0 ? r2 / nr : 0.0;
     if (nr < 2 && ns >= 2) {
         s2 = fmax(s2, (sumsq - sum * sum / ns) / (ns - 1));
         nr = ns - 1;
     }
-    cy->frame_df = nr;
-    cy->frame_sd = nr > 0 ? sqrt(fmax(s2, 0.0) * ((double)nskip + cs2)) : 0.0;
+    *df = nr;
+    return nr > 0 ? sqrt(fmax(s2, 0.0) * ((double)nskip + cs2)) : 0.0;
 }
 
-void fs_cycle_finish(fs_cycle *cy)
+/* One sequence's skipped frames, linear between its simulated frames
+ * a < f < b around them (by place in the sequence); returns the cycles
+ * they add, *half the 95% half-width of their error: the larger of the
+ * curvature bound and Student's t times the scatter's standard error
+ * (seq_noise; with 2 residuals t is 4.3, which is what 2 residuals can
+ * tell). */
+static double seq_finish(fs_cycle *cy, seq_frame *s, uint64_t m, double *half)
 {
-    if (!cy->frame_sampling || cy->finished)
-        return;
-    cy->finished = true;
-    uint64_t n = cy->frames_done, add = 0;
-    /* coef[s]: the weight of simulated frame s in the interpolated frames
-     * (how much of its own error each carries into the total) */
-    double *coef = calloc(n ? n : 1, sizeof *coef);
-    /* Interpolated frames: linear between the simulated frames a < f < b
-     * around them. */
-    for (uint64_t f = 0; f < n; f++) {
-        if (!cy->frame_was_skipped[f])
+    double add = 0;
+    for (uint64_t f = 0; f < m; f++) {
+        if (!s[f].skipped)
             continue;
         uint64_t a = f, b = f;
-        while (a > 0 && cy->frame_was_skipped[a])
+        while (a > 0 && s[a].skipped)
             a--;
-        while (b + 1 < n && cy->frame_was_skipped[b])
+        while (b + 1 < m && s[b].skipped)
             b++;
-        double ca = (double)cy->frame_cycles[a], cb = cy->frame_was_skipped[b] ? ca : (double)cy->frame_cycles[b];
+        double ca = s[a].c, cb = s[b].skipped ? ca : s[b].c;
         double w = b > a ? (double)(f - a) / (double)(b - a) : 0.0;
-        uint64_t e = (uint64_t)llround(ca + w * (cb - ca));
-        if (coef) {
-            coef[a] += cy->frame_was_skipped[b] ? 1.0 : 1.0 - w;
-            coef[b] += cy->frame_was_skipped[b] ? 0.0 : w;
-        }
-        cy->frame_cycles[f] = e;
-        add += e;
+        s[f].c = (double)llround(ca + w * (cb - ca));
+        s[a].coef += s[b].skipped ? 1.0 : 1.0 - w;
+        s[b].coef += s[b].skipped ? 0.0 : w;
+        add += s[f].c;
     }
     /* Error: linear interpolation of a curve c(t) misses
      * c''/2 (t - a)(b - t) at t (the interpolation remainder), the same sign
      * across a segment and, where the curvature keeps its sign, across
      * segments: the misses are summed, not added in quadrature.  c'' of a
      * segment is the larger second difference at its two ends (from the
-     * simulated frames around it).  The step rule (fs_cycle_set_frames)
-     * gives every skipped frame three steady simulated frames; fewer are
-     * left only when the trace ends before the frame count it announced,
-     * and then the estimate falls back to a quarter of the step per
-     * interpolated frame (which cannot see a trace that turns between two
-     * samples: docs/cycle_model.md). */
+     * simulated frames around it).  The step rule (seq_plan) gives every
+     * skipped frame three simulated frames; fewer are left only for exact
+     * repeats (first and last) and when the trace ends before the frame
+     * count it announced, and then the estimate falls back to a quarter of
+     * the step per interpolated frame (which cannot see a trace that turns
+     * between two samples: docs/cycle_model.md). */
     int nsim = 0;
     double err = 0;
-    /* The steady part only: frame 0's warm-up (above) is no point of the
-     * curve the skipped frames lie on. */
-    uint64_t first = n > 1 && !cy->frame_was_skipped[1] ? 1 : 0;
-    for (uint64_t f = first; f < n; f++)
-        if (!cy->frame_was_skipped[f])
-            nsim++;
+    for (uint64_t f = 0; f < m; f++)
+        nsim += !s[f].skipped;
     double prev_k = -1;
-    for (uint64_t a = first; a < n;) {
+    for (uint64_t a = 0; a < m;) {
         uint64_t b = a + 1;
-        while (b < n && cy->frame_was_skipped[b])
+        while (b < m && s[b].skipped)
             b++;
-        if (b >= n)
+        if (b >= m)
             break;
-        double ca = (double)cy->frame_cycles[a], cb = (double)cy->frame_cycles[b];
+        double ca = s[a].c, cb = s[b].c;
         double h = (double)(b - a), sumprod = 0;
         for (uint64_t f = a + 1; f < b; f++)
             sumprod += (double)(f - a) * (double)(b - f);
@@ -758,11 +873,11 @@ void fs_cycle_finish(fs_cycle *cy)
          * (with the segment after) */
         double k = prev_k;
         uint64_t c2 = b + 1;
-        while (c2 < n && cy->frame_was_skipped[c2])
+        while (c2 < m && s[c2].skipped)
             c2++;
         double kb = -1;
-        if (c2 < n) {
-            double cc = (double)cy->frame_cycles[c2], h2 = (double)(c2 - b);
+        if (c2 < m) {
+            double cc = s[c2].c, h2 = (double)(c2 - b);
             kb = fabs((cc - cb) / h2 - (cb - ca) / h) / ((h + h2) / 2.0);
         }
         if (kb > k)
@@ -774,11 +889,67 @@ void fs_cycle_finish(fs_cycle *cy)
         prev_k = kb;
         a = b;
     }
+    cy->frame_error += err;
+    int df;
+    double sd = seq_noise(cy, s, m, &df);
+    *half = fmax(err, t95(df) * sd);
+    return add;
+}
+
+void fs_cycle_finish(fs_cycle *cy)
+{
+    if (!cy->frame_sampling || cy->finished)
+        return;
+    cy->finished = true;
+    uint64_t n = cy->frames_done < cy->nplan ? cy->frames_done : cy->nplan;
+    /* the frames of each sequence in frame order: counted, then placed */
+    uint64_t *start = calloc((size_t)cy->nseqs + 1, sizeof *start), *order = malloc((n ? n : 1) * sizeof *order);
+    seq_frame *s = malloc((n ? n : 1) * sizeof *s);
+    if (!start || !order || !s) {
+        /* out of memory: the skipped frames stay at 0 cycles, and the
+         * estimate says the frames are unknown */
+        cy->frame_half = (double)fs_cyc_now_total(cy);
+        free(start);
+        free(order);
+        free(s);
+        return;
+    }
+    for (uint64_t f = 0; f < n; f++) {
+        if (cy->plan_seq[f] != FS_CYC_NO_SEQ)
+            start[cy->plan_seq[f] + 1]++;
+        else if (!cy->frame_was_skipped[f]) /* frame 0: its tile error alone */
+            cy->tile_var += cy->frame_tile_err[f] * cy->frame_tile_err[f];
+    }
+    for (uint32_t q = 0; q < cy->nseqs; q++)
+        start[q + 1] += start[q];
+    for (uint64_t f = 0; f < n; f++)
+        if (cy->plan_seq[f] != FS_CYC_NO_SEQ)
+            order[start[cy->plan_seq[f]]++] = f;
+    /* start[q] is now the end of sequence q */
+    uint64_t add = 0, from = 0;
+    cy->frame_error = cy->frame_half = 0;
+    for (uint32_t q = 0; q < cy->nseqs; q++) {
+        uint64_t m = start[q] - from;
+        const uint64_t *idx = order + from;
+        for (uint64_t j = 0; j < m; j++)
+            s[j] = (seq_frame){(double)cy->frame_cycles[idx[j]], cy->frame_tile_err[idx[j]], 0.0,
+                               cy->frame_was_skipped[idx[j]]};
+        double half;
+        add += (uint64_t)seq_finish(cy, s, m, &half);
+        /* Sequences are clusters of different work: their errors are
+         * summed, not added in quadrature (conservative where they are
+         * independent). */
+        cy->frame_half += half;
+        for (uint64_t j = 0; j < m; j++)
+            if (s[j].skipped)
+                cy->frame_cycles[idx[j]] = (uint64_t)s[j].c;
+        from = start[q];
+    }
     cy->est += add;
     cy->acc.estimated_cycles += add;
-    cy->frame_error = err;
-    frame_noise(cy, first, coef);
-    free(coef);
+    free(start);
+    free(order);
+    free(s);
 }
 
 uint64_t fs_cycle_frame_cycles(const fs_cycle *cy, uint64_t f, bool *skipped)
@@ -791,16 +962,6 @@ uint64_t fs_cycle_frame_cycles(const fs_cycle *cy, uint64_t f, bool *skipped)
     return cy->frame_cycles[f];
 }
 
-/* Student's t, two-sided 95%, for df = 1..30 degrees of freedom; beyond,
- * z + (z^3 + z) / (4 df) (the first term of its expansion in 1/df). */
-static double t95(int df)
-{
-    static const double t[30] = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
-                                 2.201,  2.179, 2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086,
-                                 2.080,  2.074, 2.069, 2.064, 2.060, 2.056, 2.052, 2.048, 2.045, 2.042};
-    return df < 1 ? FS_CYC_Z95 : df <= 30 ? t[df - 1] : FS_CYC_Z95 + 2.37 / df;
-}
-
 void fs_cycle_error_parts(const fs_cycle *cy, double part[FS_CYCLE_ERR_PARTS])
 {
     double total = (double)fs_cyc_now_total(cy);
@@ -811,7 +972,7 @@ void fs_cycle_error_parts(const fs_cycle *cy, double part[FS_CYCLE_ERR_PARTS])
     /* Frames: the larger of the curvature bound and the interval of their
      * scatter (t with the residuals' degrees of freedom: with 2 residuals
      * it is 4.3 standard errors, which is what 2 residuals can tell). */
-    part[FS_CYCLE_ERR_FRAMES] = fmax(cy->frame_error, t95(cy->frame_df) * cy->frame_sd) / total;
+    part[FS_CYCLE_ERR_FRAMES] = cy->frame_half / total;
     /* Tiles: hundreds of sampled tiles per frame, the normal quantile. */
     part[FS_CYCLE_ERR_TILES] = FS_CYC_Z95 * sqrt(cy->tile_var) / total;
     part[FS_CYCLE_ERR_DRAWS] = FS_CYC_Z95 * sqrt(cy->draw_var) / total;

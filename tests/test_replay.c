@@ -448,6 +448,46 @@ TEST(driver_state_in_the_context)
     fs_context_destroy(c); /* frees both lists (make sanitize) */
 }
 
+/* Sampled mode's frame signatures (fs_replay_frame_signatures): frames
+ * of the same calls have the same exact and kind signatures; a frame that
+ * differs only in a floating-point argument has the kind of the others
+ * but not their exact signature; one that differs in an integer (a vertex
+ * count, a mode) is of another kind.  The signatures are per frame of the
+ * frame end chosen (swaps here; glFinish when the trace has no swaps). */
+TEST(frame_signatures_of_kinds_and_repeats)
+{
+    tb t;
+    REQUIRE(tb_open(&t, "signatures") == 0);
+    viewport(&t, 32, 32);
+    /* frames: A A A' B A (A': A with another colour; B: two triangles) */
+    static const int tris[5] = {1, 1, 1, 2, 1};
+    for (int f = 0; f < 5; f++) {
+        fs_tval c[3] = {tb_fval(f == 2 ? 0.5f : 1.0f), tb_fval(0), tb_fval(0)};
+        call(&t, "glColor3f", 3, c, 0);
+        for (int i = 0; i < tris[f]; i++)
+            triangle(&t);
+        fs_tval a[2] = {tb_ival(0), tb_ival(0)};
+        call(&t, "glXSwapBuffers", 2, a, 0);
+        call(&t, "glFinish", 0, NULL, 0);
+    }
+    REQUIRE(fs_trace_finish(t.w) == 0);
+    char err[512];
+    for (int fin = 0; fin < 2; fin++) {
+        fs_replay_opts o = {fin ? "glFinish" : NULL, 0, 0, 0};
+        fs_replayer *r = fs_replay_open(t.path, &o, err, sizeof err);
+        REQUIRE(r != NULL);
+        const uint64_t *kind, *exact;
+        CHECK_EQ_UINT(fs_replay_frame_signatures(r, &kind, &exact), 5);
+        /* frame 0 carries the viewport: another frame than the others */
+        CHECK(exact[1] == exact[4] && kind[1] == kind[4]);
+        CHECK(exact[0] != exact[1]);
+        CHECK(kind[2] == kind[1] && exact[2] != exact[1]);
+        CHECK(kind[3] != kind[1]);
+        fs_replay_close(r);
+    }
+    unlink(t.path);
+}
+
 TEST_LIST = {
     TEST_ENTRY(frames_from_swaps_and_size_from_viewport),
     TEST_ENTRY(driver_state_in_the_context),
@@ -459,6 +499,7 @@ TEST_LIST = {
     TEST_ENTRY(no_viewport_and_no_size_is_an_error),
     TEST_ENTRY(record_replays_what_the_file_holds),
     TEST_ENTRY(skipped_names_are_valid_json),
+    TEST_ENTRY(frame_signatures_of_kinds_and_repeats),
     TEST_END,
 };
 
