@@ -92,12 +92,18 @@ void fs_exec_Lightfv(fs_context *c, GLenum light, GLenum pname, const GLfloat *p
     light_v(c, light, pname, params);
 }
 
+/* The integer forms of Light and Material (GL 1.5 2.14.2): colours map
+ * [-2^31, 2^31-1] linearly to [-1, 1], other values convert directly. */
+static void int_params(float f[4], GLenum pname, int n, const GLint *params)
+{
+    for (int i = 0; i < 4; i++)
+        f[i] = i >= n ? 0.0f : is_color_pname(pname) ? int_color(params[i]) : (float)params[i];
+}
+
 void fs_exec_Lightiv(fs_context *c, GLenum light, GLenum pname, const GLint *params)
 {
-    float f[4] = {0};
-    int n = fs_light_param_count(pname);
-    for (int i = 0; i < n; i++)
-        f[i] = is_color_pname(pname) ? int_color(params[i]) : (float)params[i];
+    float f[4];
+    int_params(f, pname, fs_light_param_count(pname), params);
     light_v(c, light, pname, f);
 }
 
@@ -235,10 +241,8 @@ void fs_exec_Materialfv(fs_context *c, GLenum face, GLenum pname, const GLfloat 
 
 void fs_exec_Materialiv(fs_context *c, GLenum face, GLenum pname, const GLint *params)
 {
-    float f[4] = {0};
-    int n = fs_material_param_count(pname);
-    for (int i = 0; i < n; i++)
-        f[i] = is_color_pname(pname) ? int_color(params[i]) : (float)params[i];
+    float f[4];
+    int_params(f, pname, fs_material_param_count(pname), params);
     material_v(c, face, pname, f);
 }
 

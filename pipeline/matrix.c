@@ -152,11 +152,18 @@ void fs_exec_LoadMatrixf(fs_context *c, const GLfloat *m)
     load_matrix(c, f);
 }
 
+/* The double forms convert each element to float first (GL 1.5 2.11.2:
+ * the GL computes in float; Mesa converts the same way). */
+static void mat_from_double(float f[16], const GLdouble *m)
+{
+    for (int i = 0; i < 16; i++)
+        f[i] = (float)m[i];
+}
+
 void fs_exec_LoadMatrixd(fs_context *c, const GLdouble *m)
 {
     float f[16];
-    for (int i = 0; i < 16; i++)
-        f[i] = (float)m[i];
+    mat_from_double(f, m);
     load_matrix(c, f);
 }
 
@@ -170,8 +177,7 @@ void fs_exec_MultMatrixf(fs_context *c, const GLfloat *m)
 void fs_exec_MultMatrixd(fs_context *c, const GLdouble *m)
 {
     float f[16];
-    for (int i = 0; i < 16; i++)
-        f[i] = (float)m[i];
+    mat_from_double(f, m);
     mult_matrix(c, f);
 }
 

@@ -71,7 +71,10 @@ t0=$(date +%s)
 parallel -j "$JOBS" --colsep ' ' --halt now,fail=1 run_one {1} {2} {3} <"$OUT/jobs.txt"
 t1=$(date +%s)
 # The children's user + system seconds (bash's times: the second line).
-cpu=$(times | tail -n 1 | awk '{ n = 0; for (i = 1; i <= 2; i++) { split($i, p, /[ms]/); n += p[1] * 60 + p[2] } printf "%d", n }')
+# times must run in this shell: inside $(...) it reports the subshell's
+# children, which are none.
+times >"$OUT/times.txt"
+cpu=$(tail -n 1 "$OUT/times.txt" | awk '{ n = 0; for (i = 1; i <= 2; i++) { split($i, p, /[ms]/); n += p[1] * 60 + p[2] } printf "%d", n }')
 /usr/bin/python3 scripts/study_culling.py --out "$OUT" --doc "$DOC" --fig "$FIG" --frames "$FRAMES" \
     --scale "$SCALE" --seconds $((t1 - t0)) --cpu-seconds "$cpu" --jobs "$JOBS" --o2-tri-cycles "$O2_TRI_CYCLES"
 echo "study_culling: $DOC regenerated in $((t1 - t0)) s ($(wc -l <"$OUT/jobs.txt") runs, $FRAMES frames each)"
