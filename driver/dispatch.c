@@ -694,6 +694,12 @@ int fs_call_validate(const fs_call *call)
 #undef fs_getmap_count
 #undef fs_teximage_nd_bytes
 
+/* GL_COMPILE_AND_EXECUTE: a call the list compiler says is due now. */
+static int run_compiled(fs_context *c, fs_call *call)
+{
+    return dispatch(c, call, true);
+}
+
 /* fs_submit without the capture. */
 static int submit_call(fs_context *c, fs_call *call)
 {
@@ -701,11 +707,8 @@ static int submit_call(fs_context *c, fs_call *call)
     int rc = 0;
     if (fs_dlist_compiling(c) && (flags & FS_F_LIST)) {
         /* Compiling copies the vertices a draw reads (display_list.c). */
-        if (!(flags & FS_F_DRAW) || draw_reads_in_bounds(c, call)) {
-            fs_dlist_compile(c, call);
-            if (fs_dlist_execute_too(c))
-                rc = dispatch(c, call, true);
-        }
+        if (!(flags & FS_F_DRAW) || draw_reads_in_bounds(c, call))
+            rc = fs_dlist_compile(c, call, run_compiled);
     } else {
         rc = dispatch(c, call, false);
     }

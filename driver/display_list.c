@@ -40,6 +40,12 @@ typedef struct fs_dlist_state {
     GLenum mode;
     int depth;
     bool oom; /* out of memory while compiling: EndList raises GL_OUT_OF_MEMORY */
+    /* Mesa's list compiler between a compiled glBegin and the first command it
+     * cannot keep in its vertex buffer (see vbo_role): `vbo` is set, and the
+     * entries from `held` on are vertex attributes given since the last
+     * vertex, which that command discards. */
+    bool vbo;
+    size_t held;
 } fs_dlist_state;
 
 static fs_dlist_state *state(fs_context *c)
@@ -94,11 +100,6 @@ bool fs_dlist_compiling(const fs_context *c)
     return c->lists && c->lists->building;
 }
 
-bool fs_dlist_execute_too(const fs_context *c)
-{
-    return c->lists && c->lists->mode == GL_COMPILE_AND_EXECUTE;
-}
-
 static void *keep(fs_dlist_state *s, dl_list *l, const void *src, size_t bytes)
 {
     if (l->nblocks == l->blocks_cap) {
@@ -149,18 +150,16 @@ static void snapshot_array(fs_dlist_state *s, dl_list *l, fs_client_array *dst,
     dst->pointer = copy - (ptrdiff_t)((size_t)lo * stride);
 }
 
-void fs_dlist_compile(fs_context *c, const fs_call *call)
+static bool append(fs_context *c, const fs_call *call)
 {
     fs_dlist_state *s = c->lists;
-    dl_list *l = s ? s->building : NULL;
-    if (!l)
-        return;
+    dl_list *l = s->building;
     if (l->n == l->cap) {
         size_t cap = l->cap ? l->cap * 2 : 64;
         dl_entry *e = realloc(l->entries, cap * sizeof *e);
         if (!e) {
             s->oom = true;
-            return;
+            return false;
         }
         l->entries = e;
         l->cap = cap;
@@ -182,14 +181,14 @@ void fs_dlist_compile(fs_context *c, const fs_call *call)
         if (es && call->a[i].p) {
             e->call.a[i].p = keep(s, l, call->a[i].p, es * call->a[i].count);
             if (!e->call.a[i].p)
-                return;
+                return false;
         }
     }
     if (info->flags & FS_F_DRAW) {
         int64_t lo, hi;
         fs_array_state *snap = keep(s, l, &c->arrays, sizeof c->arrays);
         if (!snap)
-            return;
+            return false;
         if (fs_draw_vertex_range(&e->call, &lo, &hi)) {
             for (int k = 0; k < FS_CLIENT_ARRAYS; k++) {
                 const fs_client_array *a = fs_client_array_at(&c->arrays, k);
@@ -201,6 +200,71 @@ void fs_dlist_compile(fs_context *c, const fs_call *call)
         e->arrays = snap;
     }
     l->n++;
+    return true;
+}
+
+
+/* How Mesa's display-list compiler (Mesa 22, vbo save mode) treats a call
+ * between glBegin and glEnd: vertex attributes are held until the next
+ * vertex; glEvalCoord, glEvalPoint and glCallList(s) make it leave its vertex
+ * buffer, and the attributes held at that moment are lost: neither stored
+ * in the list nor executed in GL_COMPILE_AND_EXECUTE mode.  After that the
+ * primitive's commands are stored one by one and nothing more is lost until
+ * glEnd.  Measured through libOSMesa (tests/test_list_state.c
+ * begin_attributes_lost_at_fallback_vs_osmesa): colours, normals, texture
+ * coordinates and materials are lost, glArrayElement counts as a vertex,
+ * and each glBegin of a list starts over.  GL 1.5 spec 5.4 would keep them;
+ * piglit's dlist-fdo31590 tests exactly this, and llvmpipe fails it. */
+enum vbo_role { VBO_OTHER, VBO_BEGIN, VBO_END, VBO_VERTEX, VBO_ATTRIB, VBO_FALLBACK };
+
+static enum vbo_role vbo_role(unsigned cmd)
+{
+    const char *n = fs_cmd_table[cmd].name;
+    if (!strcmp(n, "glBegin"))
+        return VBO_BEGIN;
+    if (!(fs_cmd_table[cmd].flags & FS_F_PRIM))
+        return VBO_OTHER;
+    if (!strcmp(n, "glEnd"))
+        return VBO_END;
+    if (!strncmp(n, "glVertex", 8) || !strcmp(n, "glArrayElement"))
+        return VBO_VERTEX;
+    if (!strncmp(n, "glEvalCoord", 11) || !strncmp(n, "glEvalPoint", 11) || !strncmp(n, "glCallList", 10))
+        return VBO_FALLBACK;
+    return VBO_ATTRIB;
+}
+
+int fs_dlist_compile(fs_context *c, fs_call *call, int (*run)(fs_context *, fs_call *))
+{
+    fs_dlist_state *s = c->lists;
+    dl_list *l = s ? s->building : NULL;
+    if (!l)
+        return 0;
+    bool exec = s->mode == GL_COMPILE_AND_EXECUTE;
+    enum vbo_role role = vbo_role(call->cmd);
+    if (s->vbo && role == VBO_ATTRIB) {
+        append(c, call); /* held: run with the next vertex */
+        return 0;
+    }
+    int rc = 0;
+    if (s->vbo && role == VBO_FALLBACK) {
+        l->n = s->held; /* lost (their copied data stays in l->blocks) */
+        s->vbo = false;
+    } else if (s->vbo && exec) {
+        for (size_t i = s->held; i < l->n && rc == 0; i++) {
+            fs_call held = l->entries[i].call;
+            rc = run(c, &held);
+        }
+    }
+    if (role == VBO_END)
+        s->vbo = false;
+    if (!append(c, call))
+        return rc;
+    if (role == VBO_BEGIN)
+        s->vbo = true;
+    s->held = l->n;
+    if (exec && rc == 0)
+        rc = run(c, call);
+    return rc;
 }
 
 static void execute_list(fs_context *c, GLuint name)
@@ -299,6 +363,7 @@ void fs_exec_NewList(fs_context *c, GLuint list, GLenum mode)
     s->building->name = list;
     s->mode = mode;
     s->oom = false;
+    s->vbo = false;
 }
 
 void fs_exec_EndList(fs_context *c)
