@@ -154,13 +154,14 @@ static bool get_computed(fs_context *c, GLenum pname, get_result *r)
     case GL_PROJECTION_STACK_DEPTH: put1(r, GET_NUM, c->xf.projection_top + 1); return true;
     case GL_TEXTURE_STACK_DEPTH: put1(r, GET_NUM, c->xf.texture_top[fs_active_unit(c)] + 1); return true;
     /* GL 1.5 spec table 6.15 and 6.26 (texture unit, units/texture_object.c). */
-    case GL_TEXTURE_1D: case GL_TEXTURE_2D: case GL_TEXTURE_3D: case GL_TEXTURE_CUBE_MAP:
+    case GL_TEXTURE_1D: case GL_TEXTURE_2D: case GL_TEXTURE_3D: case GL_TEXTURE_CUBE_MAP: case GL_TEXTURE_RECTANGLE:
         put1(r, GET_BOOL, *fs_texture_enable_flag(c, pname));
         return true;
     case GL_TEXTURE_BINDING_1D: put1(r, GET_NUM, fs_texture_binding(c, GL_TEXTURE_1D)); return true;
     case GL_TEXTURE_BINDING_2D: put1(r, GET_NUM, fs_texture_binding_2d(c)); return true;
     case GL_TEXTURE_BINDING_3D: put1(r, GET_NUM, fs_texture_binding(c, GL_TEXTURE_3D)); return true;
     case GL_TEXTURE_BINDING_CUBE_MAP: put1(r, GET_NUM, fs_texture_binding(c, GL_TEXTURE_CUBE_MAP)); return true;
+    case GL_TEXTURE_BINDING_RECTANGLE: put1(r, GET_NUM, fs_texture_binding(c, GL_TEXTURE_RECTANGLE)); return true;
     /* GL 1.5 spec table 6.30 and GL_FRAGSIM_occlusion_unit's New State. */
     /* Table 6.30: the compressed formats the texture unit decodes. */
     case GL_NUM_COMPRESSED_TEXTURE_FORMATS: put1(r, GET_NUM, fs_tex_compressed_formats(NULL)); return true;

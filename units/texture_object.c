@@ -34,6 +34,14 @@ static void object_defaults(fs_tex_object *t, GLuint name)
     t->complete = -1;
 }
 
+/* ARB_texture_rectangle, New State: a rectangle texture starts with
+ * CLAMP_TO_EDGE wraps and a LINEAR min filter (it has no MIPmaps). */
+static void rect_defaults(fs_tex_object *t)
+{
+    t->min_filter = GL_LINEAR;
+    t->wrap_s = t->wrap_t = t->wrap_r = GL_CLAMP_TO_EDGE;
+}
+
 static void object_release(fs_tex_object *t)
 {
     fs_mpgrid_gl_release(t);
@@ -50,6 +58,8 @@ int fs_texture_init(fs_context *c)
     for (int t = 0; t < FS_TEX_TARGETS; t++) {
         object_defaults(&s->default_obj[t], 0);
         s->default_obj[t].target = (enum fs_tex_target)t;
+        if (t == FS_TEX_RECT)
+            rect_defaults(&s->default_obj[t]);
     }
     for (int u = 0; u < FS_MAX_TEXTURE_UNITS; u++) {
         for (int t = 0; t < FS_TEX_TARGETS; t++)
@@ -253,6 +263,8 @@ static void bind(fs_context *c, int u, enum fs_tex_target k, GLuint texture)
             fs_error(c, GL_OUT_OF_MEMORY);
             return;
         }
+        if (!t->bound_once && k == FS_TEX_RECT)
+            rect_defaults(t);
         t->bound_once = true;
         t->target = k;
     }
@@ -665,6 +677,9 @@ static GLenum check_image_args(const fs_tex_target_info *ti, GLint level, GLint 
             return GL_INVALID_VALUE;
     /* 3.8.1: a cube map face is square. */
     if (ti->k == FS_TEX_CUBE && size[0] != size[1])
+        return GL_INVALID_VALUE;
+    /* ARB_texture_rectangle: level 0 only, no border. */
+    if (ti->k == FS_TEX_RECT && (level != 0 || border != 0))
         return GL_INVALID_VALUE;
     return GL_NO_ERROR;
 }
@@ -1098,6 +1113,9 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
          * (docs/extensions/footprint_filter.txt). */
         if (!is_min_filter(e) || ((e == GL_FOOTPRINT_FRAGSIM || e == GL_FOOTPRINT_HYBRID_FRAGSIM) && ti.k != FS_TEX_2D))
             break;
+        /* ARB_texture_rectangle: NEAREST or LINEAR only (INVALID_ENUM). */
+        if (ti.k == FS_TEX_RECT && e != GL_NEAREST && e != GL_LINEAR)
+            break;
         t->min_filter = e;
         t->complete = -1;
         return;
@@ -1110,6 +1128,9 @@ static void tex_parameter(fs_context *c, GLenum target, GLenum pname, const floa
     case GL_TEXTURE_WRAP_T:
     case GL_TEXTURE_WRAP_R: /* GL 1.2; Mesa takes it for every target */
         if (!is_wrap(e))
+            break;
+        /* ARB_texture_rectangle: no REPEAT or MIRRORED_REPEAT (INVALID_ENUM). */
+        if (ti.k == FS_TEX_RECT && (e == GL_REPEAT || e == GL_MIRRORED_REPEAT))
             break;
         *(pname == GL_TEXTURE_WRAP_S ? &t->wrap_s : pname == GL_TEXTURE_WRAP_T ? &t->wrap_t : &t->wrap_r) = e;
         return;

@@ -63,7 +63,9 @@ void fs_tex_wide_from_texels(fs_tex_image *img, size_t i, size_t n);
 /* The texture targets as indices into a unit's bindings and enables and
  * the default objects (GL 1.5 spec 3.8.12: each target has its own texture
  * 0).  A new target is one more name here and in units/texture_target.c. */
-enum fs_tex_target { FS_TEX_2D, FS_TEX_1D, FS_TEX_3D, FS_TEX_CUBE, FS_TEX_TARGETS };
+/* FS_TEX_RECT: ARB_texture_rectangle (GL 3.1 core), one level of any size,
+ * sampled at unnormalized coordinates (texture_sample.c). */
+enum fs_tex_target { FS_TEX_2D, FS_TEX_1D, FS_TEX_3D, FS_TEX_CUBE, FS_TEX_RECT, FS_TEX_TARGETS };
 /* A cube map's faces (3.8.6): GL_TEXTURE_CUBE_MAP_POSITIVE_X + face. */
 #define FS_TEX_FACES 6
 _Static_assert(FS_TEX_TARGETS == FS_TEX_TARGET_COUNT, "texture_unit.h counts the targets");

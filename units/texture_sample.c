@@ -150,6 +150,11 @@ static void select_lod(const fs_tex_object *t, const fs_tex_lod *lp, const float
     const float *s = st[0], *tt = st[1], *rr = st[2];
     /* llvmpipe's quad is (upper-left, upper-right, lower-left, lower-right)
      * in its y-down frame, i.e. fs_quad pixels 2, 3, 0, 1. */
+    /* A rectangle's s and t are in texels already (unnorm_axis), yet
+     * llvmpipe scales their derivatives by the size as a normalized
+     * coordinate's (measured: test_texture_rect sampled_vs_osmesa, 18 of
+     * 36 scenes with min != mag differed with the derivatives unscaled,
+     * 0 scaled), so a rectangle is minified almost everywhere. */
     float fw = (float)b->width, fh = (float)b->height;
     float dsdx = (s[3] - s[2]) * fw, dsdy = (s[0] - s[2]) * fw;
     float dtdx = (tt[3] - tt[2]) * fh, dtdy = (tt[0] - tt[2]) * fh;
@@ -341,7 +346,16 @@ typedef struct tex_fetch {
     GLenum wrap[3];
     bool pot[3]; /* each axis of the base level a power of two */
     float ref;        /* a depth texture's reference r/q at the pixel (texture_depth.h) */
+    bool unnorm;      /* a rectangle texture: s and t in texels, not scaled by the size */
 } tex_fetch;
+
+/* ARB_texture_rectangle, 3.8.7-3.8.8 of its spec: s and t are texel
+ * coordinates (u = s, v = t), not fractions of the size, and only the
+ * clamping wraps exist.  gallivm (normalized_coords false) skips the
+ * multiplication by the size and wraps as for a normalized coordinate:
+ * NEAREST floors, the 8-bit LINEAR rounds s * 256.  An axis the target
+ * lacks (r) keeps its normalized code. */
+static inline bool unnorm_axis(const tex_fetch *f, int a) { return f->unnorm && a < 2; }
 
 /* An image's size along axis a (0 s, 1 t, 2 r). */
 static inline int image_len(const fs_tex_image *img, int a) { return a == 0 ? img->width : a == 1 ? img->height : img->depth; }
@@ -374,7 +388,8 @@ static void sample_nearest8(tex_fetch *f, const fs_tex_image *img, const float s
 {
     int xyz[3];
     for (int a = 0; a < 3; a++)
-        xyz[a] = nearest_coord8(st[a], image_len(img, a), f->wrap[a], f->pot[a]);
+        xyz[a] = unnorm_axis(f, a) ? wrap_nearest(to_int_floor(st[a]), image_len(img, a), GL_CLAMP_TO_EDGE)
+                                   : nearest_coord8(st[a], image_len(img, a), f->wrap[a], f->pot[a]);
     uint8_t tmp[4];
     memcpy(out, texel_at(f, img, xyz, tmp), 4);
 }
@@ -440,8 +455,13 @@ static void sample_linear8(tex_fetch *f, const fs_tex_image *img, const float st
 {
     linear_taps tp;
     int w[3];
-    for (int a = 0; a < 3; a++)
-        linear_coord8(st[a], image_len(img, a), f->wrap[a], f->pot[a], &tp.i[a][0], &tp.i[a][1], &w[a]);
+    for (int a = 0; a < 3; a++) {
+        if (unnorm_axis(f, a)) /* the 8-bit path has CLAMP_TO_EDGE only (fs_tex_simple_wraps) */
+            linear_pair8(to_int_round_even(st[a] * 256.0f), image_len(img, a), GL_CLAMP_TO_EDGE, true, &tp.i[a][0],
+                         &tp.i[a][1], &w[a]);
+        else
+            linear_coord8(st[a], image_len(img, a), f->wrap[a], f->pot[a], &tp.i[a][0], &tp.i[a][1], &w[a]);
+    }
     int v0[4];
     bilinear8(f, img, &tp, 0, w, v0);
     if (f->dims == 3) {
@@ -519,6 +539,18 @@ static float mirror_coord(float s)
     return m > 0.0f ? m : 0.0f;
 }
 
+/* NEAREST's texel x = floor(u) clamped by a clamping wrap: into the image,
+ * or for CLAMP_TO_BORDER to [-1, len], which fetch_f answers with the
+ * border outside [0, len). */
+static inline int nearest_clamp(int x, int len, GLenum wrap)
+{
+    if (wrap == GL_CLAMP_TO_BORDER)
+        return x < -1 ? -1 : x > len ? len : x;
+    return x < 0 ? 0 : x >= len ? len - 1 : x;
+}
+
+static void linear_clamp_f(float u, int len, GLenum wrap, int *i0, int *i1, float *frac);
+
 /* The texel NEAREST takes on one axis in the float path (3.8.7); outside
  * [0, len) for CLAMP_TO_BORDER, which fetch_f answers with the border. */
 static int nearest_coord_f(float s, int len, GLenum wrap, bool pot)
@@ -531,10 +563,8 @@ static int nearest_coord_f(float s, int len, GLenum wrap, bool pot)
         int x = to_int_floor(mirror_coord(s) * lf); /* truncation: the fold is >= 0 */
         return x < len - 1 ? x : len - 1;
     }
-    case GL_CLAMP_TO_BORDER: {
-        int x = to_int_floor(s * lf);
-        return x < -1 ? -1 : x > len ? len : x;
-    }
+    case GL_CLAMP_TO_BORDER:
+        return nearest_clamp(to_int_floor(s * lf), len, wrap);
     case GL_MIRROR_CLAMP_EXT:
     case GL_MIRROR_CLAMP_TO_EDGE_EXT: {
         /* EXT_texture_mirror_clamp: mirror once about 0, then clamp; for
@@ -550,10 +580,8 @@ static int nearest_coord_f(float s, int len, GLenum wrap, bool pot)
         float u = fabsf(s * lf);
         return u < lf ? to_int_floor(u) : len;
     }
-    default: { /* CLAMP, CLAMP_TO_EDGE */
-        int x = to_int_floor(s * lf);
-        return x < 0 ? 0 : x >= len ? len - 1 : x;
-    }
+    default: /* CLAMP, CLAMP_TO_EDGE */
+        return nearest_clamp(to_int_floor(s * lf), len, wrap);
     }
 }
 
@@ -595,17 +623,6 @@ static void linear_coord_f(float s, int len, GLenum wrap, bool pot, int *i0, int
             *i1 = len - 1;
         return;
     }
-    if (wrap == GL_CLAMP_TO_BORDER) {
-        /* Clamped to [-1, len + 1] in texel space after the half-texel
-         * shift: a pair outside the image reads the border colour. */
-        u = u - 0.5f;
-        u = u < -1.0f ? -1.0f : u > lf + 1.0f ? lf + 1.0f : u;
-        float fl = floorf(u);
-        *frac = u - fl;
-        *i0 = to_int_floor(fl);
-        *i1 = *i0 + 1;
-        return;
-    }
     if (wrap == GL_REPEAT && !pot) {
         /* fract(s) scaled, less half a texel; a pair below 0 (or a NaN)
          * starts at the last texel (gallivm's float REPEAT for sizes not
@@ -625,6 +642,25 @@ static void linear_coord_f(float s, int len, GLenum wrap, bool pot, int *i0, int
         int x0 = to_int_floor(fl);
         *i0 = x0 & (len - 1);
         *i1 = (x0 + 1) & (len - 1);
+        return;
+    }
+    linear_clamp_f(u, len, wrap, i0, i1, frac);
+}
+
+/* LINEAR's pair and weight from the texel-space coordinate u for the
+ * clamping wraps (CLAMP_TO_BORDER, CLAMP, CLAMP_TO_EDGE). */
+static void linear_clamp_f(float u, int len, GLenum wrap, int *i0, int *i1, float *frac)
+{
+    float lf = (float)len;
+    if (wrap == GL_CLAMP_TO_BORDER) {
+        /* Clamped to [-1, len + 1] in texel space after the half-texel
+         * shift: a pair outside the image reads the border colour. */
+        u = u - 0.5f;
+        u = u < -1.0f ? -1.0f : u > lf + 1.0f ? lf + 1.0f : u;
+        float fl = floorf(u);
+        *frac = u - fl;
+        *i0 = to_int_floor(fl);
+        *i1 = *i0 + 1;
         return;
     }
     if (wrap == GL_CLAMP) {
@@ -683,14 +719,19 @@ static void sample_level_f(tex_fetch *f, int level, GLenum filter, const float s
     if (filter == GL_NEAREST) {
         int xyz[3];
         for (int a = 0; a < 3; a++)
-            xyz[a] = nearest_coord_f(st[a], image_len(img, a), f->wrap[a], f->pot[a]);
+            xyz[a] = unnorm_axis(f, a) ? nearest_clamp(to_int_floor(st[a]), image_len(img, a), f->wrap[a])
+                                       : nearest_coord_f(st[a], image_len(img, a), f->wrap[a], f->pot[a]);
         fetch_f(f, img, xyz, out);
         return;
     }
     linear_taps tp;
     float w[3];
-    for (int a = 0; a < 3; a++)
-        linear_coord_f(st[a], image_len(img, a), f->wrap[a], f->pot[a], &tp.i[a][0], &tp.i[a][1], &w[a]);
+    for (int a = 0; a < 3; a++) {
+        if (unnorm_axis(f, a))
+            linear_clamp_f(st[a], image_len(img, a), f->wrap[a], &tp.i[a][0], &tp.i[a][1], &w[a]);
+        else
+            linear_coord_f(st[a], image_len(img, a), f->wrap[a], f->pot[a], &tp.i[a][0], &tp.i[a][1], &w[a]);
+    }
     linear_taps_f(f, img, &tp, w, out);
 }
 
@@ -1145,6 +1186,7 @@ static bool sample_unit(fs_context *c, fs_quad *q, int u, const fs_quad_tex *qt,
     fs_tex_lod lp;
     fs_tex_lod_params(t, fs_tex_unit_lod_bias(c, u), &lp);
     lod_result lr;
+    bool rect = t->target == FS_TEX_RECT;
     select_lod(t, &lp, (const float(*)[4])str, 2, &lr);
     GLenum mf = t->min_filter;
     if ((mf == GL_FOOTPRINT_FRAGSIM || mf == GL_FOOTPRINT_HYBRID_FRAGSIM) && lr.minified) {
@@ -1171,7 +1213,7 @@ static bool sample_unit(fs_context *c, fs_quad *q, int u, const fs_quad_tex *qt,
      * blend then rounds differently, and LINEAR may reach the border). */
     bool depth = t->level[t->first_level].base_format == GL_DEPTH_COMPONENT;
     bool float_path = !fs_tex_simple_wraps(t) || depth || tex_wide(t); /* depth: texture_depth.c */
-    bool via_linear = float_path && img_filter == GL_NEAREST && c->raster.tex_pair_lod && fs_tex_pair_decides(t) &&
+    bool via_linear = !rect && float_path && img_filter == GL_NEAREST && c->raster.tex_pair_lod && fs_tex_pair_decides(t) &&
                       nearest_via_linear(t, &lp, dims, qt);
     fs_tex_reads reads;
     tex_fetch f = {t, t->mpgrid, {0, 0, 0}, c->observer ? &reads : NULL, 0, dims, 0,
@@ -1180,6 +1222,7 @@ static bool sample_unit(fs_context *c, fs_quad *q, int u, const fs_quad_tex *qt,
         int len = image_len(&t->level[t->first_level], a);
         f.pot[a] = (len & (len - 1)) == 0;
     }
+    f.unnorm = rect;
     if (!float_path && !st->generic && (t->target == FS_TEX_2D || t->target == FS_TEX_1D) && !f.mpgrid &&
         !c->observer) {
         st->quads_fast++;

@@ -24,6 +24,8 @@ bool fs_tex_target_of(GLenum target, fs_tex_target_info *ti)
     case GL_PROXY_TEXTURE_2D: *ti = (fs_tex_target_info){FS_TEX_2D, true, 2, 0}; return true;
     case GL_PROXY_TEXTURE_3D: *ti = (fs_tex_target_info){FS_TEX_3D, true, 3, 0}; return true;
     case GL_PROXY_TEXTURE_CUBE_MAP: *ti = (fs_tex_target_info){FS_TEX_CUBE, true, 2, 0}; return true;
+    case GL_TEXTURE_RECTANGLE: *ti = (fs_tex_target_info){FS_TEX_RECT, false, 2, 0}; return true;
+    case GL_PROXY_TEXTURE_RECTANGLE: *ti = (fs_tex_target_info){FS_TEX_RECT, true, 2, 0}; return true;
     default: return false;
     }
 }
@@ -48,8 +50,9 @@ int fs_tex_unit_target(const fs_tex_unit *tu)
     /* 3.8.15: "If TEXTURE_CUBE_MAP is enabled, the cube map texture is
      * used; otherwise if TEXTURE_3D is enabled, the three-dimensional
      * texture is used; otherwise if TEXTURE_2D is enabled ...; otherwise if
-     * TEXTURE_1D is enabled, the one-dimensional texture is used." */
-    static const enum fs_tex_target priority[] = {FS_TEX_CUBE, FS_TEX_3D, FS_TEX_2D, FS_TEX_1D};
+     * TEXTURE_1D is enabled, the one-dimensional texture is used."
+     * ARB_texture_rectangle puts TEXTURE_RECTANGLE between 3D and 2D. */
+    static const enum fs_tex_target priority[] = {FS_TEX_CUBE, FS_TEX_3D, FS_TEX_RECT, FS_TEX_2D, FS_TEX_1D};
     for (int i = 0; i < (int)(sizeof priority / sizeof priority[0]); i++)
         if (tu->enabled[priority[i]])
             return (int)priority[i];

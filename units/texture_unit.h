@@ -86,8 +86,8 @@ typedef struct fs_tex_env {
     float scale[2];             /* GL_RGB_SCALE, GL_ALPHA_SCALE */
     float lod_bias;             /* GL_TEXTURE_FILTER_CONTROL's bias (1.4, 3.8.8; texture_lod.c) */
 } fs_tex_env;
-/* The texture targets a unit binds (2D, 1D, 3D, cube map: units/texture_priv.h). */
-#define FS_TEX_TARGET_COUNT 4
+/* The texture targets a unit binds (2D, 1D, 3D, cube map, rectangle: units/texture_priv.h). */
+#define FS_TEX_TARGET_COUNT 5
 typedef struct fs_texture_attrib {
     struct {
         GLuint binding[FS_TEX_TARGET_COUNT];
