@@ -246,6 +246,7 @@ void fs_exec_End(fs_context *c)
          * program that sets materials between vertices, was dropped). */
         lazy = fs_vs_tile_mask(c, c->prim.mode) != NULL;
     } else {
+        v->setup.defer = fs_vs_defer_shading(c, c->prim.mode);
         lazy = fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_mask(c, c->prim.mode));
     }
     /* A GL_QUADS draw concatenated onto the run before it (vertex_stage.h)

@@ -154,8 +154,10 @@ static void tri_e(const prim_ctx *p, size_t a, size_t b, size_t cc, unsigned bou
     }
     if (c->observer)
         c->observer->ops->triangle(c->observer->user);
-    if (p->iv && (reach || !p->drop))
-        tri_attributes(p, a, b, cc); /* the rasterizer reads what it is given */
+    /* The rasterizer and the clipper read what they are given; a triangle
+     * rejected below (all) reads nothing (fs_vs_defer_shading). */
+    if (p->iv && !all && (reach || !p->drop))
+        tri_attributes(p, a, b, cc);
     if (any == 0) {
         if (!reach && p->drop) {
             /* Only its area counts: no rasterizer vertices to build. */

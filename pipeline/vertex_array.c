@@ -520,6 +520,7 @@ void fs_vs_prepare(fs_context *c, fs_vs_setup *s)
     s->has_fma = c->raster.has_fma;
     s->has_avx2 = c->raster.has_avx2;
     s->edge = NULL;
+    s->defer = false;
     /* llvmpipe draws OSMesa's buffer y-down: Mesa's state tracker negates the
      * y scale and takes the translation from the framebuffer height. */
     s->yr_scale = -s->vp_scale[1];
@@ -841,6 +842,12 @@ static inline __attribute__((always_inline)) bool vs_process(const fs_vs_setup *
             vs_position(s, &in[i], &out[i]);
         if (s->ucp_mask)
             user_plane_masks(s, out, n);
+        if (s->defer) {
+            /* Shaded by fs_prim_draw when a triangle reads them. */
+            for (i = 0; i < n; i++)
+                out[i].lazy = true;
+            return true;
+        }
         for (i = 0; i < n; i++) {
             vs_attributes(s, &in[i], &out[i]);
             out[i].lazy = false;
@@ -917,6 +924,31 @@ const fs_tile_mask *fs_vs_tile_mask(const fs_context *c, GLenum mode)
     return t;
 }
 
+/* Deferred shading (s->defer): a triangle wholly outside one clip plane
+ * is rejected before the clipper or the rasterizer reads a colour, a
+ * texture coordinate or a fog value of its vertices (GL 1.5 spec 2.12;
+ * primitive.c's tri_e), and most vertices of the corpus's programs are
+ * only in such triangles (winduprobot: 1.57 M of 2.18 M triangles).  So
+ * a triangle draw shades a vertex (vs_attributes, the same function and
+ * the same inputs, so the same bits) when the first triangle that is not
+ * rejected uses it.  Not for points and lines (fs_clip_line reads every
+ * vertex), nor in selection and feedback (2.13, 5.2-5.3: their own
+ * route), nor for unfilled polygons, nor when the tile mask's own lazy
+ * shading is on, nor for a batch lit with materials changed between its
+ * vertices (immediate.c lights each run with its own material). */
+bool fs_vs_defer_shading(fs_context *c, GLenum mode)
+{
+    if (mode < GL_TRIANGLES || mode > GL_POLYGON || fs_vs(c)->eager)
+        return false;
+    return !fs_render_mode_diverts(&c->rmode) && c->raster.polygon_mode[0] == GL_FILL &&
+           c->raster.polygon_mode[1] == GL_FILL && !fs_tile_mask_active(c);
+}
+
+void fs_vs_set_eager(fs_context *c, bool eager)
+{
+    fs_vs(c)->eager = eager;
+}
+
 /* ---- drawing ---- */
 void fs_exec_ArrayElement(fs_context *c, GLint i)
 {
@@ -976,6 +1008,7 @@ static void draw_batch(fs_context *c, GLenum mode, size_t n, const uint32_t *idx
                                                               : v->src_first + k);
         v->setup.edge = v->iv_edge;
     }
+    v->setup.defer = fs_vs_defer_shading(c, mode);
     bool lazy = fs_vs_process(&v->setup, v->iv, v->pv, n, fs_vs_tile_mask(c, mode));
     fs_prim_draw(c, &v->setup, mode, v->pv, lazy ? v->iv : NULL, idx, count, elements);
     v->deferred = false;

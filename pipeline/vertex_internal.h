@@ -143,6 +143,11 @@ typedef struct fs_vs_setup {
      * or NULL when every vertex has the current edge flag.  Reset by
      * fs_vs_prepare. */
     const uint8_t *edge;
+    /* Per-draw input: shade the batch's vertices (colours, texture
+     * coordinates, fog, point size) only when a triangle that is not
+     * wholly outside one clip plane reads them (fs_vs_defer_shading).
+     * Reset by fs_vs_prepare. */
+    bool defer;
     /* User clip planes (GL 1.5 spec 2.11; clip_plane.c): the enabled
      * planes as fs_pvert.mask bits (0 when none is, and then no vertex
      * pays for them) and each one's clip-space coefficients. */
@@ -192,6 +197,9 @@ typedef struct fs_vs_impl {
     size_t src_first;
     const void *src_indices;
     GLenum src_type;
+    /* fs_vs_set_eager: every vertex shaded in fs_vs_process, as the
+     * reference the deferred shading is tested against. */
+    bool eager;
     /* Tests observe what reaches the rasterizer through this (NULL in use). */
     void (*tri_hook)(void *user, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2);
     void *hook_user;
@@ -329,6 +337,9 @@ void fs_vs_constant_attribs(fs_context *c, const fs_vs_setup *s, unsigned varyin
  * are then `lazy`; returns true). */
 bool fs_vs_process(const fs_vs_setup *s, const fs_ivert *in, fs_pvert *out, size_t n, const fs_tile_mask *tiles);
 const fs_tile_mask *fs_vs_tile_mask(const fs_context *c, GLenum mode);
+/* Whether a draw in `mode` without a tile mask may shade its vertices
+ * only as its triangles need them (s->defer; vertex_array.c). */
+bool fs_vs_defer_shading(fs_context *c, GLenum mode);
 /* Colours and texture coordinates of lazy vertex k of the batch (its
  * inputs fetched first when the draw deferred them). */
 void fs_vs_attributes(fs_context *c, const fs_vs_setup *s, fs_ivert *iv, fs_pvert *pv, size_t k);

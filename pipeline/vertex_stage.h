@@ -180,6 +180,11 @@ typedef struct fs_prim_state {
 
 void fs_vertex_stage_init(fs_context *c);
 void fs_vertex_stage_free(fs_context *c);
+/* Tests: true shades every vertex of a draw before primitive assembly
+ * (the reference), false (the default) lets a triangle draw shade only
+ * the vertices of triangles not wholly outside one clip plane
+ * (fs_vs_defer_shading, tests/test_vertex_defer.c). */
+void fs_vs_set_eager(fs_context *c, bool eager);
 
 /* Derived vertex state (products of matrices, normalised light vectors) is
  * recomputed at each draw, so enables need no hook. */
