@@ -4,7 +4,8 @@
  * block formats compressed with Mesa's encoders (units/texture_encode.c):
  * GL_COMPRESSED_RED / _RG as RGTC1 / RGTC2, _LUMINANCE / _LUMINANCE_ALPHA
  * as LATC1 / LATC2.  Images of several sizes (non-multiples of 4, 1x1) and
- * patterns (random, gradients, flat, two colours, noise, extremes) are
+ * patterns (random, gradients, flat, two colours, noise, extremes, flat
+ * with +-3 noise) are
  * uploaded by glTexImage2D, updated by glTexSubImage2D, copied by
  * glCopyTexImage2D and glCopyTexSubImage2D; glGetTexImage's texels and
  * glGetCompressedTexImage's blocks are compared at tolerance 0.
@@ -41,7 +42,7 @@ static const fmt_case fmts[] = {
 enum { NFMT = (int)(sizeof fmts / sizeof fmts[0]), NCHAN = 4 };
 
 static const int sizes[][2] = {{16, 16}, {6, 6}, {13, 7}, {1, 1}, {2, 3}, {64, 32}, {5, 12}, {8, 4}};
-enum { NSIZES = (int)(sizeof sizes / sizeof sizes[0]), NPAT = 8 };
+enum { NSIZES = (int)(sizeof sizes / sizeof sizes[0]), NPAT = 9 };
 
 /* What a run reads: the texels (glGetTexImage) or the blocks. */
 enum part { PART_TEXELS, PART_BLOCKS };
@@ -79,7 +80,9 @@ static void pattern(int p, int w, int h, uint32_t seed, uint8_t *img)
                 case 4: v = 128 + (int)(rnd(&r) % 9) - 4; break;                             /* noise */
                 case 5: { int s = (int)(rnd(&r) % 3); v = s == 0 ? 0 : s == 1 ? 255 : (int)(rnd(&r) & 255); } break;
                 case 6: v = k == 3 ? 255 : (k == 0 ? 0 : (int)(rnd(&r) & 255)); break;      /* flat extremes */
-                default: v = (x * 16 + y * 9 + (int)(rnd(&r) % 31)) % 256; break;          /* ramp + noise */
+                case 7: v = (x * 16 + y * 9 + (int)(rnd(&r) % 31)) % 256; break;           /* ramp + noise */
+                default: v = a[k] + (int)(rnd(&r) % 7) - 3; v = v < 0 ? 0 : v > 255 ? 255 : v; break;
+                    /* a flat colour + noise of +-3: S3TC's base colours end close and are pushed apart */
                 }
                 img[((size_t)y * (size_t)w + (size_t)x) * 4 + (size_t)k] = (uint8_t)v;
             }
