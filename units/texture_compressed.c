@@ -43,12 +43,12 @@
  * them (GL_INVALID_ENUM, as OSMesa: EXT_texture_compression_s3tc names
  * CompressedTexImage2D only).
  *
- * Not modelled: glTexImage with an S3TC or generic RGB / RGBA internal
- * format on 2D and 3D (llvmpipe compresses with its S3TC encoder, which
- * the model does not have), glTexSubImage and glCopyTexSubImage into an
- * S3TC level, and GL_GENERATE_MIPMAP of a compressed level; the first is
- * refused as any unknown internal format is, the others are counted as
- * unsupported (texture_object.c, texture_lod.c).
+ * The S3TC formats named in glTexImage2D / glCopyTexImage2D, and the
+ * generic GL_COMPRESSED_RGB / _RGBA (stored as DXT1 / DXT5 on 2D, cube
+ * map and 3D images), are encoded as Mesa's S3TC encoder does
+ * (texture_encode.c) and decoded back, as are sub-image updates of them.
+ * Not modelled: GL_GENERATE_MIPMAP of a compressed level, counted as
+ * unsupported (texture_lod.c).
  * docs/compressed_textures.md sums this up.
  */
 #include <stdlib.h>
