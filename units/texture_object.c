@@ -1010,8 +1010,6 @@ void fs_tex_copy_image_nd(fs_context *c, int dims, GLenum target, GLint level, G
         copy_from_framebuffer(c, img, no_offset, bx, by, img->width, img->height);
     if (img && !compress_all(c, img))
         return;
-    if (img && internalformat == GL_R3_G3_B2)
-        fs_unsupported(c, "glCopyTexImage into GL_R3_G3_B2 (llvmpipe's rounding not modelled)");
     if (img)
         fs_tex_image_changed(c, t, ti.face, level);
 }
