@@ -4,7 +4,8 @@
  * block formats compressed with Mesa's encoders (units/texture_encode.c):
  * GL_COMPRESSED_RED / _RG as RGTC1 / RGTC2, _LUMINANCE / _LUMINANCE_ALPHA
  * as LATC1 / LATC2.  Images of several sizes (non-multiples of 4, 1x1) and
- * patterns (random, gradients, flat, two colours, noise, extremes) are
+ * patterns (random, gradients, flat, two colours, noise, extremes, flat
+ * with +-3 noise) are
  * uploaded by glTexImage2D, updated by glTexSubImage2D, copied by
  * glCopyTexImage2D and glCopyTexSubImage2D; glGetTexImage's texels and
  * glGetCompressedTexImage's blocks are compared at tolerance 0.
@@ -21,17 +22,27 @@
 
 enum { WIN = 64, CAP = 600000, BLOCK_MARK = -1000 };
 
-typedef struct fmt_case { GLenum generic, stored; const char *name; } fmt_case;
+/* kind: how a block is read (RGTC / LATC channel blocks, or S3TC: DXT1's
+ * colour block, DXT3's 4-bit alpha then colour, DXT5's alpha channel
+ * block then colour). */
+enum kind { K_CHANNELS, K_DXT1, K_DXT3, K_DXT5 };
+typedef struct fmt_case { GLenum generic, stored; const char *name; enum kind kind; } fmt_case;
 static const fmt_case fmts[] = {
-    {GL_COMPRESSED_RED, GL_COMPRESSED_RED_RGTC1, "red_rgtc1"},
-    {GL_COMPRESSED_RG, GL_COMPRESSED_RG_RGTC2, "rg_rgtc2"},
-    {GL_COMPRESSED_LUMINANCE, GL_COMPRESSED_LUMINANCE_LATC1_EXT, "luminance_latc1"},
-    {GL_COMPRESSED_LUMINANCE_ALPHA, GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT, "luminance_alpha_latc2"},
+    {GL_COMPRESSED_RED, GL_COMPRESSED_RED_RGTC1, "red_rgtc1", K_CHANNELS},
+    {GL_COMPRESSED_RG, GL_COMPRESSED_RG_RGTC2, "rg_rgtc2", K_CHANNELS},
+    {GL_COMPRESSED_LUMINANCE, GL_COMPRESSED_LUMINANCE_LATC1_EXT, "luminance_latc1", K_CHANNELS},
+    {GL_COMPRESSED_LUMINANCE_ALPHA, GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT, "luminance_alpha_latc2", K_CHANNELS},
+    /* S3TC: the generic RGB / RGBA (stored as DXT1 / DXT5), and the
+     * explicit formats through the same uncompressed upload paths */
+    {GL_COMPRESSED_RGB, GL_COMPRESSED_RGB_S3TC_DXT1_EXT, "rgb_dxt1", K_DXT1},
+    {GL_COMPRESSED_RGBA, GL_COMPRESSED_RGBA_S3TC_DXT5_EXT, "rgba_dxt5", K_DXT5},
+    {GL_COMPRESSED_RGBA_S3TC_DXT1_EXT, GL_COMPRESSED_RGBA_S3TC_DXT1_EXT, "rgba_dxt1", K_DXT1},
+    {GL_COMPRESSED_RGBA_S3TC_DXT3_EXT, GL_COMPRESSED_RGBA_S3TC_DXT3_EXT, "rgba_dxt3", K_DXT3},
 };
-enum { NFMT = (int)(sizeof fmts / sizeof fmts[0]) };
+enum { NFMT = (int)(sizeof fmts / sizeof fmts[0]), NCHAN = 4 };
 
 static const int sizes[][2] = {{16, 16}, {6, 6}, {13, 7}, {1, 1}, {2, 3}, {64, 32}, {5, 12}, {8, 4}};
-enum { NSIZES = (int)(sizeof sizes / sizeof sizes[0]), NPAT = 8 };
+enum { NSIZES = (int)(sizeof sizes / sizeof sizes[0]), NPAT = 9 };
 
 /* What a run reads: the texels (glGetTexImage) or the blocks. */
 enum part { PART_TEXELS, PART_BLOCKS };
@@ -69,7 +80,9 @@ static void pattern(int p, int w, int h, uint32_t seed, uint8_t *img)
                 case 4: v = 128 + (int)(rnd(&r) % 9) - 4; break;                             /* noise */
                 case 5: { int s = (int)(rnd(&r) % 3); v = s == 0 ? 0 : s == 1 ? 255 : (int)(rnd(&r) & 255); } break;
                 case 6: v = k == 3 ? 255 : (k == 0 ? 0 : (int)(rnd(&r) & 255)); break;      /* flat extremes */
-                default: v = (x * 16 + y * 9 + (int)(rnd(&r) % 31)) % 256; break;          /* ramp + noise */
+                case 7: v = (x * 16 + y * 9 + (int)(rnd(&r) % 31)) % 256; break;           /* ramp + noise */
+                default: v = a[k] + (int)(rnd(&r) % 7) - 3; v = v < 0 ? 0 : v > 255 ? 255 : v; break;
+                    /* a flat colour + noise of +-3: S3TC's base colours end close and are pushed apart */
                 }
                 img[((size_t)y * (size_t)w + (size_t)x) * 4 + (size_t)k] = (uint8_t)v;
             }
@@ -91,6 +104,27 @@ static void put_channel_block(double *v, int *n, const uint8_t *blk, int nx, int
     put(v, n, all0 ? -1 : blk[1]);
     for (int p = 0; p < 16; p++)
         put(v, n, (p % 4) < nx && (p / 4) < ny ? (double)((bits >> (3 * p)) & 7) : -1);
+}
+
+/* An S3TC colour block (8 bytes) as 19 values: the two 565 endpoints,
+ * then the sixteen 2-bit codes (inside nx x ny, else -1: Mesa codes only
+ * the pixels inside). */
+static void put_colour_block(double *v, int *n, const uint8_t *blk, int nx, int ny)
+{
+    uint32_t bits = blk[4] | (uint32_t)blk[5] << 8 | (uint32_t)blk[6] << 16 | (uint32_t)blk[7] << 24;
+    put(v, n, BLOCK_MARK);
+    put(v, n, blk[0] | blk[1] << 8);
+    put(v, n, blk[2] | blk[3] << 8);
+    for (int p = 0; p < 16; p++)
+        put(v, n, (p % 4) < nx && (p / 4) < ny ? (double)((bits >> (2 * p)) & 3) : -1);
+}
+
+/* DXT3's alpha half: the 4-bit alphas inside nx x ny. */
+static void put_dxt3_alpha(double *v, int *n, const uint8_t *blk, int nx, int ny)
+{
+    put(v, n, BLOCK_MARK);
+    for (int p = 0; p < 16; p++)
+        put(v, n, (p % 4) < nx && (p / 4) < ny ? (double)((blk[p / 2] >> (4 * (p % 2))) & 15) : -1);
 }
 
 static GLenum err_of(fs_context *c) { return c ? fsglGetError(c) : glGetError(); }
@@ -117,13 +151,27 @@ static void read_level(fs_context *c, double *v, int *n, int w, int h)
         if (size > 0 && size <= (int)sizeof out)
             G(GetCompressedTexImage, GL_TEXTURE_2D, 0, out);
         for (int by = 0; by < bh; by++)
-            for (int bx = 0; bx < bw; bx++)
-                for (int k = 0; k < chans && chans <= 2; k++) {
-                    if (in_partial(4 * bx, 4 * by, w, h) != cur_partial)
-                        continue;
-                    int nx = w - 4 * bx < 4 ? w - 4 * bx : 4, ny = h - 4 * by < 4 ? h - 4 * by : 4;
-                    put_channel_block(v, n, out + ((by * bw + bx) * chans + k) * 8, nx, ny);
+            for (int bx = 0; bx < bw; bx++) {
+                if (in_partial(4 * bx, 4 * by, w, h) != cur_partial || chans > 2)
+                    continue;
+                int nx = w - 4 * bx < 4 ? w - 4 * bx : 4, ny = h - 4 * by < 4 ? h - 4 * by : 4;
+                const uint8_t *blk = out + (by * bw + bx) * chans * 8;
+                switch (cur->kind) {
+                case K_CHANNELS:
+                    for (int k = 0; k < chans; k++)
+                        put_channel_block(v, n, blk + k * 8, nx, ny);
+                    break;
+                case K_DXT1: put_colour_block(v, n, blk, nx, ny); break;
+                case K_DXT3:
+                    put_dxt3_alpha(v, n, blk, nx, ny);
+                    put_colour_block(v, n, blk + 8, nx, ny);
+                    break;
+                case K_DXT5:
+                    put_channel_block(v, n, blk, nx, ny);
+                    put_colour_block(v, n, blk + 8, nx, ny);
+                    break;
                 }
+            }
     }
     put(v, n, err_of(c));
 }
@@ -224,7 +272,7 @@ static void given_blocks(fs_context *c, double *v, int *n)
     enum { S = 16 };
     static uint8_t data[S * S], out[S * S * 4];
     rng r = {77};
-    for (int f = 0; f < NFMT; f++) {
+    for (int f = 0; f < NCHAN; f++) {
         int bytes = (S / 4) * (S / 4) * (f % 2 ? 16 : 8);
         for (int i = 0; i < bytes; i++)
             data[i] = (uint8_t)rnd(&r);
@@ -238,7 +286,7 @@ static void given_blocks(fs_context *c, double *v, int *n)
     }
 }
 
-TEST(given_blocks_vs_osmesa) { OSM_CHECK_VALUES(given_blocks, 8, 8, NFMT * (16 * 16 * 4 + 1)); }
+TEST(given_blocks_vs_osmesa) { OSM_CHECK_VALUES(given_blocks, 8, 8, NCHAN * (16 * 16 * 4 + 1)); }
 
 /* Sampling: each format's texture of every pattern, 32 x 32, drawn
  * NEAREST at one texel per pixel and LINEAR tilted and minified, with
@@ -283,12 +331,20 @@ TEST(red_rgtc1_vs_osmesa) { check_format(check_st_, 0); }
 TEST(rg_rgtc2_vs_osmesa) { check_format(check_st_, 1); }
 TEST(luminance_latc1_vs_osmesa) { check_format(check_st_, 2); }
 TEST(luminance_alpha_latc2_vs_osmesa) { check_format(check_st_, 3); }
+TEST(rgb_dxt1_vs_osmesa) { check_format(check_st_, 4); }
+TEST(rgba_dxt5_vs_osmesa) { check_format(check_st_, 5); }
+TEST(rgba_dxt1_vs_osmesa) { check_format(check_st_, 6); }
+TEST(rgba_dxt3_vs_osmesa) { check_format(check_st_, 7); }
 
 TEST_LIST = {
     TEST_ENTRY(red_rgtc1_vs_osmesa),
     TEST_ENTRY(rg_rgtc2_vs_osmesa),
     TEST_ENTRY(luminance_latc1_vs_osmesa),
     TEST_ENTRY(luminance_alpha_latc2_vs_osmesa),
+    TEST_ENTRY(rgb_dxt1_vs_osmesa),
+    TEST_ENTRY(rgba_dxt5_vs_osmesa),
+    TEST_ENTRY(rgba_dxt1_vs_osmesa),
+    TEST_ENTRY(rgba_dxt3_vs_osmesa),
     TEST_ENTRY(sampled_vs_osmesa),
     TEST_ENTRY(given_blocks_vs_osmesa),
     TEST_END,

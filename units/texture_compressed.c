@@ -43,12 +43,12 @@
  * them (GL_INVALID_ENUM, as OSMesa: EXT_texture_compression_s3tc names
  * CompressedTexImage2D only).
  *
- * Not modelled: glTexImage with an S3TC or generic RGB / RGBA internal
- * format on 2D and 3D (llvmpipe compresses with its S3TC encoder, which
- * the model does not have), glTexSubImage and glCopyTexSubImage into an
- * S3TC level, and GL_GENERATE_MIPMAP of a compressed level; the first is
- * refused as any unknown internal format is, the others are counted as
- * unsupported (texture_object.c, texture_lod.c).
+ * The S3TC formats named in glTexImage2D / glCopyTexImage2D, and the
+ * generic GL_COMPRESSED_RGB / _RGBA (stored as DXT1 / DXT5 on 2D, cube
+ * map and 3D images), are encoded as Mesa's S3TC encoder does
+ * (texture_encode.c) and decoded back, as are sub-image updates of them.
+ * Not modelled: GL_GENERATE_MIPMAP of a compressed level, counted as
+ * unsupported (texture_lod.c).
  * docs/compressed_textures.md sums this up.
  */
 #include <stdlib.h>
@@ -261,6 +261,8 @@ GLint fs_tex_generic_compressed_format(GLint f)
     case GL_COMPRESSED_RG: return GL_COMPRESSED_RG_RGTC2;
     case GL_COMPRESSED_LUMINANCE: return GL_COMPRESSED_LUMINANCE_LATC1_EXT;
     case GL_COMPRESSED_LUMINANCE_ALPHA: return GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT;
+    case GL_COMPRESSED_RGB: return GL_COMPRESSED_RGB_S3TC_DXT1_EXT;
+    case GL_COMPRESSED_RGBA: return GL_COMPRESSED_RGBA_S3TC_DXT5_EXT;
     default: return 0;
     }
 }
@@ -271,6 +273,8 @@ GLenum fs_tex_compressed_upload_base(GLint f)
     switch (f) {
     case GL_COMPRESSED_RED_RGTC1: case GL_COMPRESSED_RG_RGTC2: case GL_COMPRESSED_LUMINANCE_LATC1_EXT:
     case GL_COMPRESSED_LUMINANCE_ALPHA_LATC2_EXT:
+    case GL_COMPRESSED_RGB_S3TC_DXT1_EXT: case GL_COMPRESSED_RGBA_S3TC_DXT1_EXT:
+    case GL_COMPRESSED_RGBA_S3TC_DXT3_EXT: case GL_COMPRESSED_RGBA_S3TC_DXT5_EXT:
         fs_tex_compressed_block_bytes(f, &base);
         return base;
     default:
@@ -287,6 +291,36 @@ static void gather_channel(const fs_tex_image *img, int x0, int y0, int z, int n
         for (int i = 0; i < nx; i++)
             v[4 * j + i] = img->texels[(((size_t)z * (size_t)img->height + (size_t)(y0 + j)) * (size_t)img->width +
                                         (size_t)(x0 + i)) * 4 + (size_t)comp];
+}
+
+/* One S3TC block of the texels at (x0, y0) of slice z (encoded by Mesa's
+ * rules, texture_encode.c) and decoded back; false for another format. */
+static bool encode_s3tc(fs_tex_image *img, uint8_t *blk, int x0, int y0, int z, int nx, int ny)
+{
+    GLint f = img->internal_format;
+    int mode = f == GL_COMPRESSED_RGB_S3TC_DXT1_EXT    ? FS_DXT_RGB1
+               : f == GL_COMPRESSED_RGBA_S3TC_DXT1_EXT ? FS_DXT_RGBA1
+               : f == GL_COMPRESSED_RGBA_S3TC_DXT3_EXT || f == GL_COMPRESSED_RGBA_S3TC_DXT5_EXT ? FS_DXT_FOUR
+                                                                                                 : -1;
+    if (mode < 0)
+        return false;
+    uint8_t px[16][4], a[16];
+    memset(px, 0, sizeof px);
+    for (int j = 0; j < ny; j++)
+        for (int i = 0; i < nx; i++)
+            memcpy(px[4 * j + i],
+                   img->texels + (((size_t)z * (size_t)img->height + (size_t)(y0 + j)) * (size_t)img->width +
+                                  (size_t)(x0 + i)) * 4,
+                   4);
+    for (int p = 0; p < 16; p++)
+        a[p] = px[p][3];
+    if (f == GL_COMPRESSED_RGBA_S3TC_DXT5_EXT)
+        fs_tex_encode_dxt5_alpha(blk, a, nx, ny);
+    else if (f == GL_COMPRESSED_RGBA_S3TC_DXT3_EXT)
+        fs_tex_encode_dxt3_alpha(blk, (const uint8_t(*)[4])px);
+    fs_tex_encode_dxt_colour(mode == FS_DXT_FOUR ? blk + 8 : blk, (const uint8_t(*)[4])px, nx, ny, mode);
+    decode_block(f, blk, img, x0, y0, z);
+    return true;
 }
 
 bool fs_tex_compress_box(fs_tex_image *img, int x, int y, int z, int w, int h, int d)
@@ -312,6 +346,8 @@ bool fs_tex_compress_box(fs_tex_image *img, int x, int y, int z, int w, int h, i
                 int nx = img->width - x0 < 4 ? img->width - x0 : 4, ny = img->height - y0 < 4 ? img->height - y0 : 4;
                 uint8_t *blk = img->compressed + ((k * bh + y0 / 4) * bw + x0 / 4) * bytes;
                 uint8_t v[16];
+                if (encode_s3tc(img, blk, x0, y0, k, nx, ny))
+                    continue;
                 gather_channel(img, x0, y0, k, nx, ny, 0, v);
                 fs_tex_encode_rgtc_channel(blk, v, nx, ny);
                 if (bytes == 16) {

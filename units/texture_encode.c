@@ -82,7 +82,10 @@ static void pack_codes(uint8_t blk[8], int e0, int e1, const uint8_t code[16])
         blk[2 + k] = (uint8_t)(bits >> (8 * k));
 }
 
-void fs_tex_encode_rgtc_channel(uint8_t blk[8], const uint8_t v[16], int nx, int ny)
+/* One channel block; single: whether the one-value shortcut also takes a
+ * block of a single inner value (RGTC's encoder does, DXT5's alpha
+ * encoder does not: it only takes blocks of 0s or of 255s). */
+static void channel_block(uint8_t blk[8], const uint8_t v[16], int nx, int ny, bool single)
 {
     int lo = 255, hi = 0; /* the inner values' range */
     bool has0 = false, has255 = false;
@@ -99,7 +102,7 @@ void fs_tex_encode_rgtc_channel(uint8_t blk[8], const uint8_t v[16], int nx, int
             }
         }
     /* 0. the shortcut (byte 1 written as 0 here: Mesa leaves it) */
-    if ((lo > hi && !(has0 && has255)) || (lo == hi && !has0 && !has255)) {
+    if ((lo > hi && !(has0 && has255)) || (single && lo == hi && !has0 && !has255)) {
         memset(blk, 0, 8);
         blk[0] = v[0];
         return;
@@ -201,4 +204,223 @@ void fs_tex_encode_rgtc_channel(uint8_t blk[8], const uint8_t v[16], int nx, int
         pack_codes(blk, lo, hi, code2);
     else
         pack_codes(blk, tlo, thi, code3);
+}
+
+void fs_tex_encode_rgtc_channel(uint8_t blk[8], const uint8_t v[16], int nx, int ny)
+{
+    channel_block(blk, v, nx, ny, true);
+}
+
+void fs_tex_encode_dxt5_alpha(uint8_t blk[8], const uint8_t v[16], int nx, int ny)
+{
+    channel_block(blk, v, nx, ny, false);
+}
+
+void fs_tex_encode_dxt3_alpha(uint8_t blk[8], const uint8_t px[16][4])
+{
+    /* EXT_texture_compression_s3tc's DXT3 alpha: 4 bits a pixel, Mesa
+     * keeps the top four of each alpha. */
+    for (int k = 0; k < 8; k++)
+        blk[k] = (uint8_t)((px[2 * k][3] >> 4) | (px[2 * k + 1][3] & 0xf0));
+}
+
+/* ---- S3TC colour blocks (DXT1, and the colour half of DXT3 / DXT5) ----
+ *
+ * Mesa's encoder (libtxc_dxtn's, src/util/format/texcompress_s3tc_tmp.h,
+ * facts read there) measures colours by a luminance-weighted squared
+ * distance, 4 dr^2 + 16 dg^2 + db^2 (wdist below), and:
+ *
+ *   1. takes as base colours the block's pixels of the largest and the
+ *      smallest weighted length 4 r^2 + 16 g^2 + b^2 (both start as the
+ *      first pixel; a later pixel replaces the high one when strictly
+ *      longer, else the low one when strictly shorter; an RGBA_DXT1 pixel
+ *      of alpha <= 127 is skipped and marks the block as having alpha);
+ *   2. orders them by their 565 value (a the smaller, ties swapped), codes
+ *      each pixel to the nearest of a, b, (2a + b)/3, (a + 2b)/3 (8-bit
+ *      values, truncated; ties to the earlier), sums the signed per-channel
+ *      differences weighted 3:0, 2:1, 1:2, 0:3 towards a and b, and moves
+ *      each by its sum over its weight count (truncated toward zero,
+ *      clamped to 0..255);
+ *   3. when the two end within 8 / 4 / 8 of each other (r / g / b), pushes
+ *      them apart by a factor (2, 3 or 4 by the largest difference, green
+ *      counted twice) times the differences, each clamped to 255 (the red
+ *      test compares red with the other colour's green: Mesa's);
+ *   4. orders them again, the right side's blue shifted with the whole
+ *      565 value (Mesa's parenthesis), truncates both to 565 (not
+ *      expanded: 8-bit values with the low bits 0), makes color0 the
+ *      larger 565 value and codes each pixel among the four colours as in
+ *      2 (error summed); for DXT1 also among color0, color1 and their
+ *      average (b0 + b1)/2 with code 3 for RGBA_DXT1 pixels of alpha <=
+ *      127, and writes that three-colour block (color1 first) when its
+ *      error is strictly smaller or the block has alpha.
+ *
+ * Only the pixels inside the image take part; the codes of the others are
+ * 0 (Mesa builds the code word from the inside pixels only). */
+
+static unsigned wdist(const uint8_t *p, const int *c)
+{
+    int dr = p[0] - c[0], dg = p[1] - c[1], db = p[2] - c[2];
+    return (unsigned)(dr * dr * 4 + dg * dg * 16 + db * db);
+}
+
+static int pack565(const int *c) { return (c[0] & 0xf8) << 8 | (c[1] & 0xfc) << 3 | c[2] >> 3; }
+
+static void four_colours(const int a[3], const int b[3], int cv[4][3])
+{
+    for (int k = 0; k < 3; k++) {
+        cv[0][k] = a[k];
+        cv[1][k] = b[k];
+        cv[2][k] = (a[k] * 2 + b[k]) / 3;
+        cv[3][k] = (a[k] + b[k] * 2) / 3;
+    }
+}
+
+/* The nearest of the first n colours (ties to the earlier). */
+static int nearest(const uint8_t *p, int cv[][3], int n, unsigned *err)
+{
+    unsigned best = 0xffffffffu;
+    int enc = 0;
+    for (int c = 0; c < n; c++) {
+        unsigned e = wdist(p, cv[c]);
+        if (e < best) {
+            best = e;
+            enc = c;
+        }
+    }
+    *err = best;
+    return enc;
+}
+
+static int iabs(int x) { return x < 0 ? -x : x; }
+
+/* Step 2 and 3: the refined base colours (in t[0], t[1]). */
+static void refine(const uint8_t px[16][4], int nx, int ny, int t[2][3])
+{
+    int cv[4][3], lin[2][3] = {{0}}, nr[2] = {0, 0};
+    four_colours(t[0], t[1], cv);
+    /* the weight of a pixel's error towards a and b, by its code */
+    static const int wa[4] = {3, 0, 2, 1}, wb[4] = {0, 3, 1, 2};
+    for (int j = 0; j < ny; j++)
+        for (int i = 0; i < nx; i++) {
+            const uint8_t *p = px[4 * j + i];
+            unsigned e;
+            int enc = nearest(p, cv, 4, &e);
+            for (int k = 0; k < 3; k++) {
+                lin[0][k] += wa[enc] * (p[k] - cv[enc][k]);
+                lin[1][k] += wb[enc] * (p[k] - cv[enc][k]);
+            }
+            nr[0] += wa[enc];
+            nr[1] += wb[enc];
+        }
+    for (int s = 0; s < 2; s++)
+        for (int k = 0; k < 3; k++) {
+            int v = t[s][k] + lin[s][k] / (nr[s] ? nr[s] : 1);
+            t[s][k] = v <= 0 ? 0 : v >= 255 ? 255 : v;
+        }
+    int dr = iabs(t[0][0] - t[1][0]), dg = iabs(t[0][1] - t[1][1]), db = iabs(t[0][2] - t[1][2]);
+    if (dr < 8 && dg < 4 && db < 8) {
+        /* so close they might become one 565 value: push them apart */
+        dg *= 2;
+        int m = dr > dg ? dr : dg;
+        m = m > db ? m : db;
+        if (m > 0) {
+            int f = m > 4 ? 2 : m > 2 ? 3 : 4;
+            int hi = t[1][1] >= t[0][1] ? 1 : 0, lo = 1 - hi;
+            t[hi][1] = t[hi][1] + f * dg <= 255 ? t[hi][1] + f * dg : 255;
+            int r = t[hi][0] - t[lo][1] > 0 ? hi : lo; /* red against green: Mesa's */
+            t[r][0] = t[r][0] + f * dr <= 255 ? t[r][0] + f * dr : 255;
+            int b = t[hi][2] - t[lo][2] > 0 ? hi : lo;
+            t[b][2] = t[b][2] + f * db <= 255 ? t[b][2] + f * db : 255;
+        }
+    }
+}
+
+void fs_tex_encode_dxt_colour(uint8_t blk[8], const uint8_t px[16][4], int nx, int ny, int mode)
+{
+    bool punch = mode == FS_DXT_RGBA1, alpha = false;
+    /* 1. the longest and shortest pixels */
+    const uint8_t *lo = px[0], *hi = px[0];
+    unsigned lowcv = (unsigned)(px[0][0] * px[0][0] * 4 + px[0][1] * px[0][1] * 16 + px[0][2] * px[0][2]);
+    unsigned highcv = lowcv;
+    for (int j = 0; j < ny; j++)
+        for (int i = 0; i < nx; i++) {
+            const uint8_t *p = px[4 * j + i];
+            if (punch && p[3] <= 127) {
+                alpha = true;
+                continue;
+            }
+            unsigned v = (unsigned)(p[0] * p[0] * 4 + p[1] * p[1] * 16 + p[2] * p[2]);
+            if (v > highcv) {
+                highcv = v;
+                hi = p;
+            } else if (v < lowcv) {
+                lowcv = v;
+                lo = p;
+            }
+        }
+    /* 2. ordered by 565 value (ties swapped), refined */
+    int t[2][3];
+    int lo3[3] = {lo[0], lo[1], lo[2]}, hi3[3] = {hi[0], hi[1], hi[2]};
+    bool keep = pack565(lo3) < pack565(hi3);
+    memcpy(t[0], keep ? lo3 : hi3, sizeof t[0]);
+    memcpy(t[1], keep ? hi3 : lo3, sizeof t[1]);
+    refine(px, nx, ny, t);
+    /* 4. ordered again (the right side's blue shifted with the rest) */
+    int rhs = ((t[1][0] & 0xf8) << 8 | (t[1][1] & 0xfc) << 3 | t[1][2]) >> 3;
+    int b[2][3];
+    bool first = pack565(t[0]) < rhs;
+    for (int k = 0; k < 3; k++) {
+        int m = k == 1 ? 0xfc : 0xf8;
+        b[0][k] = (first ? t[0][k] : t[1][k]) & m;
+        b[1][k] = (first ? t[1][k] : t[0][k]) & m;
+    }
+    int c0 = pack565(b[0]), c1 = pack565(b[1]);
+    if (c0 < c1) {
+        int tmp[3];
+        memcpy(tmp, b[0], sizeof tmp);
+        memcpy(b[0], b[1], sizeof tmp);
+        memcpy(b[1], tmp, sizeof tmp);
+        int tc = c0;
+        c0 = c1;
+        c1 = tc;
+    }
+    int cv[4][3];
+    four_colours(b[0], b[1], cv);
+    uint32_t bits = 0, bits2 = 0;
+    unsigned err = 0, err2 = 0xffffffffu;
+    for (int j = 0; j < ny; j++)
+        for (int i = 0; i < nx; i++) {
+            unsigned e;
+            int enc = nearest(px[4 * j + i], cv, 4, &e);
+            err += e;
+            bits |= (uint32_t)enc << (2 * (4 * j + i));
+        }
+    if (mode != FS_DXT_FOUR) {
+        for (int k = 0; k < 3; k++) {
+            cv[2][k] = (b[0][k] + b[1][k]) / 2;
+            cv[3][k] = 0;
+        }
+        err2 = 0;
+        for (int j = 0; j < ny; j++)
+            for (int i = 0; i < nx; i++) {
+                const uint8_t *p = px[4 * j + i];
+                unsigned e = 0;
+                int enc = 3;
+                if (!(punch && p[3] <= 127)) {
+                    enc = nearest(p, cv, 3, &e);
+                    enc = enc > 1 ? enc : enc ^ 1; /* color0 and color1 swap places */
+                }
+                err2 += e;
+                bits2 |= (uint32_t)enc << (2 * (4 * j + i));
+            }
+    }
+    bool three = err > err2 || alpha;
+    int w0 = three ? c1 : c0, w1 = three ? c0 : c1;
+    uint32_t w = three ? bits2 : bits;
+    blk[0] = (uint8_t)w0;
+    blk[1] = (uint8_t)(w0 >> 8);
+    blk[2] = (uint8_t)w1;
+    blk[3] = (uint8_t)(w1 >> 8);
+    for (int k = 0; k < 4; k++)
+        blk[4 + k] = (uint8_t)(w >> (8 * k));
 }

@@ -830,12 +830,23 @@ static bool compressed_box_ok(fs_context *c, const fs_tex_image *img, const GLin
     return true;
 }
 
+/* The S3TC, RGTC and LATC block formats named explicitly are for 2D and
+ * cube map images only (Mesa's check of the target a compressed format
+ * can take: measured through OSMesa, glTexImage1D/3D and
+ * glCopyTexImage1D with one are INVALID_ENUM; the generic formats are
+ * stored otherwise, generic_compressed_storage). */
+static bool block_format_refused(GLint f, int dims)
+{
+    return dims != 2 && fs_tex_compressed_block_bytes(f, NULL);
+}
+
 void fs_tex_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLint internalformat, GLsizei w, GLsizei h,
                      GLsizei d, GLint border, GLenum format, GLenum type, const GLvoid *pixels)
 {
     fs_tex_target_info ti;
     if (!image_target(c, target, dims, true, &ti))
         return;
+    GLint asked = internalformat;
     internalformat = generic_compressed_storage(internalformat, dims);
     const GLsizei size[3] = {w, h, d};
     GLenum err = image_format_error(format, type);
@@ -846,10 +857,8 @@ void fs_tex_image_nd(fs_context *c, int dims, GLenum target, GLint level, GLint 
     bool depth = fs_tex_depth_format(internalformat);
     if (err == GL_NO_ERROR && (depth_mismatch(depth, format) || (depth && dims == 3)))
         err = GL_INVALID_OPERATION;
-    /* The block formats are for 2D, cube map and 3D images (OSMesa: a 1D
-     * image of one is INVALID_OPERATION). */
-    if (err == GL_NO_ERROR && dims == 1 && fs_tex_compressed_block_bytes(internalformat, NULL))
-        err = GL_INVALID_OPERATION;
+    if (err == GL_NO_ERROR && block_format_refused(asked, dims))
+        err = GL_INVALID_ENUM;
     if (ti.proxy && proxy_image(c, &ti, err, level, internalformat, size, border))
         return;
     if (err != GL_NO_ERROR) {
@@ -988,12 +997,15 @@ void fs_tex_copy_image_nd(fs_context *c, int dims, GLenum target, GLint level, G
     fs_tex_target_info ti;
     if (!image_target(c, target, dims, false, &ti))
         return;
+    GLint asked = (GLint)internalformat;
     internalformat = (GLenum)generic_compressed_storage((GLint)internalformat, dims);
     const GLsizei size[3] = {w, h, 1};
     /* Table 3.16: the internal formats 1-4 are not accepted here. */
     GLenum err = internalformat >= 1 && internalformat <= 4
                      ? GL_INVALID_VALUE
                      : check_image_args(&ti, level, (GLint)internalformat, size, border);
+    if (err == GL_NO_ERROR && block_format_refused(asked, dims))
+        err = GL_INVALID_ENUM;
     /* A depth texture needs a depth buffer to copy from (GL 1.4 3.8.2). */
     if (err == GL_NO_ERROR && fs_tex_depth_format((GLint)internalformat) && (c->fb.depth_bits == 0 || dims == 3))
         err = GL_INVALID_OPERATION;
@@ -1013,8 +1025,6 @@ void fs_tex_copy_image_nd(fs_context *c, int dims, GLenum target, GLint level, G
         copy_from_framebuffer(c, img, no_offset, bx, by, img->width, img->height);
     if (img && !compress_all(c, img))
         return;
-    if (img && internalformat == GL_R3_G3_B2)
-        fs_unsupported(c, "glCopyTexImage into GL_R3_G3_B2 (llvmpipe's rounding not modelled)");
     if (img)
         fs_tex_image_changed(c, t, ti.face, level);
 }

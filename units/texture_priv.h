@@ -226,6 +226,15 @@ bool fs_tex_compressed_readback(const fs_tex_image *img, int y, int z, uint8_t *
 /* texture_encode.c: one RGTC / LATC channel block from v[4 j + i], the
  * nx x ny pixels inside the image. */
 void fs_tex_encode_rgtc_channel(uint8_t blk[8], const uint8_t v[16], int nx, int ny);
+/* DXT5's alpha block (as RGTC's channel but without its single-value
+ * shortcut) and DXT3's; an S3TC colour block of px[4 j + i] (RGBA), the
+ * nx x ny pixels inside the image: FS_DXT_RGB1 and FS_DXT_RGBA1 try
+ * DXT1's three-colour mode (RGBA1 with punch-through alpha), FS_DXT_FOUR
+ * (DXT3, DXT5) four colours only. */
+enum { FS_DXT_RGB1, FS_DXT_RGBA1, FS_DXT_FOUR };
+void fs_tex_encode_dxt5_alpha(uint8_t blk[8], const uint8_t v[16], int nx, int ny);
+void fs_tex_encode_dxt3_alpha(uint8_t blk[8], const uint8_t px[16][4]);
+void fs_tex_encode_dxt_colour(uint8_t blk[8], const uint8_t px[16][4], int nx, int ny, int mode);
 
 /* ---- level of detail (texture_lod.c) ---- */
 void fs_tex_lod_defaults(fs_tex_object *t);
