@@ -9,8 +9,8 @@
  * texture unit's counters; they are summed at the join in thread order.
  *
  * Only draws that cannot touch shared mutable state go parallel
- * (fs_par_draw_begin): no observer (cycle and sampled mode stay on one
- * thread: the cycle observer is not thread safe), no Occlusion Unit hook
+ * (fs_par_draw_begin): no observer (observer.h: its hooks are not
+ * called from several threads), no Occlusion Unit hook
  * (occlusion modes, queries), GL_RENDER mode, triangle modes filled on both
  * faces, the incremental rasterizer, and no MP-Grid or footprint-filtered
  * texture.  raster.threads = 1 records nothing: today's path exactly.
