@@ -49,7 +49,7 @@ LAYER_LIBS := $(BUILD)/libfragsim_driver.a $(BUILD)/libfragsim_rtl.a $(BUILD)/li
 # Link the archives whole so that every executor overrides its weak fallback.
 WHOLE_LIB = -Wl,--whole-archive $(LAYER_LIBS) -Wl,--no-whole-archive
 
-.PHONY: all deps test run sanitize fuzz bench golden docs clean scenes tests shim study-filters exec-check gl-coverage
+.PHONY: all deps test run sanitize tsan fuzz bench golden docs clean scenes tests shim study-filters exec-check gl-coverage
 .PHONY: sampling-study studies study-occlusion study-query-cost study-texture-cache study-culling conformance conformance-run
 all: $(LIB) $(FRAGSIM) tests scenes shim exec-check cullstudy
 
@@ -132,6 +132,13 @@ run: deps all
 sanitize:
 	$(MAKE) BUILD=build-san OPT=-O1 SAN="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined" all
 	FRAGSIM_SKIP_COMPILER_TEST=1 ASAN_OPTIONS=detect_leaks=0 UBSAN_OPTIONS=print_stacktrace=1 tests/run_all.sh build-san
+
+# ThreadSanitizer on the threaded rasterization (pipeline/raster_threads.h):
+# the threaded replay test (tests/cli_threads.sh) on a TSan build; any data
+# race report fails it (halt_on_error).
+tsan:
+	$(MAKE) BUILD=build-tsan OPT=-O1 SAN="-fsanitize=thread -fno-omit-frame-pointer" build-tsan/fragsim build-tsan/scenegen
+	FRAGSIM=$(abspath build-tsan/fragsim) SCENEGEN=$(abspath build-tsan/scenegen) TSAN_OPTIONS="halt_on_error=1 exitcode=66" THREADS_QUICK=1 bash tests/cli_threads.sh
 
 # Fuzzing the trace path and the GL API (scripts/fuzz.sh, tests/fuzz/README.md;
 # FUZZ_SECONDS per harness, default 150).

@@ -52,8 +52,15 @@ typedef struct cli_opts {
     const char *snapshot_prefix;
     bool snapshot_alpha;
     fs_trace_parser parser;   /* --reader */
+    long threads;             /* --threads: raster.threads before --config and --set (0: the CPUs) */
     fs_cli_signal_opts sig;   /* --vcd, --gpio and their options (cli_signals.c) */
 } cli_opts;
+
+#define THREADS_HELP                                                                      \
+    "  --threads N        threads rasterizing large filled draws in functional mode (default\n" \
+    "                     0: the online CPUs, at most 8; 1: one thread); the same images and\n" \
+    "                     statistics for any N.  Cycle and sampled mode run on one thread\n"   \
+    "                     (the cycle observer is not thread safe); raster.threads overrides\n"
 
 static const char *prog = "fragsim";
 
@@ -94,6 +101,7 @@ static void usage_replay(FILE *f, bool check)
             "  --snapshot-alpha   snapshots with alpha (RGBA, unassociated)\n"
             "  --reader R         the trace reader's parser: fast (default) or general (the\n"
             "                     reference the fast one is held equal to; slower)\n"
+            THREADS_HELP
             "  --quiet            no progress line\n"
             "GL errors are printed as glretrace prints them (N: warning: glGetError(glName) = ERR;\n"
             "the first 10) and listed with call number, command and error in the statistics file.\n",
@@ -110,6 +118,19 @@ static void usage_replay(FILE *f, bool check)
             check ? "check" : "stats",
             check ? "  --tolerance N      largest allowed colour difference per channel (default 0)\n" : "");
     fs_cli_signals_usage(f);
+}
+
+/* --threads N: 0..8; -1 (printed) for anything else. */
+static int parse_threads(const char *v, long *threads)
+{
+    char *end;
+    long n = v ? strtol(v, &end, 10) : -1;
+    if (!v || !*v || *end || n < 0 || n > 8) {
+        fprintf(stderr, "%s: --threads '%s': expected 0 (the CPUs) to 8\n", prog, v ? v : "");
+        return -1;
+    }
+    *threads = n;
+    return 0;
 }
 
 /* --reader fast|general; -1 (printed) for anything else. */
@@ -232,6 +253,10 @@ static int parse_opts(int argc, char **argv, cli_opts *o, bool check)
         } else if (!strcmp(a, "--reader")) {
             NEEDV();
             if (parse_reader(v, &o->parser) != 0)
+                return -1;
+        } else if (!strcmp(a, "--threads")) {
+            NEEDV();
+            if (parse_threads(v, &o->threads) != 0)
                 return -1;
         } else if ((taken = fs_cli_signals_option(&o->sig, a, v)) != 0) {
             if (taken < 0)
@@ -656,10 +681,11 @@ static int check_frame(replay_loop *L, long frame)
 
 /* The run configuration of replay and bench: defaults, the --config file,
  * the --set assignments, checked.  0, or -1 with the error printed. */
-static int load_run_config(fs_run_config *cfg, const char *file, const char *const *sets, int nsets)
+static int load_run_config(fs_run_config *cfg, const char *file, const char *const *sets, int nsets, long threads)
 {
     char err[1024];
     fs_run_config_defaults(cfg);
+    cfg->gl.raster_threads = threads;
     int bad = file && fs_run_config_load(cfg, file, err, sizeof err) != 0;
     for (int i = 0; !bad && i < nsets; i++)
         bad = fs_run_config_set(cfg, sets[i], err, sizeof err) != 0;
@@ -714,7 +740,7 @@ static int replay_session_open(replay_session *S, cli_opts *o, bool check)
 {
     char err[1024];
     memset(S, 0, sizeof *S);
-    if (load_run_config(&S->cfg, o->config_file, o->sets, o->nsets) != 0)
+    if (load_run_config(&S->cfg, o->config_file, o->sets, o->nsets, o->threads) != 0)
         return 2;
     if (o->cycle_pass)
         S->cfg.cycle = *o->cycle_pass;
@@ -950,22 +976,23 @@ typedef struct bench_opts {
     long repeat;
     int width, height;
     fs_trace_parser parser;
+    long threads; /* --threads, as for replay */
 } bench_opts;
 
 /* 0, 1 after --help, or -1 on a bad argument (printed). */
 static int parse_bench_opts(int argc, char **argv, bench_opts *o)
 {
-    *o = (bench_opts){"model", NULL, NULL, -1, "", 1, 0, 0, FS_TRACE_PARSER_FAST};
+    *o = (bench_opts){"model", NULL, NULL, -1, "", 1, 0, 0, FS_TRACE_PARSER_FAST, 0};
     for (int i = 0; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             printf("usage: fragsim bench [--engine model|osmesa] [--repeat N] [--size WxH]\n"
                    "                     [--mode functional|cycle|sampled] [--config FILE]\n"
-                   "                     [--max-error P] [--reader fast|general] TRACE\n\n"
+                   "                     [--max-error P] [--reader fast|general] [--threads N] TRACE\n\n"
                    "Replays TRACE once untimed, then N times on one engine, and prints one JSON\nline: seconds of"
                    " rendering (from the decoded calls), load_seconds (opening the\ntrace: decoding and"
                    " validating it, the same for every engine), floor_seconds\n(going through the decoded"
                    " calls without executing them: no engine can be\nfaster), frames, and the model's"
-                   " fragment count.  `make bench` compares the engines.\n");
+                   " fragment count.  `make bench` compares the engines.\n\n" THREADS_HELP);
             return 1;
         } else if (!strcmp(argv[i], "--engine") && i + 1 < argc) {
             o->engine = argv[++i];
@@ -985,6 +1012,9 @@ static int parse_bench_opts(int argc, char **argv, bench_opts *o)
             }
         } else if (!strcmp(argv[i], "--reader") && i + 1 < argc) {
             if (parse_reader(argv[++i], &o->parser) != 0)
+                return -1;
+        } else if (!strcmp(argv[i], "--threads") && i + 1 < argc) {
+            if (parse_threads(argv[++i], &o->threads) != 0)
                 return -1;
         } else if (!strcmp(argv[i], "--size") && i + 1 < argc) {
             if (sscanf(argv[++i], "%dx%d", &o->width, &o->height) != 2 || o->width <= 0 || o->height <= 0) {
@@ -1102,7 +1132,7 @@ static int run_bench(int argc, char **argv)
         return p > 0 ? 0 : 2;
     bench_run B = {.o = &o, .model = !strcmp(o.engine, "model"), .renderer = "fragsim"};
     const char *max_error = o.max_error_set;
-    if (load_run_config(&B.cfg, o.config_file, &max_error, max_error[0] ? 1 : 0) != 0)
+    if (load_run_config(&B.cfg, o.config_file, &max_error, max_error[0] ? 1 : 0, o.threads) != 0)
         return 2;
     B.ro = (fs_replay_opts){NULL, o.width, o.height, 0};
     B.ro.parser = o.parser;

@@ -250,6 +250,18 @@ static int make_config(struct osmesa_context *o, GLint depth, GLint stencil, GLi
         shim_message("FRAGSIM_CONFIG", err);
         return -1;
     }
+    /* FRAGSIM_THREADS=N: the context's raster.threads (0: the online CPUs;
+     * pipeline/raster_threads.h); unset, the library's default of 1. */
+    const char *th = getenv("FRAGSIM_THREADS");
+    if (th && *th) {
+        char *end;
+        long n = strtol(th, &end, 10);
+        if (*end || n < 0 || n > 8) {
+            shim_message("FRAGSIM_THREADS", "expected 0 (the online CPUs) to 8");
+            return -1;
+        }
+        o->cfg.gl.raster_threads = n;
+    }
     o->has_depth = depth > 0;
     o->cfg.gl.framebuffer_depth_bits = depth <= 0 || stencil > 0 || depth > 16 ? 24 : 16;
     o->cfg.gl.framebuffer_stencil_bits = stencil > 0 ? 8 : 0;

@@ -3,6 +3,7 @@
 #include <stdio.h>
 #include <string.h>
 #include "context.h"
+#include "raster_threads.h"
 #include "../units/occlusion_unit.h"
 #include "../units/texture_unit.h"
 #include "buffer_object.h"
@@ -57,6 +58,7 @@ void fs_context_destroy(fs_context *c)
         return;
     if (c->driver_free)
         c->driver_free(c);
+    fs_par_free(c);
     fs_state_free(c);
     fs_accum_free(c);
     fs_occlusion_free(c);

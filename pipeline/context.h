@@ -120,6 +120,11 @@ struct fs_context {
     fs_observer *observer;
 
     fs_stats stats;               /* counters of the current frame */
+    /* Threaded rasterization (raster_threads.h): the worker pool, made on
+     * the first draw that may go parallel, and whether the current draw's
+     * triangles are being recorded for it. */
+    struct fs_raster_par *par;
+    bool par_recording;
     /* Unsupported features of implemented calls (e.g. "glPolygonMode(GL_LINE)"),
      * counted by name. */
     struct { char name[64]; uint64_t count; } unsupported_feature[64];

@@ -32,6 +32,7 @@
  */
 #include <math.h>
 #include "vertex_internal.h"
+#include "raster_threads.h"
 
 bool fs_prim_mode_valid(GLenum mode)
 {
@@ -214,6 +215,9 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
      * (0,1,3),(1,2,3)). */
     bool pipeline = p.unfilled || fs_render_mode_diverts(&c->rmode);
     c->raster.offset_latch = -1;
+    /* Threaded rasterization records the filled triangles and rasterizes
+     * them at the end (raster_threads.h). */
+    fs_par_draw_begin(c, mode, p.unfilled, fs_vs(c)->tri_hook != NULL);
     for (size_t i = 0; i < count && !pipeline && !s->edge && (mode == GL_QUADS || mode == GL_QUAD_STRIP); i++)
         pipeline = V(&p, i)->mask != 0;
     /* A draw Mesa concatenates onto an earlier one that took the pipeline
@@ -315,4 +319,5 @@ void fs_prim_draw(fs_context *c, const fs_vs_setup *s, GLenum mode, fs_pvert *pv
     default:
         break;
     }
+    fs_par_draw_end(c);
 }

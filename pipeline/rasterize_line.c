@@ -11,6 +11,7 @@
  */
 #include <math.h>
 #include "rasterizer_priv.h"
+#include "raster_threads.h"
 
 #ifdef __clang__
 #pragma STDC FP_CONTRACT OFF
@@ -363,6 +364,8 @@ static void stipple_piece(fs_context *c, const fs_rvertex *a, const fs_rvertex *
 
 void fs_raster_line(fs_context *c, const fs_rvertex *va, const fs_rvertex *vb)
 {
+    if (c->par_recording) /* earlier triangles first (raster_threads.h) */
+        fs_par_draw_end(c);
     fs_raster_state *r = &c->raster;
     if (!fs_raster_line_stippled(c)) {
         raster_segment(c, va, vb);

@@ -7,6 +7,7 @@
  */
 #include <math.h>
 #include "rasterizer_priv.h"
+#include "raster_threads.h"
 
 /* llvmpipe's util_iround on x86-64: round half away from zero, after the
  * float multiply by the fixed-point scale. */
@@ -173,11 +174,15 @@ static void raster_sprite(fs_context *c, const fs_rvertex *v, float x, float y, 
 
 void fs_raster_point(fs_context *c, const fs_rvertex *v)
 {
+    if (c->par_recording) /* earlier triangles first (raster_threads.h) */
+        fs_par_draw_end(c);
     fs_raster_point_sized(c, v, fs_point_size(&c->raster));
 }
 
 void fs_raster_point_sized(fs_context *c, const fs_rvertex *v, float size)
 {
+    if (c->par_recording) /* earlier triangles first (raster_threads.h) */
+        fs_par_draw_end(c);
     const fs_raster_state *r = &c->raster;
     const int W = c->fb.width, H = c->fb.height;
     const int order = r->subpixel_bits;

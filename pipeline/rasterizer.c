@@ -21,6 +21,7 @@
 #include <string.h>
 #include "rasterizer_priv.h"
 #include "../units/texture_unit.h"
+#include "raster_threads.h"
 
 /* x86 builds carry an FMA variant of the attribute evaluation, chosen at run
  * time (no -march flags in reference builds). */
@@ -398,6 +399,7 @@ static void color_planes(fs_plane *p, int n, const coef_args *g, const fs_rverte
 
 static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edges *e, const fs_tile_mask *t);
 static void report_area(fs_context *c, const tri_edges *e, int64_t area2);
+static bool box_meets_band(const fs_raster_state *r, int H, const tri_edges *e);
 static bool box_meets_mask(const fs_context *c, const fs_tile_mask *t, const tri_edges *e);
 static void raster_tri_reference(fs_context *c, const fs_prim_setup *s, const tri_edges *e);
 
@@ -490,6 +492,8 @@ static bool tri_snap_box(fs_context *c, const float px[3], const float py[3], tr
 
 void fs_raster_triangle_dropped(fs_context *c, const float x[3], const float y_raster[3])
 {
+    if (c->par_recording) /* earlier triangles first (raster_threads.h) */
+        fs_par_draw_end(c);
     tri_snap t;
     if (!tri_snap_box(c, x, y_raster, &t))
         return;
@@ -512,6 +516,11 @@ static void raster_triangle(fs_context *c, const fs_rvertex *const v[3], const f
     tri_snap t;
     if (!tri_snap_box(c, px, py, &t))
         return;
+    if (r->band_n > 1 && !box_meets_band(r, H, &t.e)) {
+        /* Another thread's rows only: counted as handed on, as below. */
+        c->stats.triangles_rasterized++;
+        return;
+    }
     const bool front = t.front;
     const int *idx = t.idx;
     const int64_t *x = t.x, *y = t.y;
@@ -664,6 +673,16 @@ static void raster_triangle(fs_context *c, const fs_rvertex *const v[3], const f
 
 void fs_raster_triangle(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2)
 {
+    if (c->par_recording) {
+        fs_par_record(c, v0, v1, v2);
+        return;
+    }
+    const fs_rvertex *const v[3] = {v0, v1, v2};
+    raster_triangle(c, v, NULL, NULL);
+}
+
+void fs_raster_triangle_now(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2)
+{
     const fs_rvertex *const v[3] = {v0, v1, v2};
     raster_triangle(c, v, NULL, NULL);
 }
@@ -675,6 +694,8 @@ void fs_raster_triangle_aa(fs_context *c, const fs_rvertex *const v[3], const fl
      * scissor, flat shading and the pixel-centre rules: no culling, no
      * polygon offset (draw_get_rasterizer_no_cull).  The vertices' y is in
      * llvmpipe's frame (y_raster). */
+    if (c->par_recording) /* earlier triangles first (raster_threads.h) */
+        fs_par_draw_end(c);
     fs_raster_state *r = &c->raster;
     const fs_raster_state saved = *r;
     r->cull_enabled = false;
@@ -799,6 +820,20 @@ static void report_area(fs_context *c, const tri_edges *e, int64_t area2)
     FS_OBSERVE(c, triangle_area, area < box ? area : box, (e->x0 + e->x1) / 2, (gy0 + gy1) / 2);
 }
 
+/* Whether one of this thread's bands of rows meets the box (threaded
+ * rasterization, raster_threads.h). */
+static bool box_meets_band(const fs_raster_state *r, int H, const tri_edges *e)
+{
+    const int gy0 = fs_raster_row_to_gl(H, e->y1) & ~1, gy1 = fs_raster_row_to_gl(H, e->y0);
+    const int b0 = gy0 >> FS_PAR_BAND_SHIFT, b1 = gy1 >> FS_PAR_BAND_SHIFT;
+    if (b1 - b0 + 1 >= r->band_n)
+        return true;
+    for (int b = b0; b <= b1; b++)
+        if (b % r->band_n == r->band_i)
+            return true;
+    return false;
+}
+
 /* Whether a masked tile meets the box (tiles are at least 2 pixels wide
  * and aligned to even coordinates, so they hold whole quads). */
 static bool box_meets_mask(const fs_context *c, const fs_tile_mask *t, const tri_edges *e)
@@ -815,6 +850,19 @@ static void raster_tri_fast(fs_context *c, const fs_prim_setup *s, const tri_edg
     const int H = s->height;
     const int gy0 = fs_raster_row_to_gl(H, e->y1), gy1 = fs_raster_row_to_gl(H, e->y0);
     const int qx0 = e->x0 & ~1, qy0 = gy0 & ~1;
+    if (!t && c->raster.band_n > 1) {
+        /* Threaded: this thread's bands of rows only (raster_threads.h);
+         * bands are 2^FS_PAR_BAND_SHIFT rows from row 0, so each starts
+         * even and holds whole quads. */
+        const int n = c->raster.band_n, me = c->raster.band_i, sh = FS_PAR_BAND_SHIFT;
+        for (int b = qy0 >> sh; b <= gy1 >> sh; b++) {
+            if (b % n != me)
+                continue;
+            int by0 = b << sh, by1 = by0 + (1 << sh) - 1;
+            raster_tri_box(c, s, e, qx0, e->x1, by0 > qy0 ? by0 : qy0, by1 < gy1 ? by1 : gy1);
+        }
+        return;
+    }
     if (!t) {
         raster_tri_box(c, s, e, qx0, e->x1, qy0, gy1);
         return;

@@ -187,6 +187,11 @@ typedef struct fs_raster_state {
     /* ... and AVX2 as well: the vertex stage transforms positions 8 at a
      * time (same bits as one at a time; tests clear it to compare). */
     bool has_avx2;
+    /* Threaded rasterization (raster_threads.h): while band_n > 1 this
+     * thread emits only the quads of GL rows y with
+     * (y >> FS_PAR_BAND_SHIFT) mod band_n == band_i; 0 (always, on one
+     * thread): every quad. */
+    int band_n, band_i;
 } fs_raster_state;
 
 /* Whether a polygon of this facing is culled (GL 1.5 spec 3.5.1: culling

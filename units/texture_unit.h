@@ -25,6 +25,7 @@
 #ifndef FS_TEXTURE_UNIT_H
 #define FS_TEXTURE_UNIT_H
 #include <stdbool.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <GL/gl.h>
 #include "../pipeline/rasterizer.h"
@@ -137,4 +138,14 @@ uint64_t fs_texture_quads_incomplete(const fs_context *c);
  * that took the latter. */
 void fs_texture_set_generic(fs_context *c, bool generic);
 uint64_t fs_texture_quads_fast(const fs_context *c);
+/* Threaded rasterization (pipeline/raster_threads.h; units/texture_fork.c):
+ * whether the enabled units may be sampled by several threads at once (no
+ * MP-Grid, no footprint filter; caches each bound object's completeness
+ * first), the size of the unit's state, a thread's copy of it with zeroed
+ * counters, and the copy's counters added back. */
+struct fs_texture_state;
+bool fs_texture_par_safe(fs_context *c);
+size_t fs_texture_state_bytes(void);
+void fs_texture_fork(const fs_context *c, struct fs_texture_state *dst);
+void fs_texture_join(fs_context *c, const struct fs_texture_state *w);
 #endif
