@@ -34,23 +34,24 @@ for trace in "${progs[@]}" bench8 bench32; do
     case $trace in bench*) name=$trace; trace="$OUT/$name.trace"
         "$BUILD/scenegen" "$name" --scale paper -o "$trace" >/dev/null ;;
         *) name=$(basename "$trace" .trace) ;; esac
+    m1=$(run_rss "$OUT/rss_m1" "$BUILD/fragsim" bench --engine model --threads 1 --repeat "$REPEAT" "$trace")
     m=$(run_rss "$OUT/rss_m" "$BUILD/fragsim" bench --engine model --repeat "$REPEAT" "$trace")
     l1=$(LP_NUM_THREADS=1 run_rss "$OUT/rss_1" "$BUILD/fragsim" bench --engine osmesa --repeat "$REPEAT" "$trace")
     lN=$(run_rss "$OUT/rss_n" "$BUILD/fragsim" bench --engine osmesa --repeat "$REPEAT" "$trace")
     row=$(awk -v s="$name" -v fr="$(json "$m" frames)" -v r="$REPEAT" -v tm="$(json "$m" seconds)" \
-        -v t1="$(json "$l1" seconds)" -v tn="$(json "$lN" seconds)" -v mm="$(tail -n 1 "$OUT/rss_m")" \
-        -v m1="$(tail -n 1 "$OUT/rss_1")" -v mn="$(tail -n 1 "$OUT/rss_n")" 'BEGIN {
-        printf "| %s | %d | %.4f | %.4f | %.4f | %.2f | %.2f | %.1f | %.1f | %.1f |", s, fr / r, tm / r, t1 / r, tn / r,
-            tm / t1, tm / tn, mm / 1024, m1 / 1024, mn / 1024 }')
+        -v tm1="$(json "$m1" seconds)" -v t1="$(json "$l1" seconds)" -v tn="$(json "$lN" seconds)" \
+        -v mm="$(tail -n 1 "$OUT/rss_m")" -v m1="$(tail -n 1 "$OUT/rss_1")" -v mn="$(tail -n 1 "$OUT/rss_n")" 'BEGIN {
+        printf "| %s | %d | %.4f | %.4f | %.4f | %.4f | %.2f | %.2f | %.1f | %.1f | %.1f |", s, fr / r, tm1 / r, tm / r,
+            t1 / r, tn / r, tm1 / t1, tm / tn, mm / 1024, m1 / 1024, mn / 1024 }')
     prows+=("$row")
     echo "$row"
-    read -r a b < <(awk -v tm="$(json "$m" seconds)" -v t1="$(json "$l1" seconds)" -v tn="$(json "$lN" seconds)" \
-        'BEGIN { print log(tm / t1), log(tm / tn) }')
+    read -r a b < <(awk -v tm="$(json "$m" seconds)" -v tm1="$(json "$m1" seconds)" -v t1="$(json "$l1" seconds)" \
+        -v tn="$(json "$lN" seconds)" 'BEGIN { print log(tm1 / t1), log(tm / tn) }')
     logsum1=$(awk -v x="$logsum1" -v y="$a" 'BEGIN { print x + y }')
     logsumN=$(awk -v x="$logsumN" -v y="$b" 'BEGIN { print x + y }')
     nprog=$((nprog + 1))
 done
-geo=$(awk -v a="$logsum1" -v b="$logsumN" -v n="$nprog" 'BEGIN { printf "%.2f x llvmpipe 1 thread, %.2f x llvmpipe default threads", exp(a / n), exp(b / n) }')
+geo=$(awk -v a="$logsum1" -v b="$logsumN" -v n="$nprog" 'BEGIN { printf "fragsim 1 thread %.2f x llvmpipe 1 thread, fragsim default threads %.2f x llvmpipe default threads", exp(a / n), exp(b / n) }')
 echo "geometric mean of fragsim / llvmpipe time over $nprog traces: $geo"
 
 rows=() crows=() unused="not measured (BENCH_QUICK=1)"
@@ -132,10 +133,11 @@ cpu=$(sed -nE 's/^model name\s*: (.*)/\1/p' /proc/cpuinfo | head -n 1)
     echo "replayer overhead).  llvmpipe through libOSMesa with LP_NUM_THREADS=1 and with its"
     echo "default thread count ($(nproc) CPUs here).  Ratio: fragsim time / llvmpipe time (above 1:"
     echo "fragsim slower).  Peak memory: maximum resident set of the whole process"
-    echo "(/usr/bin/time), the untimed first replay included."
+    echo "(/usr/bin/time), the untimed first replay included.  fragsim 1T: \`--threads 1\`;"
+    echo "fragsim: its default (\`--threads 0\`, the online CPUs; docs/architecture.md, Threads)."
     echo
-    echo "| trace | frames | fragsim s | llvmpipe 1T s | llvmpipe s | fragsim / llvmpipe 1T | fragsim / llvmpipe | fragsim MB | llvmpipe 1T MB | llvmpipe MB |"
-    echo "|---|---|---|---|---|---|---|---|---|---|"
+    echo "| trace | frames | fragsim 1T s | fragsim s | llvmpipe 1T s | llvmpipe s | fragsim 1T / llvmpipe 1T | fragsim / llvmpipe | fragsim MB | llvmpipe 1T MB | llvmpipe MB |"
+    echo "|---|---|---|---|---|---|---|---|---|---|---|"
     printf '%s\n' "${prows[@]}"
     echo
     echo "Geometric mean over the $nprog traces: $geo."
