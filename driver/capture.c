@@ -237,7 +237,7 @@ static bool buffer_calls(fs_context *c, const fs_call *call)
         return fs_client_array_at(&c->arrays, k)->buffer != 0; /* else written as fake calls before the draws */
     }
     switch (call->cmd) {
-    case FS_CMD_MapBuffer:
+    case FS_CMD_MapBuffer: case FS_CMD_MapBufferRange:
         cap->map[t].p = fs_buffer_mapping(c, (GLenum)call->a[0].i, &cap->map[t].size);
         break;
     case FS_CMD_UnmapBuffer:

@@ -568,7 +568,7 @@ static void track_buffers(fs_replayer *r, const fs_tcall *tc, const fs_call *cal
         if (t >= 0)
             b->bound[t] = (GLuint)call->a[1].i;
         break;
-    case FS_CMD_MapBuffer:
+    case FS_CMD_MapBuffer: case FS_CMD_MapBufferRange: /* the address is the range's start */
         if (t < 0 || !b->bound[t] || !tc->has_ret || !tv_int(&tc->ret, &addr) || addr == 0)
             break;
         forget_maps_of(b, b->bound[t]);

@@ -19,6 +19,10 @@ typedef struct fs_buffer_obj {
     int64_t size;            /* GL_BUFFER_SIZE */
     GLenum usage, access;    /* GL_BUFFER_USAGE, GL_BUFFER_ACCESS (table 2.6) */
     bool mapped;             /* GL_BUFFER_MAPPED */
+    /* The mapped range (the whole store for glMapBuffer) and, for
+     * glMapBufferRange, its access bits (ARB_map_buffer_range). */
+    int64_t map_offset, map_length;
+    GLbitfield map_flags;
 } fs_buffer_obj;
 
 struct fs_buffer_objects {
@@ -272,7 +276,82 @@ GLvoid *fs_exec_MapBuffer(fs_context *c, GLenum target, GLenum access)
     }
     o->mapped = true;
     o->access = access;
+    o->map_offset = 0;
+    o->map_length = o->size;
+    o->map_flags = 0;
     return o->data;
+}
+
+/* ARB_map_buffer_range (GL 3.0 spec 2.9.3): a range of the store mapped
+ * with access bits, with the extension's errors (their order measured on
+ * OSMesa, tests/test_buffer_objects.c map_buffer_range_vs_osmesa).  The
+ * model has no GPU to synchronise with and keeps the store's contents on
+ * an invalidation (they become undefined in GL: any contents are right). */
+GLvoid *fs_exec_MapBufferRange(fs_context *c, GLenum target, GLintptr offset, GLsizeiptr length,
+                               GLbitfield access)
+{
+    const GLbitfield all = GL_MAP_READ_BIT | GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_RANGE_BIT |
+                           GL_MAP_INVALIDATE_BUFFER_BIT | GL_MAP_FLUSH_EXPLICIT_BIT | GL_MAP_UNSYNCHRONIZED_BIT;
+    if (!binding_of(c, target)) {
+        fs_error(c, GL_INVALID_ENUM);
+        return NULL;
+    }
+    if (offset < 0 || length < 0) {
+        fs_error(c, GL_INVALID_VALUE);
+        return NULL;
+    }
+    if (length == 0) { /* INVALID_OPERATION on llvmpipe, before the bits (measured) */
+        fs_error(c, GL_INVALID_OPERATION);
+        return NULL;
+    }
+    if (access & ~all) {
+        fs_error(c, GL_INVALID_VALUE);
+        return NULL;
+    }
+    if (!(access & (GL_MAP_READ_BIT | GL_MAP_WRITE_BIT)) ||
+        ((access & GL_MAP_READ_BIT) &&
+         (access & (GL_MAP_INVALIDATE_RANGE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT | GL_MAP_UNSYNCHRONIZED_BIT))) ||
+        ((access & GL_MAP_FLUSH_EXPLICIT_BIT) && !(access & GL_MAP_WRITE_BIT))) {
+        fs_error(c, GL_INVALID_OPERATION);
+        return NULL;
+    }
+    fs_buffer_obj *o = bound_buffer(c, target);
+    if (!o)
+        return NULL;
+    if (o->mapped) {
+        fs_error(c, GL_INVALID_OPERATION);
+        return NULL;
+    }
+    if (offset > o->size || length > o->size - offset) {
+        fs_error(c, GL_INVALID_VALUE);
+        return NULL;
+    }
+    o->mapped = true;
+    o->access = (access & GL_MAP_READ_BIT) && (access & GL_MAP_WRITE_BIT) ? GL_READ_WRITE
+              : (access & GL_MAP_WRITE_BIT) ? GL_WRITE_ONLY : GL_READ_ONLY;
+    o->map_offset = offset;
+    o->map_length = length;
+    o->map_flags = access;
+    return o->data + offset;
+}
+
+/* Writes to a FLUSH_EXPLICIT mapping become visible at the flush; the
+ * model's store is the mapping, so only the errors remain. */
+void fs_exec_FlushMappedBufferRange(fs_context *c, GLenum target, GLintptr offset, GLsizeiptr length)
+{
+    fs_buffer_obj *o = bound_buffer(c, target);
+    if (!o)
+        return;
+    if (offset < 0 || length < 0) {
+        fs_error(c, GL_INVALID_VALUE);
+        return;
+    }
+    if (!o->mapped || !(o->map_flags & GL_MAP_FLUSH_EXPLICIT_BIT)) {
+        fs_error(c, GL_INVALID_OPERATION);
+        return;
+    }
+    if (offset > o->map_length || length > o->map_length - offset)
+        fs_error(c, GL_INVALID_VALUE);
 }
 
 GLboolean fs_exec_UnmapBuffer(fs_context *c, GLenum target)
@@ -312,7 +391,7 @@ void fs_exec_GetBufferPointerv(fs_context *c, GLenum target, GLenum pname, GLvoi
         fs_error(c, GL_INVALID_ENUM);
         return;
     }
-    *params = o->mapped ? o->data : NULL;
+    *params = o->mapped ? o->data + o->map_offset : NULL; /* the range's start */
 }
 
 /* A write through a mapping as a trace records it (apitrace's memcpy
@@ -320,13 +399,15 @@ void fs_exec_GetBufferPointerv(fs_context *c, GLenum target, GLenum pname, GLvoi
  * outside the mapped store it is counted, by name, and not done. */
 void fs_exec_TraceMemcpy(fs_context *c, GLuint buffer, GLintptr offset, GLsizeiptr size, const GLvoid *data)
 {
+    /* The offset counts from the start of the mapping. */
     fs_buffer_obj *o = lookup(c, buffer);
-    if (!o || !o->mapped || offset < 0 || size < 0 || offset > o->size || size > o->size - offset || !data) {
+    if (!o || !o->mapped || offset < 0 || size < 0 || offset > o->map_length || size > o->map_length - offset ||
+        !data) {
         fs_unsupported(c, "memcpy (outside every mapped buffer)");
         return;
     }
     if (size > 0)
-        memcpy(o->data + offset, data, (size_t)size);
+        memcpy(o->data + o->map_offset + offset, data, (size_t)size);
 }
 
 /* ---- sourcing arrays and indices (2.9.1, 2.9.2) ---- */
@@ -369,6 +450,6 @@ const void *fs_buffer_mapping(const fs_context *c, GLenum target, int64_t *size)
     GLuint name = target == GL_ARRAY_BUFFER ? c->arrays.array_buffer
                   : target == GL_ELEMENT_ARRAY_BUFFER ? c->arrays.element_buffer : 0;
     const fs_buffer_obj *o = lookup(c, name);
-    *size = o && o->mapped ? o->size : 0;
-    return o && o->mapped ? o->data : NULL;
+    *size = o && o->mapped ? o->map_length : 0;
+    return o && o->mapped ? o->data + o->map_offset : NULL;
 }

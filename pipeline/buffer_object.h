@@ -34,9 +34,9 @@ void fs_buffer_resolve_arrays(const fs_context *c, fs_array_state *out);
  * offset lies beyond the store or the store is empty. */
 const void *fs_buffer_element_data(const fs_context *c, uint64_t offset, size_t *bytes);
 
-/* The store of the buffer mapped on target, with its size; NULL when the
- * buffer bound there is not mapped (for capture, which records the writes
- * through a mapping as apitrace does). */
+/* The mapped range of the buffer bound on target, with its size; NULL when
+ * the buffer bound there is not mapped (for capture, which records the
+ * writes through a mapping as apitrace does). */
 const void *fs_buffer_mapping(const fs_context *c, GLenum target, int64_t *size);
 
 #endif

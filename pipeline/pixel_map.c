@@ -235,14 +235,20 @@ static uint32_t shift_offset(const fs_pixel_xfer *x, uint32_t i)
     return i + (uint32_t)x->index_offset;
 }
 
-void fs_pixel_xfer_index_to_rgba(const fs_context *c, const uint32_t *index, int64_t n, float *rgba)
+void fs_pixel_map_index_to_rgba(const fs_context *c, const uint32_t *index, int64_t n, float *rgba)
 {
     const fs_pixel_xfer *x = &c->px;
-    for (int64_t i = 0; i < n; i++, rgba += 4) {
-        uint32_t v = shift_offset(x, index[i]);
+    for (int64_t i = 0; i < n; i++, rgba += 4)
         /* The maps' sizes are powers of two: the index is masked (3.6.5). */
         for (int k = 0; k < 4; k++)
-            rgba[k] = x->map[FS_MAP_I_TO_R + k][v & (uint32_t)(x->size[FS_MAP_I_TO_R + k] - 1)];
+            rgba[k] = x->map[FS_MAP_I_TO_R + k][index[i] & (uint32_t)(x->size[FS_MAP_I_TO_R + k] - 1)];
+}
+
+void fs_pixel_xfer_index_to_rgba(const fs_context *c, const uint32_t *index, int64_t n, float *rgba)
+{
+    for (int64_t i = 0; i < n; i++) {
+        uint32_t v = shift_offset(&c->px, index[i]);
+        fs_pixel_map_index_to_rgba(c, &v, 1, rgba + 4 * i);
     }
 }
 

@@ -60,6 +60,9 @@ void fs_pixel_xfer_rgba(const fs_context *c, float *rgba, int64_t n);
 /* Colour indices to RGBA: shift and offset, then the I_TO_R/G/B/A maps
  * (3.6.5 "Arithmetic on Indices", "Color Index Lookup"). */
 void fs_pixel_xfer_index_to_rgba(const fs_context *c, const uint32_t *index, int64_t n, float *rgba);
+/* The I_TO_R/G/B/A lookup alone, without shift and offset (glDrawPixels
+ * on llvmpipe, pipeline/pixel_rect.c). */
+void fs_pixel_map_index_to_rgba(const fs_context *c, const uint32_t *index, int64_t n, float *rgba);
 /* Stencil indices: shift and offset, then S_TO_S when MAP_STENCIL. */
 uint32_t fs_pixel_xfer_stencil_index(const fs_context *c, uint32_t index);
 /* Depth: d * DEPTH_SCALE + DEPTH_BIAS, clamped to [0, 1] (3.6.5). */
