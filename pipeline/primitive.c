@@ -66,18 +66,6 @@ static inline fs_pvert *V(const prim_ctx *p, size_t i)
     return &p->pv[I(p, i)];
 }
 
-static inline float lo3(float a, float b, float c)
-{
-    float m = b < a ? b : a;
-    return c < m ? c : m;
-}
-
-static inline float hi3(float a, float b, float c)
-{
-    float m = b > a ? b : a;
-    return c > m ? c : m;
-}
-
 /* Whether an unclipped triangle's window box meets a masked tile.
  * Compares, not fminf/fmaxf (library calls).  A NaN in the first vertex
  * makes the box NaN, which counts as meeting; one in another is dropped,
@@ -86,8 +74,8 @@ static inline float hi3(float a, float b, float c)
 static bool box_masked(const prim_ctx *p, const fs_pvert *v0, const fs_pvert *v1, const fs_pvert *v2)
 {
     const float x[3] = {v0->win[0], v1->win[0], v2->win[0]}, y[3] = {v0->win[1], v1->win[1], v2->win[1]};
-    return fs_vs_box_masked(fs_tile_mask_active(p->c), lo3(x[0], x[1], x[2]), lo3(y[0], y[1], y[2]),
-                            hi3(x[0], x[1], x[2]), hi3(y[0], y[1], y[2]));
+    return fs_vs_box_masked(fs_tile_mask_active(p->c), fs_lo3(x[0], x[1], x[2]), fs_lo3(y[0], y[1], y[2]),
+                            fs_hi3(x[0], x[1], x[2]), fs_hi3(y[0], y[1], y[2]));
 }
 
 /* Lights the lazy vertices of a triangle that may make fragments in a

@@ -249,18 +249,6 @@ void fs_par_draw_end(fs_context *c)
     c->par_recording = false;
 }
 
-static inline float lo3(float a, float b, float c)
-{
-    float m = b < a ? b : a;
-    return c < m ? c : m;
-}
-
-static inline float hi3(float a, float b, float c)
-{
-    float m = b > a ? b : a;
-    return c > m ? c : m;
-}
-
 void fs_par_record(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1, const fs_rvertex *v2)
 {
     struct fs_raster_par *p = c->par;
@@ -269,8 +257,8 @@ void fs_par_record(fs_context *c, const fs_rvertex *v0, const fs_rvertex *v1, co
     t[1] = *v1;
     t[2] = *v2;
     /* The box decides only whether the batch goes parallel, never a pixel. */
-    float x0 = lo3(v0->x, v1->x, v2->x), x1 = hi3(v0->x, v1->x, v2->x);
-    float y0 = lo3(v0->y, v1->y, v2->y), y1 = hi3(v0->y, v1->y, v2->y);
+    float x0 = fs_lo3(v0->x, v1->x, v2->x), x1 = fs_hi3(v0->x, v1->x, v2->x);
+    float y0 = fs_lo3(v0->y, v1->y, v2->y), y1 = fs_hi3(v0->y, v1->y, v2->y);
     x0 = x0 > 0.0f ? x0 : 0.0f;
     y0 = y0 > 0.0f ? y0 : 0.0f;
     x1 = x1 < (float)c->fb.width ? x1 : (float)c->fb.width;

@@ -281,4 +281,18 @@ void fs_raster_point_sized(fs_context *c, const fs_rvertex *v, float size);
  * GL_POINT_SIZE_MAX]. */
 bool fs_point_attenuated(const fs_raster_state *r);
 float fs_point_size(const fs_raster_state *r);
+/* The smallest and largest of three window coordinates: a triangle's
+ * bounding box (primitive.c's tile test, raster_threads.c's batch size). */
+static inline float fs_lo3(float a, float b, float c)
+{
+    float m = b < a ? b : a;
+    return c < m ? c : m;
+}
+
+static inline float fs_hi3(float a, float b, float c)
+{
+    float m = b > a ? b : a;
+    return c > m ? c : m;
+}
+
 #endif
