@@ -203,7 +203,6 @@ static bool append(fs_context *c, const fs_call *call)
     return true;
 }
 
-
 /* How Mesa's display-list compiler (Mesa 22, vbo save mode) treats a call
  * between glBegin and glEnd: vertex attributes are held until the next
  * vertex; glEvalCoord, glEvalPoint and glCallList(s) make it leave its vertex
